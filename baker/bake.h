@@ -1,0 +1,126 @@
+// lfd-bake pipeline: glTF 2.0 in, .lfdpack out. Each stage is a free function, grouped
+// by the file that implements it; the driver (main.cpp) calls them in this order:
+//
+//   importGltf        gltf_import.cpp     glTF -> lfd::Scene (object-space meshes, nodes,
+//                                         animations, materials, texture sources)
+//   computeBounds     scene_bounds.cpp    scene-space AABB + bounding sphere over animations
+//   tessellateScene   tessellation.cpp    split oversized triangles, crack-free
+//   computeTriangleStats triangle_stats.cpp  A_ws, A_ts, n_tex, size_uv, A_ts/A_ws
+//   bakeTexture       texture_bake.cpp    decode, reduce, mip chain (sRGB-correct), RGBA8
+//   writePack         formats/            atomic write
+//
+// Errors in input data throw BakeError with a one-line message naming the file.
+#pragma once
+
+#include "lfd/display_profile.h"
+#include "lfd/framing.h"
+#include "lfd/scene.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lfd::bake {
+
+class BakeError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Progress / warning sink. Stages report what they do; the driver decides whether to
+// print (--quiet keeps warnings and errors only).
+struct Log {
+    std::function<void(const std::string&)> info = [](const std::string&) {};
+    std::function<void(const std::string&)> warn = [](const std::string&) {};
+};
+
+// ---- gltf_import.cpp -------------------------------------------------------------
+// Where a texture's pixels come from: an image file, or bytes embedded in the glTF
+// (bufferView or data URI). Decoding is deferred to bakeTexture so that only one
+// texture is decoded at a time.
+struct TextureSource {
+    std::string name;                 // for messages
+    std::filesystem::path file;       // set for external images
+    std::vector<uint8_t> encoded;     // set for embedded images (PNG/JPEG bytes)
+    std::string mimeType;
+    bool srgb = false;                // used as baseColor/emissive
+};
+
+struct ImportedScene {
+    Scene scene;                        // textures[] carry name + srgb only
+    std::vector<TextureSource> textureSources; // parallel to scene.textures
+    std::vector<std::string> warnings;  // also sent to Log::warn
+    size_t sourceTriangles = 0;
+};
+
+// Reads .gltf (external .bin / images or data URIs) and .glb. Converts strips/fans to
+// lists, de-indexes nothing (non-indexed primitives get an index buffer), keeps the node
+// hierarchy (matrix nodes decomposed to TRS), animation channels (T/R/S; LINEAR and
+// STEP; CUBICSPLINE linearised with a warning). Drops streams nothing uses.
+// Errors (throw BakeError): unreadable/malformed file, Draco, required unsupported
+// extensions, out-of-range accessors. Warnings: skins/morph targets ignored (static
+// pose), non-triangle primitives skipped, unsupported optional extensions.
+ImportedScene importGltf(const std::filesystem::path& path, const Log& log);
+
+// ---- scene_bounds.cpp ------------------------------------------------------------
+// Bounds over the rest pose and every animation key time (node transforms come from
+// lfd::nodeWorldMatrices in formats/, shared with the player).
+SceneBounds computeBounds(const Scene& scene);
+// Largest linear scale each mesh receives from any node instance at any animation key
+// (max column length of the world matrix); 0 for meshes no node uses.
+std::vector<float> meshMaxWorldScale(const Scene& scene);
+
+// ---- tessellation.cpp ------------------------------------------------------------
+struct TessellationStats {
+    size_t trianglesIn = 0;
+    size_t trianglesOut = 0;
+    size_t trianglesSplit = 0;        // input triangles that were oversized
+    double maxEdgeWorldBefore = 0.0;  // longest edge in scene units (after instance scale)
+    double maxEdgeWorldAfter = 0.0;
+};
+
+// Splits every triangle whose longest scene-space edge exceeds maxEdgeWorld (edges are
+// scaled per mesh by meshMaxWorldScale). Edges are split at their midpoints by a rule
+// that depends only on the (position-welded) edge itself, so neighbouring triangles -
+// including across UV/normal seams - split shared edges identically: no T-junctions.
+// Attributes are interpolated per corner; normals/tangents re-normalised. Triangles
+// within the bound are left untouched. Updates primitives' index ranges.
+TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& log);
+
+// ---- triangle_stats.cpp ----------------------------------------------------------
+// Paper eqs. texelCount / lfd_UVSize for every triangle. Needs the final (stored) size of
+// each texture (scene.textures[i].width/height set).
+void computeTriangleStats(Scene& scene);
+TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
+                            const glm::vec2& uv0, const glm::vec2& uv1, const glm::vec2& uv2,
+                            const std::vector<glm::uvec2>& textureSizes);
+
+// ---- texture_bake.cpp ------------------------------------------------------------
+struct TextureBakeOptions {
+    uint32_t maxSize = 16384; // larger dimensions are reduced by powers of two
+};
+
+// Reads only the image header: source size (for n_tex and reporting) before decoding.
+glm::uvec2 probeTextureSize(const TextureSource& source);
+// Size the texture will be stored at (power-of-two reductions until <= maxSize).
+glm::uvec2 storedTextureSize(glm::uvec2 sourceSize, const TextureBakeOptions& options);
+
+// Decodes, converts to RGBA8, reduces to the stored size, builds the full mip chain
+// (box filter in linear light for sRGB textures, plain for data textures). Peak memory
+// stays under about two full-size RGBA8 copies of the source. Throws BakeError.
+Texture bakeTexture(const TextureSource& source, const TextureBakeOptions& options);
+
+// ---- texture_budget.cpp ----------------------------------------------------------
+// "Model no more than the scene needs": the largest size texture `textureIndex` needs so
+// that its texels are no finer than `detail` times the finest view pixel that can land on
+// any triangle using it (viewPixelWorld: conservative scene units per view pixel, see
+// framing.h; meshScale: meshMaxWorldScale). Returns sourceSize reduced by a power of two
+// (never enlarged); triangles without texture area are ignored.
+glm::uvec2 resolvableTextureSize(const Scene& scene, uint32_t textureIndex, glm::uvec2 sourceSize,
+                                 double viewPixelWorld, const std::vector<float>& meshScale,
+                                 double detail);
+
+} // namespace lfd::bake

@@ -1,0 +1,100 @@
+// Formatting of the bake report and the --inspect summary.
+#include "bake_report.h"
+
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace lfd::bake {
+namespace {
+
+std::string bytes(uint64_t n)
+{
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(n >= (1u << 20) ? 1 : 0);
+    if (n >= (uint64_t(1) << 30))
+        s << double(n) / double(uint64_t(1) << 30) << " GiB";
+    else if (n >= (1u << 20))
+        s << double(n) / double(1u << 20) << " MiB";
+    else if (n >= 1024)
+        s << double(n) / 1024.0 << " KiB";
+    else
+        s << n << " B";
+    return s.str();
+}
+
+void printSections(std::ostream& out, const PackInfo& info)
+{
+    out << "  sections (format v" << info.formatVersion << ", " << bytes(info.fileSize) << "):\n";
+    for (const PackSectionInfo& s : info.sections)
+        out << "    " << s.tag << "  v" << s.version << "  " << std::setw(10) << s.count << " items  "
+            << std::setw(10) << bytes(s.size) << "\n";
+}
+
+} // namespace
+
+size_t peakResidentBytes()
+{
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.rfind("VmHWM:", 0) == 0)
+            return size_t(std::stoull(line.substr(6))) * 1024; // reported in kB
+    return 0;
+}
+
+void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const BakeReport& r)
+{
+    out << std::fixed << std::setprecision(1);
+    out << "bake report: " << pack.string() << "\n";
+    out << "  triangles: " << r.trianglesIn << " in, " << r.trianglesOut << " out ("
+        << r.tessellation.trianglesSplit << " oversized split), " << r.vertices << " vertices\n";
+    out << "  max edge: " << r.maxEdgePxBefore << " view px before, " << r.maxEdgePxAfter << " after\n";
+    for (const TextureReport& t : r.textures) {
+        out << "  texture " << t.name << (t.srgb ? " (sRGB)" : " (linear)") << ": " << t.source.x << "x"
+            << t.source.y;
+        if (t.stored != t.source)
+            out << " reduced to " << t.stored.x << "x" << t.stored.y;
+        out << "\n";
+    }
+    printSections(out, r.pack);
+    out << "  time:";
+    double total = 0.0;
+    for (const auto& [name, seconds] : r.stageSeconds) {
+        out << " " << name << " " << std::setprecision(2) << seconds << " s,";
+        total += seconds;
+    }
+    out << " total " << total << " s\n";
+    out << "  peak memory: " << bytes(r.peakRssBytes) << "\n";
+    if (r.warnings)
+        out << "  warnings: " << r.warnings << " (see above)\n";
+}
+
+void printInspectReport(std::ostream& out, const std::filesystem::path& pack, const PackInfo& info,
+                        const Scene& scene)
+{
+    size_t textured = 0;
+    for (const TriangleStats& s : scene.triangleStats)
+        textured += (s.flags & kTriangleTextured) ? 1 : 0;
+    out << "pack: " << pack.string() << " (verified)\n";
+    out << "  baked from " << scene.settings.sourceFile << " by lfd-bake " << scene.settings.bakerVersion
+        << " for '" << scene.settings.displayProfile << "' (" << scene.settings.viewCount << " views of "
+        << scene.settings.viewWidth << "x" << scene.settings.viewHeight << "), max edge "
+        << scene.settings.maxEdgePx << " px\n";
+    out << "  " << scene.triangleCount() << " triangles (" << textured << " textured), " << scene.vertices.size()
+        << " vertices, streams:" << ((scene.vertices.mask() & kStreamNormal) ? " normal" : "")
+        << ((scene.vertices.mask() & kStreamTangent) ? " tangent" : "")
+        << ((scene.vertices.mask() & kStreamUv) ? " uv" : "") << "\n";
+    out << "  " << scene.meshes.size() << " meshes, " << scene.primitives.size() << " primitives, "
+        << scene.materials.size() << " materials, " << scene.textures.size() << " textures, " << scene.nodes.size()
+        << " nodes, " << scene.animations.size() << " animations\n";
+    out << std::setprecision(4) << "  bounds: min (" << scene.bounds.min.x << ", " << scene.bounds.min.y << ", "
+        << scene.bounds.min.z << ") max (" << scene.bounds.max.x << ", " << scene.bounds.max.y << ", "
+        << scene.bounds.max.z << ") radius " << scene.bounds.radius << "\n";
+    for (const Texture& t : scene.textures)
+        out << "  texture " << t.name << ": " << t.width << "x" << t.height << ", " << t.mips.size() << " levels"
+            << (t.srgb ? ", sRGB" : "") << "\n";
+    printSections(out, info);
+}
+
+} // namespace lfd::bake

@@ -1,0 +1,38 @@
+// The bake report (printed at the end of lfd-bake) and the --inspect summary.
+#pragma once
+
+#include "bake.h"
+#include "lfd/pack.h"
+
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lfd::bake {
+
+struct TextureReport {
+    std::string name;
+    glm::uvec2 source{0};
+    glm::uvec2 stored{0};
+    bool srgb = false;
+};
+
+struct BakeReport {
+    size_t trianglesIn = 0, trianglesOut = 0, vertices = 0, warnings = 0;
+    double maxEdgePxBefore = 0.0, maxEdgePxAfter = 0.0;
+    TessellationStats tessellation;
+    std::vector<TextureReport> textures;
+    std::vector<std::pair<std::string, double>> stageSeconds;
+    PackInfo pack;
+    size_t peakRssBytes = 0;
+};
+
+// Peak resident set size of this process (VmHWM), 0 where unavailable.
+size_t peakResidentBytes();
+
+void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const BakeReport& report);
+void printInspectReport(std::ostream& out, const std::filesystem::path& pack, const PackInfo& info,
+                        const Scene& scene);
+
+} // namespace lfd::bake

@@ -1,0 +1,1002 @@
+// glTF 2.0 import stage: tinygltf parses the file, this file turns the model into an
+// lfd::Scene - object-space triangle lists, the node hierarchy (parents first), rigid
+// node animation, metallic-roughness materials and the sources of the textures they use.
+//
+// Memory: tinygltf never decodes an image here. A custom image loader records only
+// where the encoded bytes live (external files are not even read past their signature);
+// bakeTexture decodes one texture at a time later.
+#include "bake.h"
+#include "gltf_accessors.h"
+
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <numeric>
+#include <optional>
+#include <set>
+
+namespace lfd::bake {
+namespace {
+
+namespace fs = std::filesystem;
+using gltf::fail;
+
+// ---- Warnings ----------------------------------------------------------------------
+
+class Warnings {
+public:
+    Warnings(const Log& log, std::vector<std::string>& out) : log_(log), out_(out) {}
+    void add(const std::string& message)
+    {
+        out_.push_back(message);
+        log_.warn(message);
+    }
+    // One warning per `key`, however often the situation occurs.
+    void once(const std::string& key, const std::string& message)
+    {
+        if (seen_.insert(key).second)
+            add(message);
+    }
+
+private:
+    const Log& log_;
+    std::vector<std::string>& out_;
+    std::set<std::string> seen_;
+};
+
+std::string quoted(const std::string& name) { return "'" + name + "'"; }
+
+unsigned char uchar(char c) { return static_cast<unsigned char>(c); }
+
+std::string meshLabel(const tinygltf::Model& model, size_t mesh)
+{
+    const std::string& name = model.meshes[mesh].name;
+    return "mesh " + std::to_string(mesh) + (name.empty() ? "" : " " + quoted(name));
+}
+
+std::string nodeLabel(const tinygltf::Model& model, size_t node)
+{
+    const std::string& name = model.nodes[node].name;
+    return "node " + std::to_string(node) + (name.empty() ? "" : " " + quoted(name));
+}
+
+std::string materialLabel(const tinygltf::Model& model, size_t material)
+{
+    const std::string& name = model.materials[material].name;
+    return "material " + (name.empty() ? std::to_string(material) : quoted(name));
+}
+
+// ---- Loading -----------------------------------------------------------------------
+
+// KHR_mesh_quantization only widens accessor component types, which the accessor reader
+// handles; KHR_materials_emissive_strength folds into emissiveFactor.
+const std::set<std::string> kSupportedExtensions = {"KHR_mesh_quantization",
+                                                    "KHR_materials_emissive_strength"};
+
+
+// Shared with tinygltf's callbacks through their user-data pointer.
+struct LoadCapture {
+    std::map<int, std::vector<uint8_t>> dataUriImages; // image index -> encoded bytes
+    bool sniffImages = true;      // hand tinygltf only the signature of image files
+    size_t sniffedFiles = 0;
+};
+
+// Image "loader" that decodes nothing. External images are found again from
+// Image::uri and bufferView images are sliced (bounds-checked) from their buffer later;
+// only data-URI bytes exist nowhere else, so those are kept.
+bool captureImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
+                  const unsigned char* bytes, int size, void* user)
+{
+    auto* capture = static_cast<LoadCapture*>(user);
+    if (image->bufferView < 0 && image->uri.empty() && bytes != nullptr && size > 0)
+        capture->dataUriImages[imageIndex].assign(bytes, bytes + size);
+    image->as_is = true;
+    return true;
+}
+
+// tinygltf reads every external image file whole before calling the image loader. For
+// files that start with a PNG/JPEG signature only the signature is returned, so a 16K
+// texture is not read at import time. A buffer (.bin) that happens to start with such a
+// signature fails tinygltf's size check; the importer then reloads without sniffing.
+bool readFileSniffingImages(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                            void* user)
+{
+    auto* capture = static_cast<LoadCapture*>(user);
+    if (capture->sniffImages) {
+        std::ifstream in(path, std::ios::binary);
+        std::array<unsigned char, 8> head{};
+        in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+        const size_t n = size_t(in.gcount());
+        static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+        const bool isPng = n == 8 && std::memcmp(head.data(), png, 8) == 0;
+        const bool isJpeg = n >= 3 && head[0] == 0xFF && head[1] == 0xD8 && head[2] == 0xFF;
+        if (isPng || isJpeg) {
+            out->assign(head.begin(), head.begin() + std::ptrdiff_t(n));
+            ++capture->sniffedFiles;
+            return true;
+        }
+    }
+    return tinygltf::ReadWholeFile(out, err, path, nullptr);
+}
+
+bool hasGlbMagic(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    in.read(magic, 4);
+    return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
+}
+
+// extensionsRequired read straight from the JSON (the .glb JSON chunk), for files that
+// tinygltf rejects before we see them: a Draco-compressed file has accessors without
+// bufferViews, which tinygltf reports as an invalid bufferView. Empty if unreadable.
+std::vector<std::string> requiredExtensionsOf(const fs::path& path, bool binary)
+{
+    std::ifstream in(path, std::ios::binary);
+    std::string text;
+    if (binary) {
+        // GLB: 12-byte header, then chunk 0 = (uint32 length, uint32 type "JSON", data).
+        uint32_t header[5] = {};
+        in.read(reinterpret_cast<char*>(header), sizeof header);
+        if (in.gcount() != std::streamsize(sizeof header) || header[4] != 0x4E4F534Au ||
+            header[3] > (64u << 20))
+            return {};
+        text.resize(header[3]);
+        in.read(text.data(), std::streamsize(text.size()));
+    } else {
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    const nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
+    std::vector<std::string> names;
+    if (json.is_object() && json.contains("extensionsRequired") && json["extensionsRequired"].is_array())
+        for (const nlohmann::json& name : json["extensionsRequired"])
+            if (name.is_string())
+                names.push_back(name.get<std::string>());
+    return names;
+}
+
+tinygltf::Model loadModel(const fs::path& path, const std::string& file, LoadCapture& capture,
+                          Warnings& warnings)
+{
+    std::error_code ec;
+    if (!fs::exists(path, ec))
+        fail(file, "file not found");
+    if (fs::is_directory(path, ec))
+        fail(file, "is a directory, not a glTF file");
+    const bool binary = hasGlbMagic(path);
+
+    for (;;) {
+        tinygltf::TinyGLTF loader;
+        loader.SetImageLoader(&captureImage, &capture);
+        loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readFileSniffingImages,
+                               &tinygltf::WriteWholeFile, &capture});
+        tinygltf::Model model;
+        std::string err;
+        std::string warn;
+        const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path.string())
+                               : loader.LoadASCIIFromFile(&model, &err, &warn, path.string());
+        if (ok) {
+            // tinygltf only warns about image files it could not read; the importer
+            // checks the images it actually uses itself (and fails on missing ones).
+            size_t start = 0;
+            while (start < warn.size()) {
+                const size_t end = std::min(warn.find('\n', start), warn.size());
+                const std::string line = gltf::firstLine(warn.substr(start, end - start));
+                if (!line.empty())
+                    warnings.add("tinygltf: " + line);
+                start = end + 1;
+            }
+            return model;
+        }
+        if (capture.sniffImages && capture.sniffedFiles > 0) {
+            capture = LoadCapture{};
+            capture.sniffImages = false;
+            continue;
+        }
+        for (const std::string& name : requiredExtensionsOf(path, binary))
+            if (!kSupportedExtensions.count(name))
+                fail(file, "requires unsupported extension " + name);
+        fail(file, !err.empty() ? err : !warn.empty() ? warn : "tinygltf could not load the file");
+    }
+}
+
+// ---- Extensions --------------------------------------------------------------------
+
+void checkExtensions(const tinygltf::Model& model, const std::string& file, Warnings& warnings)
+{
+    for (const std::string& name : model.extensionsRequired)
+        if (!kSupportedExtensions.count(name))
+            fail(file, "requires unsupported extension " + name);
+    for (const std::string& name : model.extensionsUsed) {
+        if (kSupportedExtensions.count(name))
+            continue;
+        if (name == "KHR_materials_pbrSpecularGlossiness")
+            warnings.add("ignores optional extension " + name + " (uses the metallic-roughness data)");
+        else if (name == "KHR_texture_transform")
+            warnings.add("ignores optional extension " + name + " (texture coordinates used untransformed)");
+        else if (name == "KHR_draco_mesh_compression")
+            warnings.add("ignores optional extension " + name + " (uses the uncompressed accessors)");
+        else
+            warnings.add("ignores optional extension " + name);
+    }
+}
+
+// ---- Node hierarchy ----------------------------------------------------------------
+
+// The nodes of the imported scene in depth-first pre-order (parents before children).
+struct NodeOrder {
+    std::vector<size_t> sourceOf;   // new index -> glTF node
+    std::vector<int32_t> parentOf;  // new index -> new parent index or kNone
+    std::vector<int32_t> newIndex;  // glTF node -> new index or kNone (unreachable)
+};
+
+std::vector<int> sceneRoots(const tinygltf::Model& model, const std::string& file)
+{
+    if (model.defaultScene >= 0 && size_t(model.defaultScene) >= model.scenes.size())
+        fail(file, "default scene " + std::to_string(model.defaultScene) + " does not exist");
+    if (!model.scenes.empty())
+        return model.scenes[model.defaultScene >= 0 ? size_t(model.defaultScene) : 0].nodes;
+
+    // No scenes: every node that is nobody's child is a root.
+    std::vector<bool> isChild(model.nodes.size(), false);
+    for (size_t n = 0; n < model.nodes.size(); ++n)
+        for (int child : model.nodes[n].children)
+            if (child >= 0 && size_t(child) < model.nodes.size())
+                isChild[size_t(child)] = true;
+    std::vector<int> roots;
+    for (size_t n = 0; n < model.nodes.size(); ++n)
+        if (!isChild[n])
+            roots.push_back(int(n));
+    return roots;
+}
+
+NodeOrder orderNodes(const tinygltf::Model& model, const std::string& file)
+{
+    NodeOrder order;
+    order.newIndex.assign(model.nodes.size(), kNone);
+    enum class State : uint8_t { Unvisited, OnPath, Done };
+    std::vector<State> state(model.nodes.size(), State::Unvisited);
+
+    // Iterative DFS: a node met again while on the current path closes a cycle; one met
+    // again after it was finished has two parents. glTF requires a strict forest.
+    auto enter = [&](int node, int32_t parent) {
+        if (node < 0 || size_t(node) >= model.nodes.size())
+            fail(file, "node " + std::to_string(node) + " does not exist");
+        const size_t n = size_t(node);
+        if (state[n] == State::OnPath)
+            fail(file, "node hierarchy has a cycle through " + nodeLabel(model, n));
+        if (state[n] == State::Done)
+            fail(file, nodeLabel(model, n) + " has more than one parent");
+        state[n] = State::OnPath;
+        order.newIndex[n] = int32_t(order.sourceOf.size());
+        order.sourceOf.push_back(n);
+        order.parentOf.push_back(parent);
+    };
+
+    struct Frame {
+        size_t node;
+        size_t nextChild;
+    };
+    for (int root : sceneRoots(model, file)) {
+        enter(root, kNone);
+        std::vector<Frame> stack{{size_t(root), 0}};
+        while (!stack.empty()) {
+            Frame& top = stack.back();
+            const std::vector<int>& children = model.nodes[top.node].children;
+            if (top.nextChild < children.size()) {
+                const int child = children[top.nextChild++];
+                const int32_t parent = order.newIndex[top.node];
+                enter(child, parent);
+                stack.push_back({size_t(child), 0});
+            } else {
+                state[top.node] = State::Done;
+                stack.pop_back();
+            }
+        }
+    }
+    return order;
+}
+
+// Decomposes a glTF node matrix (column-major) into T * R * S. Only rigid transforms
+// with per-axis scale can be stored, so shear and projective rows are errors.
+void decomposeNodeMatrix(const std::vector<double>& m, Node& node, const std::string& file,
+                         const std::string& label)
+{
+    for (double v : m)
+        if (!std::isfinite(v))
+            fail(file, label + " has a non-finite matrix");
+    // Check the last row (0, 0, 0, 1): elements 3, 7, 11, 15 in column-major order.
+    constexpr double kRowTolerance = 1e-6;
+    if (std::abs(m[3]) > kRowTolerance || std::abs(m[7]) > kRowTolerance ||
+        std::abs(m[11]) > kRowTolerance || std::abs(m[15] - 1.0) > kRowTolerance)
+        fail(file, label + " matrix is not affine (last row is not 0 0 0 1)");
+
+    node.translation = glm::vec3(float(m[12]), float(m[13]), float(m[14]));
+    std::array<glm::dvec3, 3> axis = {glm::dvec3(m[0], m[1], m[2]), glm::dvec3(m[4], m[5], m[6]),
+                                      glm::dvec3(m[8], m[9], m[10])};
+    glm::dvec3 scale(glm::length(axis[0]), glm::length(axis[1]), glm::length(axis[2]));
+
+    // Shear check: the columns of R * S are orthogonal (relative tolerance for float noise).
+    constexpr double kShearTolerance = 1e-4;
+    for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j)
+            if (std::abs(glm::dot(axis[size_t(i)], axis[size_t(j)])) >
+                kShearTolerance * scale[i] * scale[j])
+                fail(file, label + " matrix has shear (cannot be decomposed into translation, "
+                                   "rotation and scale)");
+
+    // Orthonormal rotation basis; zero-scale axes get any direction completing the basis.
+    constexpr double kZero = 1e-12;
+    std::array<bool, 3> present{};
+    for (size_t i = 0; i < 3; ++i) {
+        present[i] = scale[int(i)] > kZero;
+        if (present[i])
+            axis[i] /= scale[int(i)];
+    }
+    const int presentCount = int(present[0]) + int(present[1]) + int(present[2]);
+    if (presentCount == 0) {
+        axis = {glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
+    } else if (presentCount == 1) {
+        const size_t k = present[0] ? 0 : present[1] ? 1 : 2;
+        const glm::dvec3 helper = std::abs(axis[k].x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+        axis[(k + 1) % 3] = glm::normalize(glm::cross(axis[k], helper));
+        axis[(k + 2) % 3] = glm::cross(axis[k], axis[(k + 1) % 3]);
+    } else if (presentCount == 2) {
+        const size_t k = !present[0] ? 0 : !present[1] ? 1 : 2;
+        axis[k] = glm::normalize(glm::cross(axis[(k + 1) % 3], axis[(k + 2) % 3]));
+    }
+    // A mirroring matrix becomes a negative x scale with a proper rotation.
+    if (glm::dot(glm::cross(axis[0], axis[1]), axis[2]) < 0.0) {
+        axis[0] = -axis[0];
+        scale.x = -scale.x;
+    }
+    node.rotation = glm::normalize(glm::quat_cast(glm::mat3(glm::dmat3(axis[0], axis[1], axis[2]))));
+    node.scale = glm::vec3(scale);
+}
+
+Node convertNode(const tinygltf::Model& model, size_t source, const std::string& file)
+{
+    const tinygltf::Node& in = model.nodes[source];
+    const std::string label = nodeLabel(model, source);
+    Node node;
+    node.name = in.name;
+    if (in.matrix.size() == 16) {
+        decomposeNodeMatrix(in.matrix, node, file, label);
+        return node;
+    }
+    if (!in.matrix.empty())
+        fail(file, label + " matrix has " + std::to_string(in.matrix.size()) + " elements, not 16");
+    for (const std::vector<double>* v : {&in.translation, &in.rotation, &in.scale})
+        for (double x : *v)
+            if (!std::isfinite(x))
+                fail(file, label + " has a non-finite transform");
+    if (in.translation.size() == 3)
+        node.translation = glm::vec3(float(in.translation[0]), float(in.translation[1]), float(in.translation[2]));
+    if (in.scale.size() == 3)
+        node.scale = glm::vec3(float(in.scale[0]), float(in.scale[1]), float(in.scale[2]));
+    if (in.rotation.size() == 4) {
+        // glTF stores x, y, z, w; glm::quat's constructor takes w first.
+        const glm::quat q(float(in.rotation[3]), float(in.rotation[0]), float(in.rotation[1]),
+                          float(in.rotation[2]));
+        if (glm::length(q) < 1e-6f)
+            fail(file, label + " has a zero rotation quaternion");
+        node.rotation = glm::normalize(q);
+    }
+    return node;
+}
+
+// ---- Materials and texture sources -----------------------------------------------
+
+std::string percentDecode(const std::string& uri)
+{
+    std::string out;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(uchar(uri[i + 1])) &&
+            std::isxdigit(uchar(uri[i + 2]))) {
+            out.push_back(char(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
+            i += 2;
+        } else {
+            out.push_back(uri[i]);
+        }
+    }
+    return out;
+}
+
+std::string mimeFromExtension(const fs::path& file, const std::string& fallback)
+{
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == ".png")
+        return "image/png";
+    if (ext == ".jpg" || ext == ".jpeg")
+        return "image/jpeg";
+    return fallback;
+}
+
+class TextureTable {
+public:
+    TextureTable(const tinygltf::Model& model, const fs::path& gltfPath, const std::string& file,
+                 const LoadCapture& capture, Warnings& warnings)
+        : model_(model), baseDir_(gltfPath.parent_path()), file_(file), capture_(capture), warnings_(warnings)
+    {
+    }
+
+    // Index into Scene::textures for a material slot, or kNone when the slot is empty or
+    // cannot be used (other texture coordinate set, no image source).
+    int32_t resolve(int textureIndex, int texCoord, bool srgb, const std::string& slot)
+    {
+        if (textureIndex < 0)
+            return kNone;
+        if (size_t(textureIndex) >= model_.textures.size())
+            fail(file_, slot + " refers to missing texture " + std::to_string(textureIndex));
+        if (texCoord != 0) {
+            warnings_.add(slot + " uses TEXCOORD_" + std::to_string(texCoord) +
+                          " (only TEXCOORD_0 is supported): treated as untextured");
+            return kNone;
+        }
+        const int image = model_.textures[size_t(textureIndex)].source;
+        if (image < 0) {
+            warnings_.add(slot + " texture " + std::to_string(textureIndex) +
+                          " has no core image source: treated as untextured");
+            return kNone;
+        }
+        if (size_t(image) >= model_.images.size())
+            fail(file_, "texture " + std::to_string(textureIndex) + " refers to missing image " +
+                            std::to_string(image));
+        // One entry per (image, colour space): the same pixels used as sRGB colour and as
+        // linear data are baked differently (mip filtering in linear light for sRGB).
+        const auto key = std::make_pair(image, srgb);
+        if (auto it = entries_.find(key); it != entries_.end())
+            return it->second;
+        const int32_t index = int32_t(sources_.size());
+        sources_.push_back(makeSource(size_t(image), srgb, slot));
+        entries_.emplace(key, index);
+        return index;
+    }
+
+    std::vector<TextureSource>& sources() { return sources_; }
+
+private:
+    TextureSource makeSource(size_t imageIndex, bool srgb, const std::string& slot)
+    {
+        const tinygltf::Image& image = model_.images[imageIndex];
+        TextureSource source;
+        source.srgb = srgb;
+        source.mimeType = image.mimeType;
+        const std::string label = "image " + std::to_string(imageIndex);
+        if (image.bufferView >= 0) {
+            const std::span<const uint8_t> bytes = gltf::bufferViewBytes(model_, image.bufferView, file_, label);
+            source.encoded.assign(bytes.begin(), bytes.end());
+        } else if (!image.uri.empty()) {
+            source.file = baseDir_ / percentDecode(image.uri);
+            std::error_code ec;
+            if (!fs::is_regular_file(source.file, ec))
+                fail(file_, "image file " + source.file.string() + " (used by " + slot + ") not found");
+            source.mimeType = mimeFromExtension(source.file, image.mimeType);
+        } else if (auto it = capture_.dataUriImages.find(int(imageIndex)); it != capture_.dataUriImages.end()) {
+            source.encoded = it->second; // copied: the image may also be used in the other colour space
+        } else {
+            fail(file_, label + " (used by " + slot + ") has no data");
+        }
+        source.name = !image.name.empty()      ? image.name
+                      : !source.file.empty()    ? source.file.filename().string()
+                                                : label;
+        if (source.encoded.empty() && source.file.empty())
+            fail(file_, label + " (used by " + slot + ") is empty");
+        return source;
+    }
+
+    const tinygltf::Model& model_;
+    fs::path baseDir_;
+    std::string file_;
+    const LoadCapture& capture_;
+    Warnings& warnings_;
+    std::map<std::pair<int, bool>, int32_t> entries_;
+    std::vector<TextureSource> sources_;
+};
+
+Material convertMaterial(const tinygltf::Model& model, size_t index, TextureTable& textures,
+                         const std::string& file, Warnings& warnings)
+{
+    const tinygltf::Material& in = model.materials[index];
+    const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
+    const std::string label = materialLabel(model, index);
+    Material m;
+    m.name = in.name;
+    if (pbr.baseColorFactor.size() == 4)
+        m.baseColorFactor = glm::vec4(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]),
+                                      float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3]));
+    if (in.emissiveFactor.size() == 3)
+        m.emissiveFactor = glm::vec3(float(in.emissiveFactor[0]), float(in.emissiveFactor[1]),
+                                     float(in.emissiveFactor[2]));
+    if (auto it = in.extensions.find("KHR_materials_emissive_strength"); it != in.extensions.end()) {
+        const tinygltf::Value& strength = it->second.Get("emissiveStrength");
+        if (strength.IsNumber())
+            m.emissiveFactor *= float(strength.GetNumberAsDouble());
+    }
+    m.metallicFactor = float(pbr.metallicFactor);
+    m.roughnessFactor = float(pbr.roughnessFactor);
+    m.normalScale = float(in.normalTexture.scale);
+    m.occlusionStrength = float(in.occlusionTexture.strength);
+    m.alphaCutoff = float(in.alphaCutoff);
+    m.doubleSided = in.doubleSided;
+    if (in.alphaMode == "MASK")
+        m.alphaMode = AlphaMode::Mask;
+    else if (in.alphaMode == "BLEND")
+        m.alphaMode = AlphaMode::Blend;
+    else if (in.alphaMode != "OPAQUE")
+        warnings.add(label + " has unknown alphaMode " + quoted(in.alphaMode) + ": treated as OPAQUE");
+
+    const std::array<float, 10> factors = {m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b,
+                                           m.baseColorFactor.a, m.metallicFactor,    m.roughnessFactor,
+                                           m.normalScale,       m.occlusionStrength, m.alphaCutoff,
+                                           m.emissiveFactor.r};
+    for (float f : factors)
+        if (!std::isfinite(f))
+            fail(file, label + " has a non-finite factor");
+
+    m.baseColorTexture = textures.resolve(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true,
+                                          label + " baseColorTexture");
+    m.metallicRoughnessTexture =
+        textures.resolve(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, false,
+                         label + " metallicRoughnessTexture");
+    m.normalTexture = textures.resolve(in.normalTexture.index, in.normalTexture.texCoord, false,
+                                       label + " normalTexture");
+    m.occlusionTexture = textures.resolve(in.occlusionTexture.index, in.occlusionTexture.texCoord, false,
+                                          label + " occlusionTexture");
+    m.emissiveTexture = textures.resolve(in.emissiveTexture.index, in.emissiveTexture.texCoord, true,
+                                         label + " emissiveTexture");
+    return m;
+}
+
+bool hasAnyTexture(const Material& m)
+{
+    return m.baseColorTexture != kNone || m.metallicRoughnessTexture != kNone || m.normalTexture != kNone ||
+           m.occlusionTexture != kNone || m.emissiveTexture != kNone;
+}
+
+// ---- Primitives --------------------------------------------------------------------
+
+// A primitive's vertices and local triangle list, attributes already in the streams the
+// scene stores.
+struct PrimitiveData {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;      // when the scene stores uvs
+    std::vector<glm::vec4> tangents; // when the scene stores tangents
+    std::vector<uint32_t> triangles; // local indices
+};
+
+struct StreamNeeds {
+    bool uv = false;
+    bool tangent = false;
+};
+
+// Gathers attribute `values` (components per element) through `vertexSource`.
+template <class Vec>
+std::vector<Vec> gather(const gltf::FloatArray& a, const std::vector<uint32_t>& vertexSource)
+{
+    std::vector<Vec> out(vertexSource.size());
+    const size_t c = size_t(a.components);
+    for (size_t v = 0; v < vertexSource.size(); ++v)
+        for (size_t k = 0; k < c && k < size_t(Vec::length()); ++k)
+            out[v][glm::length_t(k)] = a.values[size_t(vertexSource[v]) * c + k];
+    return out;
+}
+
+std::optional<PrimitiveData> readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                                           const std::string& label, const Material* material, StreamNeeds needs,
+                                           const std::string& file, Warnings& warnings)
+{
+    auto attribute = [&prim](const char* name) {
+        auto it = prim.attributes.find(name);
+        return it == prim.attributes.end() ? -1 : it->second;
+    };
+
+    // Step 1: positions (required, finite).
+    const int positionAccessor = attribute("POSITION");
+    if (positionAccessor < 0)
+        fail(file, label + " has no POSITION attribute");
+    const gltf::FloatArray positions =
+        gltf::readFloatAccessor(model, positionAccessor, {TINYGLTF_TYPE_VEC3}, file, label + " POSITION");
+    const size_t vertexCount = positions.count;
+    for (size_t i = 0; i < positions.values.size(); ++i)
+        if (!std::isfinite(positions.values[i]))
+            fail(file, label + " POSITION " + std::to_string(i / 3) + " is not finite (NaN or infinity)");
+
+    // Step 2: indices (sequential for non-indexed primitives), range-checked.
+    std::vector<uint32_t> indices;
+    if (prim.indices >= 0) {
+        indices = gltf::readIndexAccessor(model, prim.indices, file, label + " indices");
+        for (size_t i = 0; i < indices.size(); ++i)
+            if (indices[i] >= vertexCount)
+                fail(file, label + " index " + std::to_string(i) + " (value " + std::to_string(indices[i]) +
+                               ") out of range (" + std::to_string(vertexCount) + " vertices)");
+    } else {
+        if (vertexCount > UINT32_MAX)
+            fail(file, label + " has too many vertices");
+        indices.resize(vertexCount);
+        std::iota(indices.begin(), indices.end(), 0u);
+    }
+
+    // Step 3: triangle list in glTF vertex numbering.
+    if (prim.mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
+        warnings.add(label + " has " + std::to_string(indices.size()) +
+                     " indices, not a multiple of 3: ignoring the last " + std::to_string(indices.size() % 3));
+    std::vector<uint32_t> triangles = gltf::triangulate(indices, prim.mode);
+    if (triangles.empty()) {
+        warnings.add(label + " has no triangles: skipped");
+        return std::nullopt;
+    }
+
+    // Step 4: which source vertex each output vertex copies. With normals: the vertices
+    // the triangles use, in source order (primitives sharing one large vertex buffer keep
+    // only their own). Without normals, glTF requires flat normals: one vertex per corner.
+    const int normalAccessor = attribute("NORMAL");
+    std::vector<uint32_t> vertexSource;
+    if (normalAccessor >= 0) {
+        std::vector<uint32_t> remap(vertexCount, UINT32_MAX);
+        for (uint32_t i : triangles)
+            remap[i] = 0;
+        for (size_t v = 0; v < vertexCount; ++v)
+            if (remap[v] == 0) {
+                remap[v] = uint32_t(vertexSource.size());
+                vertexSource.push_back(uint32_t(v));
+            }
+        for (uint32_t& i : triangles)
+            i = remap[i];
+    } else {
+        vertexSource = triangles;
+        std::iota(triangles.begin(), triangles.end(), 0u);
+    }
+
+    auto readAttribute = [&](int accessor, int type, const char* name) {
+        gltf::FloatArray a = gltf::readFloatAccessor(model, accessor, {type}, file, label + " " + name);
+        if (a.count != vertexCount)
+            fail(file, label + " " + name + " has " + std::to_string(a.count) + " elements but POSITION has " +
+                           std::to_string(vertexCount));
+        return a;
+    };
+
+    PrimitiveData out;
+    out.positions = gather<glm::vec3>(positions, vertexSource);
+    out.triangles = std::move(triangles);
+
+    // Step 5: normals - given (re-normalised; broken ones replaced by the smooth normal
+    // of the adjacent triangles) or flat.
+    if (normalAccessor >= 0) {
+        out.normals = gather<glm::vec3>(readAttribute(normalAccessor, TINYGLTF_TYPE_VEC3, "NORMAL"), vertexSource);
+        std::vector<glm::vec3> smooth; // computed only if some normal is broken
+        size_t repaired = 0;
+        for (size_t v = 0; v < out.normals.size(); ++v) {
+            const float len = glm::length(out.normals[v]);
+            if (len > 1e-12f && std::isfinite(len)) {
+                out.normals[v] /= len;
+                continue;
+            }
+            if (smooth.empty())
+                smooth = gltf::smoothNormals(out.positions, out.triangles);
+            out.normals[v] = smooth[v];
+            ++repaired;
+        }
+        if (repaired > 0)
+            warnings.add(label + " has " + std::to_string(repaired) +
+                         " zero or invalid normals: replaced by smooth normals");
+    } else {
+        warnings.add(label + " has no normals: computed flat normals");
+        out.normals.resize(out.positions.size());
+        for (size_t i = 0; i + 2 < out.positions.size(); i += 3) {
+            const glm::vec3 n = gltf::faceNormal(out.positions[i], out.positions[i + 1], out.positions[i + 2]);
+            out.normals[i] = out.normals[i + 1] = out.normals[i + 2] = n;
+        }
+    }
+
+    // Step 6: uvs, when the scene stores them (zeros for primitives that have none).
+    const int uvAccessor = attribute("TEXCOORD_0");
+    const bool textured = material != nullptr && hasAnyTexture(*material);
+    if (needs.uv) {
+        if (uvAccessor >= 0) {
+            out.uvs = gather<glm::vec2>(readAttribute(uvAccessor, TINYGLTF_TYPE_VEC2, "TEXCOORD_0"), vertexSource);
+            for (const glm::vec2& uv : out.uvs)
+                if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+                    fail(file, label + " TEXCOORD_0 has a non-finite value");
+        } else {
+            out.uvs.assign(out.positions.size(), glm::vec2(0.0f));
+            if (textured)
+                warnings.add(label + " has a textured material but no TEXCOORD_0: uvs set to zero");
+        }
+    }
+
+    // Step 7: tangents, when the scene stores them: given, or generated from the uvs.
+    if (needs.tangent) {
+        const int tangentAccessor = attribute("TANGENT");
+        if (tangentAccessor >= 0) {
+            out.tangents =
+                gather<glm::vec4>(readAttribute(tangentAccessor, TINYGLTF_TYPE_VEC4, "TANGENT"), vertexSource);
+            for (size_t v = 0; v < out.tangents.size(); ++v) {
+                glm::vec3 t(out.tangents[v]);
+                const float len = glm::length(t);
+                t = len > 1e-12f && std::isfinite(len) ? t / len : gltf::anyPerpendicular(out.normals[v]);
+                out.tangents[v] = glm::vec4(t, out.tangents[v].w < 0.0f ? -1.0f : 1.0f);
+            }
+        } else {
+            out.tangents = gltf::generateTangents(out.positions, out.normals, out.uvs, out.triangles);
+            if (material != nullptr && material->normalTexture != kNone)
+                warnings.add(label + " has a normal map but no TANGENT: generated tangents from TEXCOORD_0");
+        }
+    }
+
+    // Step 8: everything else is not used by the renderer.
+    for (const auto& [name, accessor] : prim.attributes) {
+        (void)accessor;
+        if (name == "POSITION" || name == "NORMAL" || name == "TEXCOORD_0" || name == "TANGENT")
+            continue;
+        std::string kind = name;
+        while (!kind.empty() && std::isdigit(uchar(kind.back())))
+            kind.pop_back();
+        if (kind.size() < name.size())
+            kind += "n";
+        warnings.once("attribute " + kind, "ignores vertex attribute " + kind + " (not used by the renderer)");
+    }
+    return out;
+}
+
+// ---- Animations --------------------------------------------------------------------
+
+std::optional<AnimationChannel> convertChannel(const tinygltf::Model& model, const tinygltf::Animation& anim,
+                                               const tinygltf::AnimationChannel& ch, const std::string& animLabel,
+                                               size_t channelIndex,
+                                               const NodeOrder& order, const std::string& file,
+                                               Warnings& warnings, const Log& log)
+{
+    const std::string label = animLabel + " channel " + std::to_string(channelIndex);
+    AnimationChannel out;
+    if (ch.target_path == "translation")
+        out.path = AnimationPath::Translation;
+    else if (ch.target_path == "rotation")
+        out.path = AnimationPath::Rotation;
+    else if (ch.target_path == "scale")
+        out.path = AnimationPath::Scale;
+    else if (ch.target_path == "weights") {
+        warnings.once("weights", "ignores morph-target weight animation (meshes keep their base pose)");
+        return std::nullopt;
+    } else {
+        warnings.once("path " + ch.target_path, "ignores animation channels on path " + quoted(ch.target_path));
+        return std::nullopt;
+    }
+    if (ch.target_node < 0)
+        return std::nullopt; // targets something other than a node (extension)
+    if (size_t(ch.target_node) >= model.nodes.size())
+        fail(file, label + " targets missing node " + std::to_string(ch.target_node));
+    if (order.newIndex[size_t(ch.target_node)] == kNone) {
+        log.info("import: " + label + " targets " + nodeLabel(model, size_t(ch.target_node)) +
+                 ", which is not in the scene: ignored");
+        return std::nullopt;
+    }
+    out.node = uint32_t(order.newIndex[size_t(ch.target_node)]);
+    if (ch.sampler < 0 || size_t(ch.sampler) >= anim.samplers.size())
+        fail(file, label + " refers to missing sampler " + std::to_string(ch.sampler));
+    const tinygltf::AnimationSampler& sampler = anim.samplers[size_t(ch.sampler)];
+
+    bool cubic = false;
+    if (sampler.interpolation == "LINEAR")
+        out.interpolation = Interpolation::Linear;
+    else if (sampler.interpolation == "STEP")
+        out.interpolation = Interpolation::Step;
+    else if (sampler.interpolation == "CUBICSPLINE") {
+        // Keep each keyframe's value, drop its in/out tangents: a linear approximation.
+        out.interpolation = Interpolation::Linear;
+        cubic = true;
+    } else
+        fail(file, label + " has unknown interpolation " + quoted(sampler.interpolation));
+
+    // Key times: finite, strictly increasing, at least one.
+    const gltf::FloatArray input =
+        gltf::readFloatAccessor(model, sampler.input, {TINYGLTF_TYPE_SCALAR}, file, label + " input");
+    if (input.count == 0)
+        fail(file, label + " has no keyframes");
+    out.times = input.values;
+    for (size_t k = 0; k < out.times.size(); ++k) {
+        if (!std::isfinite(out.times[k]))
+            fail(file, label + " key time " + std::to_string(k) + " is not finite");
+        if (k > 0 && !(out.times[k] > out.times[k - 1]))
+            fail(file, label + " key times are not strictly increasing at key " + std::to_string(k));
+    }
+
+    const bool rotation = out.path == AnimationPath::Rotation;
+    const gltf::FloatArray output = gltf::readFloatAccessor(
+        model, sampler.output, {rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3}, file, label + " output");
+    const size_t perKey = cubic ? 3 : 1; // cubic spline: in-tangent, value, out-tangent
+    if (output.count != input.count * perKey)
+        fail(file, label + " has " + std::to_string(output.count) + " output values for " +
+                       std::to_string(input.count) + " keys");
+    const size_t c = size_t(output.components);
+    out.values.resize(input.count);
+    for (size_t k = 0; k < input.count; ++k) {
+        const size_t e = k * perKey + (cubic ? 1 : 0);
+        glm::vec4 v(0.0f);
+        for (size_t i = 0; i < c; ++i)
+            v[glm::length_t(i)] = output.values[e * c + i];
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || !std::isfinite(v.w))
+            fail(file, label + " output value " + std::to_string(k) + " is not finite");
+        if (rotation) {
+            const float len = glm::length(v);
+            if (len < 1e-6f)
+                fail(file, label + " has a zero rotation quaternion at key " + std::to_string(k));
+            v /= len;
+        }
+        out.values[k] = v;
+    }
+    if (cubic)
+        warnings.once("cubic " + animLabel,
+                      animLabel + " uses CUBICSPLINE interpolation: linearised (keyframe values kept, tangents dropped)");
+    return out;
+}
+
+} // namespace
+
+ImportedScene importGltf(const std::filesystem::path& path, const Log& log)
+{
+    const std::string file = path.string();
+    ImportedScene result;
+    Scene& scene = result.scene;
+    Warnings warnings(log, result.warnings);
+
+    // Step 1: parse (no image decoding) and check the extensions the file requires.
+    LoadCapture capture;
+    const tinygltf::Model model = loadModel(path, file, capture, warnings);
+    checkExtensions(model, file, warnings);
+
+    // Step 2: the nodes of the scene, parents first; the meshes they instance.
+    const NodeOrder order = orderNodes(model, file);
+    std::vector<int32_t> meshIndex(model.meshes.size(), kNone); // glTF mesh -> lfd mesh
+    for (size_t source : order.sourceOf) {
+        const int mesh = model.nodes[source].mesh;
+        if (mesh >= 0 && size_t(mesh) >= model.meshes.size())
+            fail(file, nodeLabel(model, source) + " refers to missing mesh " + std::to_string(mesh));
+        if (mesh >= 0)
+            meshIndex[size_t(mesh)] = 0;
+    }
+    std::vector<size_t> meshSources;
+    for (size_t m = 0; m < model.meshes.size(); ++m)
+        if (meshIndex[m] != kNone) {
+            meshIndex[m] = int32_t(meshSources.size());
+            meshSources.push_back(m);
+        }
+
+    // Step 3: materials used by triangle primitives of those meshes, and their textures.
+    auto isTriangles = [](const tinygltf::Primitive& p) {
+        return p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+               p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+    };
+    std::vector<int32_t> materialIndex(model.materials.size(), kNone);
+    for (size_t m : meshSources)
+        for (const tinygltf::Primitive& p : model.meshes[m].primitives) {
+            if (p.material >= 0 && size_t(p.material) >= model.materials.size())
+                fail(file, meshLabel(model, m) + " refers to missing material " + std::to_string(p.material));
+            if (p.material >= 0 && isTriangles(p))
+                materialIndex[size_t(p.material)] = 0;
+        }
+    TextureTable textures(model, path, file, capture, warnings);
+    for (size_t m = 0; m < model.materials.size(); ++m)
+        if (materialIndex[m] != kNone) {
+            materialIndex[m] = int32_t(scene.materials.size());
+            scene.materials.push_back(convertMaterial(model, m, textures, file, warnings));
+        }
+
+    // Step 4: stored streams - uvs only if some material is textured, tangents only if
+    // some material has a normal map.
+    StreamNeeds needs;
+    for (const Material& m : scene.materials) {
+        needs.uv = needs.uv || hasAnyTexture(m);
+        needs.tangent = needs.tangent || m.normalTexture != kNone;
+    }
+
+    // Step 5: geometry, one lfd::Mesh per instanced glTF mesh, primitives contiguous.
+    VertexStreams& vertices = scene.vertices;
+    for (size_t m : meshSources) {
+        const tinygltf::Mesh& gmesh = model.meshes[m];
+        Mesh mesh;
+        mesh.name = gmesh.name.empty() ? "mesh " + std::to_string(m) : gmesh.name;
+        mesh.firstPrimitive = uint32_t(scene.primitives.size());
+        for (size_t p = 0; p < gmesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& prim = gmesh.primitives[p];
+            const std::string label = meshLabel(model, m) + " primitive " + std::to_string(p);
+            if (!isTriangles(prim)) {
+                static const char* const kModeNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
+                if (prim.mode < 0 || prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+                    fail(file, label + " has invalid mode " + std::to_string(prim.mode));
+                warnings.add(label + " is " + kModeNames[prim.mode] + ", not triangles: skipped");
+                continue;
+            }
+            if (!prim.targets.empty())
+                warnings.once("morph " + std::to_string(m),
+                              meshLabel(model, m) + " has morph targets: ignored (base pose used)");
+            const int32_t material = prim.material >= 0 ? materialIndex[size_t(prim.material)] : kNone;
+            std::optional<PrimitiveData> data =
+                readPrimitive(model, prim, label, material != kNone ? &scene.materials[size_t(material)] : nullptr,
+                              needs, file, warnings);
+            if (!data)
+                continue;
+
+            // Append to the scene-wide streams; indices become absolute.
+            const size_t base = vertices.positions.size();
+            if (base + data->positions.size() > UINT32_MAX ||
+                scene.indices.size() + data->triangles.size() > UINT32_MAX)
+                fail(file, "scene has more than 2^32 vertices or indices");
+            Primitive out;
+            out.firstIndex = uint32_t(scene.indices.size());
+            out.indexCount = uint32_t(data->triangles.size());
+            out.material = material;
+            for (uint32_t i : data->triangles)
+                scene.indices.push_back(uint32_t(base) + i);
+            vertices.positions.insert(vertices.positions.end(), data->positions.begin(), data->positions.end());
+            vertices.normals.insert(vertices.normals.end(), data->normals.begin(), data->normals.end());
+            vertices.uvs.insert(vertices.uvs.end(), data->uvs.begin(), data->uvs.end());
+            vertices.tangents.insert(vertices.tangents.end(), data->tangents.begin(), data->tangents.end());
+            scene.primitives.push_back(out);
+        }
+        mesh.primitiveCount = uint32_t(scene.primitives.size()) - mesh.firstPrimitive;
+        scene.meshes.push_back(mesh);
+    }
+    if (scene.indices.empty())
+        fail(file, "contains no triangles to import");
+
+    // Step 6: nodes (parents first) and their meshes.
+    for (size_t n = 0; n < order.sourceOf.size(); ++n) {
+        const size_t source = order.sourceOf[n];
+        Node node = convertNode(model, source, file);
+        node.parent = order.parentOf[n];
+        const int mesh = model.nodes[source].mesh;
+        node.mesh = mesh >= 0 ? meshIndex[size_t(mesh)] : kNone;
+        if (model.nodes[source].skin >= 0)
+            warnings.once("skin", nodeLabel(model, source) + " is skinned: skinning ignored, mesh used in bind pose");
+        scene.nodes.push_back(std::move(node));
+    }
+
+    // Step 7: rigid node animation.
+    for (size_t a = 0; a < model.animations.size(); ++a) {
+        const tinygltf::Animation& anim = model.animations[a];
+        Animation out;
+        out.name = anim.name.empty() ? "animation " + std::to_string(a) : anim.name;
+        const std::string label = "animation " + (anim.name.empty() ? std::to_string(a) : quoted(anim.name));
+        for (size_t c = 0; c < anim.channels.size(); ++c) {
+            if (std::optional<AnimationChannel> channel =
+                    convertChannel(model, anim, anim.channels[c], label, c, order, file, warnings, log))
+                out.channels.push_back(std::move(*channel));
+        }
+        if (!out.channels.empty())
+            scene.animations.push_back(std::move(out));
+    }
+
+    // Step 8: texture list parallel to the sources (sizes are filled by the driver).
+    result.textureSources = std::move(textures.sources());
+    for (const TextureSource& source : result.textureSources) {
+        Texture texture;
+        texture.name = source.name;
+        texture.srgb = source.srgb;
+        scene.textures.push_back(std::move(texture));
+    }
+    scene.triangleStats.clear();
+    result.sourceTriangles = scene.triangleCount();
+
+    size_t channels = 0;
+    for (const Animation& a : scene.animations)
+        channels += a.channels.size();
+    log.info("import: " + std::to_string(scene.meshes.size()) + " meshes, " + std::to_string(scene.primitives.size()) +
+             " primitives, " + std::to_string(scene.triangleCount()) + " triangles, " +
+             std::to_string(vertices.size()) + " vertices, " + std::to_string(scene.textures.size()) +
+             " textures, " + std::to_string(scene.nodes.size()) + " nodes, " + std::to_string(channels) +
+             " animation channels");
+    return result;
+}
+
+} // namespace lfd::bake

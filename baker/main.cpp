@@ -1,0 +1,172 @@
+// lfd-bake: glTF 2.0 -> .lfdpack (see README.md "Baking") and `lfd-bake --inspect PACK`.
+#include "bake.h"
+#include "bake_report.h"
+#include "lfd/pack.h"
+
+#include <CLI/CLI.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace {
+
+using namespace lfd;
+using namespace lfd::bake;
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+    std::filesystem::path input, output, display, inspect;
+    double maxEdgePx = 100.0;
+    double fill = 1.0;
+    uint32_t maxTextureSize = 16384;
+    double textureDetail = 2.0;
+    bool keepFullTextures = false;
+    bool quiet = false;
+};
+
+double secondsSince(Clock::time_point start)
+{
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+int inspect(const std::filesystem::path& path)
+{
+    const PackInfo info = verifyPack(path);
+    const Scene scene = readPack(path);
+    printInspectReport(std::cout, path, info, scene);
+    return 0;
+}
+
+int bakeScene(const Options& o)
+{
+    BakeReport report;
+    Log log;
+    log.warn = [](const std::string& s) { std::cerr << "warning: " << s << "\n"; };
+    if (!o.quiet)
+        log.info = [](const std::string& s) { std::cout << s << "\n" << std::flush; };
+
+    // Display profile: the tessellation bound is measured in its view pixels.
+    const DisplayProfile profile = o.display.empty() ? prototypeDisplayProfile() : loadDisplayProfile(o.display);
+
+    auto stage = Clock::now();
+    ImportedScene imported = importGltf(o.input, log);
+    Scene& scene = imported.scene;
+    report.stageSeconds.emplace_back("import", secondsSince(stage));
+
+    // Framing: the scene fitted to the display volume decides what a view pixel measures.
+    stage = Clock::now();
+    scene.bounds = computeBounds(scene);
+    const Framing framing = fitSceneToDisplay(profile, scene.bounds, o.fill);
+    const double viewPixelWorld = minViewPixelWorld(profile, framing);
+    const double maxEdgeWorld = o.maxEdgePx * viewPixelWorld;
+    log.info("framing: radius " + std::to_string(framing.sceneRadius) + " units, 1 view pixel >= " +
+             std::to_string(viewPixelWorld) + " units, edge bound " + std::to_string(maxEdgeWorld) + " units");
+    report.stageSeconds.emplace_back("bounds", secondsSince(stage));
+
+    stage = Clock::now();
+    report.tessellation = tessellateScene(scene, maxEdgeWorld, log);
+    report.stageSeconds.emplace_back("tessellate", secondsSince(stage));
+
+    // Texture sizes: GPU limit and what the views can resolve; n_tex uses the stored size.
+    stage = Clock::now();
+    const std::vector<float> meshScale = meshMaxWorldScale(scene);
+    for (size_t t = 0; t < scene.textures.size(); ++t) {
+        Texture& texture = scene.textures[t];
+        const glm::uvec2 source = probeTextureSize(imported.textureSources[t]);
+        glm::uvec2 stored = storedTextureSize(source, TextureBakeOptions{o.maxTextureSize});
+        if (!o.keepFullTextures)
+            stored = glm::min(stored, resolvableTextureSize(scene, uint32_t(t), stored, viewPixelWorld,
+                                                            meshScale, o.textureDetail));
+        texture.sourceWidth = source.x;
+        texture.sourceHeight = source.y;
+        texture.width = stored.x;
+        texture.height = stored.y;
+        report.textures.push_back({texture.name, source, stored, texture.srgb});
+    }
+    computeTriangleStats(scene);
+    report.stageSeconds.emplace_back("triangle stats", secondsSince(stage));
+
+    scene.settings.bakerVersion = LFD_VERSION;
+    scene.settings.sourceFile = o.input.filename().string();
+    scene.settings.displayProfile = profile.name;
+    scene.settings.viewWidth = profile.viewWidth;
+    scene.settings.viewHeight = profile.viewHeight;
+    scene.settings.viewCount = profile.viewCount;
+    scene.settings.maxEdgePx = float(o.maxEdgePx);
+    scene.settings.framingFill = float(o.fill);
+    scene.settings.viewPixelWorld = float(viewPixelWorld);
+    scene.settings.maxTextureSize = o.maxTextureSize;
+
+    // Textures are decoded and mipmapped one at a time, right before the writer needs them.
+    stage = Clock::now();
+    size_t done = 0;
+    const TextureProducer produce = [&](uint32_t index) {
+        const Texture& meta = scene.textures[index];
+        Texture baked = bakeTexture(imported.textureSources[index],
+                                    TextureBakeOptions{std::max(meta.width, meta.height)});
+        baked.name = meta.name;
+        log.info("textures: " + std::to_string(++done) + "/" + std::to_string(scene.textures.size()) + " " +
+                 meta.name + " " + std::to_string(baked.width) + "x" + std::to_string(baked.height));
+        return baked;
+    };
+    writePack(o.output, scene, produce);
+    report.stageSeconds.emplace_back("textures + write", secondsSince(stage));
+
+    report.pack = verifyPack(o.output);
+    report.trianglesIn = imported.sourceTriangles;
+    report.trianglesOut = scene.triangleCount();
+    report.vertices = scene.vertices.size();
+    report.maxEdgePxBefore = report.tessellation.maxEdgeWorldBefore / viewPixelWorld;
+    report.maxEdgePxAfter = report.tessellation.maxEdgeWorldAfter / viewPixelWorld;
+    report.warnings = imported.warnings.size();
+    report.peakRssBytes = peakResidentBytes();
+    printBakeReport(std::cout, o.output, report);
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    Options o;
+    CLI::App app{"lfd-bake: bake a glTF 2.0 scene into a .lfdpack for light field display rendering"};
+    app.add_option("input", o.input, "glTF 2.0 scene (.gltf or .glb)");
+    app.add_option("-o,--output", o.output, "output pack (.lfdpack)");
+    app.add_option("--inspect", o.inspect, "verify a pack and print its summary (exit 0 only if it verifies)");
+    app.add_option("--display", o.display, "display profile JSON or Looking Glass visual.json (default: the paper's prototype)");
+    app.add_option("--max-edge-px", o.maxEdgePx, "split triangles whose edges exceed this many view pixels (default 100)")
+        ->check(CLI::Range(1.0, 1e6));
+    app.add_option("--fill", o.fill, "fraction of the smaller screen dimension the scene's bounding sphere fills (default 1)")
+        ->check(CLI::Range(0.01, 1.0));
+    app.add_option("--max-texture-size", o.maxTextureSize, "largest texture dimension kept (GPU limit, default 16384)")
+        ->check(CLI::Range(1u, 65536u));
+    app.add_option("--texture-detail", o.textureDetail,
+                   "keep textures this many times finer than the finest view pixel (default 2: room for 2x supersampling)")
+        ->check(CLI::Range(0.1, 64.0));
+    app.add_flag("--keep-full-textures", o.keepFullTextures, "never drop mip levels the views cannot resolve");
+    app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "lfd-bake: " << e.what() << "\n";
+        return 2;
+    }
+
+    try {
+        if (!o.inspect.empty())
+            return inspect(o.inspect);
+        if (o.input.empty() || o.output.empty()) {
+            std::cerr << "lfd-bake: need INPUT and -o OUTPUT (or --inspect PACK); see --help\n";
+            return 2;
+        }
+        return bakeScene(o);
+    } catch (const std::exception& e) {
+        // Every stage reports one line naming the file and the problem.
+        std::cerr << "lfd-bake: error: " << e.what() << "\n";
+        return 1;
+    }
+}

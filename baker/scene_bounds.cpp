@@ -1,0 +1,143 @@
+// Scene-bounds stage: where the geometry can be, in scene space, over the rest pose and
+// the node animation. The player frames the scene (and the baker's tessellation bound
+// assumes that framing) from these bounds, so they must contain every animated pose.
+#include "bake.h"
+
+#include "lfd/scene_animation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lfd::bake {
+namespace {
+
+// Times at which the scene is evaluated: every distinct key time plus the midpoint of
+// each key interval (a rotating part sweeps outside the chord of its keys; the midpoint
+// sample shrinks that gap fourfold). The rest pose is evaluated separately.
+std::vector<float> sampleTimes(const Scene& scene)
+{
+    std::vector<float> times;
+    for (const Animation& animation : scene.animations)
+        for (const AnimationChannel& channel : animation.channels)
+            for (size_t k = 0; k < channel.times.size(); ++k) {
+                times.push_back(channel.times[k]);
+                if (k > 0)
+                    times.push_back(0.5f * (channel.times[k - 1] + channel.times[k]));
+            }
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    return times;
+}
+
+// sceneFromNode for the rest pose (node TRS, animations not applied) and at every sample
+// time, rest pose first.
+std::vector<std::vector<glm::mat4>> sampledWorldMatrices(const Scene& scene)
+{
+    Scene rest; // nodes only: cheap to copy, no animations
+    rest.nodes = scene.nodes;
+    std::vector<std::vector<glm::mat4>> poses{lfd::nodeWorldMatrices(rest, 0.0f)};
+    for (float t : sampleTimes(scene))
+        poses.push_back(lfd::nodeWorldMatrices(scene, t));
+    return poses;
+}
+
+// Distinct sceneFromObject matrices under which each mesh appears (a static node gives
+// the same matrix at every time; evaluating it once keeps large static scenes cheap).
+std::vector<std::vector<glm::mat4>> meshInstances(const Scene& scene)
+{
+    std::vector<std::vector<glm::mat4>> instances(scene.meshes.size());
+    for (const std::vector<glm::mat4>& pose : sampledWorldMatrices(scene))
+        for (size_t n = 0; n < scene.nodes.size(); ++n) {
+            const int32_t mesh = scene.nodes[n].mesh;
+            if (mesh < 0 || size_t(mesh) >= scene.meshes.size())
+                continue;
+            instances[size_t(mesh)].push_back(pose[n]);
+        }
+    auto less = [](const glm::mat4& a, const glm::mat4& b) {
+        const float* x = &a[0][0];
+        const float* y = &b[0][0];
+        return std::lexicographical_compare(x, x + 16, y, y + 16);
+    };
+    for (std::vector<glm::mat4>& list : instances) {
+        std::sort(list.begin(), list.end(), less);
+        list.erase(std::unique(list.begin(), list.end()), list.end());
+    }
+    return instances;
+}
+
+// Vertices referenced by each mesh's primitives, each once.
+std::vector<std::vector<uint32_t>> meshVertices(const Scene& scene)
+{
+    std::vector<std::vector<uint32_t>> result(scene.meshes.size());
+    std::vector<uint32_t> seenBy(scene.vertices.size(), UINT32_MAX);
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const Mesh& mesh = scene.meshes[m];
+        for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p) {
+            if (p >= scene.primitives.size())
+                break;
+            const Primitive& prim = scene.primitives[p];
+            const size_t end = std::min<size_t>(size_t(prim.firstIndex) + prim.indexCount, scene.indices.size());
+            for (size_t i = prim.firstIndex; i < end; ++i) {
+                const uint32_t v = scene.indices[i];
+                if (v < seenBy.size() && seenBy[v] != uint32_t(m)) {
+                    seenBy[v] = uint32_t(m);
+                    result[m].push_back(v);
+                }
+            }
+        }
+    }
+    return result;
+}
+
+} // namespace
+
+SceneBounds computeBounds(const Scene& scene)
+{
+    const std::vector<std::vector<glm::mat4>> instances = meshInstances(scene);
+    const std::vector<std::vector<uint32_t>> vertices = meshVertices(scene);
+    const std::vector<glm::vec3>& p = scene.vertices.positions;
+
+    // Pass 1: AABB of every vertex under every instance matrix.
+    glm::vec3 lo(INFINITY);
+    glm::vec3 hi(-INFINITY);
+    bool any = false;
+    for (size_t m = 0; m < instances.size(); ++m)
+        for (const glm::mat4& sceneFromObject : instances[m])
+            for (uint32_t v : vertices[m]) {
+                const glm::vec3 q = glm::vec3(sceneFromObject * glm::vec4(p[v], 1.0f));
+                lo = glm::min(lo, q);
+                hi = glm::max(hi, q);
+                any = true;
+            }
+    if (!any)
+        return SceneBounds{};
+
+    // Pass 2: sphere about the AABB centre through the farthest vertex, so it contains all
+    // geometry at all sampled times (not merely the AABB's corners).
+    SceneBounds bounds;
+    bounds.min = lo;
+    bounds.max = hi;
+    bounds.center = 0.5f * (lo + hi);
+    float radius2 = 0.0f;
+    for (size_t m = 0; m < instances.size(); ++m)
+        for (const glm::mat4& sceneFromObject : instances[m])
+            for (uint32_t v : vertices[m]) {
+                const glm::vec3 d = glm::vec3(sceneFromObject * glm::vec4(p[v], 1.0f)) - bounds.center;
+                radius2 = std::max(radius2, glm::dot(d, d));
+            }
+    bounds.radius = std::sqrt(radius2);
+    return bounds;
+}
+
+std::vector<float> meshMaxWorldScale(const Scene& scene)
+{
+    std::vector<float> scale(scene.meshes.size(), 0.0f);
+    const std::vector<std::vector<glm::mat4>> instances = meshInstances(scene);
+    for (size_t m = 0; m < instances.size(); ++m)
+        for (const glm::mat4& sceneFromObject : instances[m])
+            for (int c = 0; c < 3; ++c)
+                scale[m] = std::max(scale[m], glm::length(glm::vec3(sceneFromObject[c])));
+    return scale;
+}
+
+} // namespace lfd::bake

@@ -1,0 +1,151 @@
+// Per-triangle texture statistics, paper section 3.1 "Determining Sampling Density":
+//
+//   n_tex   = max_{t in T} (A_ts * X_t * Y_t)        eq. texelCount
+//   size_uv = A_ws / n_tex                           eq. lfd_UVSize
+//
+// and the ratio A_ts / A_ws that the player multiplies by a view pixel's projected area
+// to get size_vpuv (eqs. minVPUVSize / maxVPUVSize). All of it is view independent, so
+// the baker computes it once; A_ws is in object units^2 (the player applies the node's
+// area scale).
+
+#include "bake.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace lfd::bake {
+namespace {
+
+// Below this the triangle has no meaningful world area (collinear or coincident corners).
+constexpr double kDegenerateArea = 1e-30;
+
+glm::dvec3 toDouble(const glm::vec3& v) { return glm::dvec3(v); }
+glm::dvec2 toDouble(const glm::vec2& v) { return glm::dvec2(v); }
+
+// Distinct texture sizes of a material: every slot that is set, each texture once,
+// textures whose size is still unknown (width or height 0) left out.
+std::vector<glm::uvec2> materialTextureSizes(const Scene& scene, int32_t materialIndex)
+{
+    std::vector<glm::uvec2> sizes;
+    if (materialIndex == kNone)
+        return sizes;
+    if (materialIndex < 0 || size_t(materialIndex) >= scene.materials.size())
+        throw BakeError("triangle stats: material " + std::to_string(materialIndex) + " does not exist");
+    const Material& material = scene.materials[size_t(materialIndex)];
+    std::vector<int32_t> slots = {material.baseColorTexture, material.metallicRoughnessTexture,
+                                  material.normalTexture, material.occlusionTexture,
+                                  material.emissiveTexture};
+    std::sort(slots.begin(), slots.end());
+    slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
+    for (int32_t slot : slots) {
+        if (slot == kNone)
+            continue;
+        if (slot < 0 || size_t(slot) >= scene.textures.size())
+            throw BakeError("triangle stats: material '" + material.name + "' uses texture " +
+                            std::to_string(slot) + " which does not exist");
+        const Texture& texture = scene.textures[size_t(slot)];
+        if (texture.width > 0 && texture.height > 0)
+            sizes.emplace_back(texture.width, texture.height);
+    }
+    return sizes;
+}
+
+} // namespace
+
+TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
+                            const glm::vec2& uv0, const glm::vec2& uv1, const glm::vec2& uv2,
+                            const std::vector<glm::uvec2>& textureSizes)
+{
+    TriangleStats stats;
+
+    // Compute world-space area A_ws (double: large scenes with small triangles lose the
+    // cross product to cancellation in float).
+    const glm::dvec3 e1 = toDouble(p1) - toDouble(p0);
+    const glm::dvec3 e2 = toDouble(p2) - toDouble(p0);
+    const double areaWorld = 0.5 * glm::length(glm::cross(e1, e2));
+    const bool degenerate = !(areaWorld > kDegenerateArea); // also catches NaN
+    if (degenerate)
+        stats.flags |= kTriangleDegenerate;
+    else
+        stats.areaWorld = float(areaWorld);
+
+    if (textureSizes.empty())
+        return stats; // untextured: texture statistics stay 0
+    stats.flags |= kTriangleTextured;
+
+    // Compute texture-space area A_ts (uv units^2).
+    const glm::dvec2 t1 = toDouble(uv1) - toDouble(uv0);
+    const glm::dvec2 t2 = toDouble(uv2) - toDouble(uv0);
+    double areaTexture = 0.5 * std::abs(t1.x * t2.y - t1.y * t2.x);
+    if (!std::isfinite(areaTexture))
+        areaTexture = 0.0;
+    stats.areaTexture = float(areaTexture);
+
+    // Compute n_tex = max_t A_ts * X_t * Y_t (eq. texelCount).
+    double texelCount = 0.0;
+    for (const glm::uvec2& size : textureSizes)
+        texelCount = std::max(texelCount, areaTexture * double(size.x) * double(size.y));
+    stats.texelCount = float(texelCount);
+
+    if (degenerate)
+        return stats; // no area to sample: size_uv and A_ts / A_ws stay 0
+
+    // Compute size_uv = A_ws / n_tex (eq. lfd_UVSize).
+    // note: n_tex is clamped to >= 1 texel. A triangle smaller than a texel still covers
+    // (part of) one texel and shows one colour, so one splat of its whole area suffices;
+    // dividing by n_tex < 1 would ask for splats larger than the triangle, and a triangle
+    // whose uvs all coincide (A_ts = 0, n_tex = 0) would get an infinite size_uv.
+    stats.sizeUv = float(areaWorld / std::max(texelCount, 1.0));
+    // Ratio A_ts / A_ws, scaled by a view pixel's projected area to give size_vpuv.
+    stats.texPerWorld = float(areaTexture / areaWorld);
+    return stats;
+}
+
+void computeTriangleStats(Scene& scene)
+{
+    const VertexStreams& v = scene.vertices;
+    if (scene.indices.size() % 3 != 0)
+        throw BakeError("triangle stats: index count is not a multiple of 3");
+    if (!v.uvs.empty() && v.uvs.size() != v.positions.size())
+        throw BakeError("triangle stats: uv stream length differs from the position stream");
+    for (uint32_t index : scene.indices)
+        if (index >= v.positions.size())
+            throw BakeError("triangle stats: vertex index " + std::to_string(index) +
+                            " out of range (" + std::to_string(v.positions.size()) + " vertices)");
+
+    // Triangles outside every primitive use the default material: untextured.
+    const size_t triangleCount = scene.triangleCount();
+    std::vector<int32_t> materialOf(triangleCount, kNone);
+    for (size_t p = 0; p < scene.primitives.size(); ++p) {
+        const Primitive& prim = scene.primitives[p];
+        if (prim.firstIndex % 3 != 0 || prim.indexCount % 3 != 0 ||
+            uint64_t(prim.firstIndex) + prim.indexCount > scene.indices.size())
+            throw BakeError("triangle stats: primitive " + std::to_string(p) + " has an invalid index range");
+        std::fill_n(materialOf.begin() + prim.firstIndex / 3, prim.indexCount / 3, prim.material);
+    }
+
+    // Texture sizes per material (computed once; kNone maps to the last entry: none).
+    std::vector<std::vector<glm::uvec2>> sizesOf(scene.materials.size() + 1);
+    for (size_t m = 0; m < scene.materials.size(); ++m)
+        sizesOf[m] = materialTextureSizes(scene, int32_t(m));
+    auto sizesFor = [&](int32_t material) -> const std::vector<glm::uvec2>& {
+        if (material == kNone)
+            return sizesOf.back();
+        if (material < 0 || size_t(material) >= scene.materials.size())
+            throw BakeError("triangle stats: material " + std::to_string(material) + " does not exist");
+        return v.uvs.empty() ? sizesOf.back() : sizesOf[size_t(material)]; // no uvs: untextured
+    };
+
+    scene.triangleStats.resize(triangleCount);
+    const glm::vec2 noUv(0.0f);
+    for (size_t t = 0; t < triangleCount; ++t) {
+        const uint32_t i0 = scene.indices[3 * t], i1 = scene.indices[3 * t + 1], i2 = scene.indices[3 * t + 2];
+        const bool hasUv = !v.uvs.empty();
+        scene.triangleStats[t] = triangleStats(v.positions[i0], v.positions[i1], v.positions[i2],
+                                               hasUv ? v.uvs[i0] : noUv, hasUv ? v.uvs[i1] : noUv,
+                                               hasUv ? v.uvs[i2] : noUv, sizesFor(materialOf[t]));
+    }
+}
+
+} // namespace lfd::bake

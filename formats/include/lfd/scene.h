@@ -1,0 +1,184 @@
+// In-memory scene model: the contract between baker -> formats -> player.
+//
+// The baker fills a Scene, formats/ writes it to a .lfdpack and reads it back
+// (validated), the player uploads it. Nothing outside formats/ parses pack bytes.
+//
+// Spaces (pbrt-style xFromY naming is used elsewhere):
+//   object space  - vertex streams, per-triangle statistics (A_ws is in object units^2;
+//                   the player multiplies by the node's world area scale at run time)
+//   scene space   - glTF world space (node hierarchy applied), bounds are in scene space
+//   display space - millimetres, origin at the screen centre, +x right, +y up,
+//                   +z towards the viewer (see display_profile.h / framing.h)
+#pragma once
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lfd {
+
+inline constexpr int32_t kNone = -1;
+
+// Which optional vertex streams are present. Position is always present; the other
+// streams are stored only when the scene uses them ("store only used attributes").
+enum VertexStreamBits : uint32_t {
+    kStreamPosition = 1u << 0,
+    kStreamNormal = 1u << 1,
+    kStreamTangent = 1u << 2, // only when some material has a normal map
+    kStreamUv = 1u << 3,      // TEXCOORD_0, only when some material has a texture
+};
+
+struct VertexStreams {
+    std::vector<glm::vec3> positions; // always
+    std::vector<glm::vec3> normals;   // empty, or positions.size()
+    std::vector<glm::vec4> tangents;  // empty, or positions.size(); w = handedness (+-1)
+    std::vector<glm::vec2> uvs;       // empty, or positions.size()
+
+    uint32_t mask() const
+    {
+        return kStreamPosition | (normals.empty() ? 0u : kStreamNormal) |
+               (tangents.empty() ? 0u : kStreamTangent) | (uvs.empty() ? 0u : kStreamUv);
+    }
+    size_t size() const { return positions.size(); }
+};
+
+// A contiguous run of triangles sharing one material. Indices are absolute into
+// Scene::vertices (one vertex buffer, one index buffer for the whole scene).
+// Triangle t of the scene is indices[3t..3t+2]; its statistics are triangleStats[t].
+struct Primitive {
+    uint32_t firstIndex = 0;  // multiple of 3
+    uint32_t indexCount = 0;  // multiple of 3
+    int32_t material = kNone; // index into Scene::materials, or kNone (default material)
+};
+
+struct Mesh {
+    std::string name;
+    uint32_t firstPrimitive = 0;
+    uint32_t primitiveCount = 0;
+};
+
+// Rigid node transform, glTF semantics: local = T * R * S. glTF nodes given as a
+// matrix are decomposed by the baker (a matrix with shear is an error).
+struct Node {
+    std::string name;
+    int32_t parent = kNone; // parents always precede children (parent < own index)
+    int32_t mesh = kNone;
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f}; // glm order: w, x, y, z
+    glm::vec3 scale{1.0f};
+};
+
+enum class AnimationPath : uint32_t { Translation = 0, Rotation = 1, Scale = 2 };
+enum class Interpolation : uint32_t { Linear = 0, Step = 1 }; // cubic spline is linearised by the baker
+
+struct AnimationChannel {
+    uint32_t node = 0;
+    AnimationPath path = AnimationPath::Translation;
+    Interpolation interpolation = Interpolation::Linear;
+    std::vector<float> times;      // seconds, strictly increasing, size >= 1
+    std::vector<glm::vec4> values; // size == times.size(); xyz for T/S, quaternion xyzw for R
+};
+
+struct Animation {
+    std::string name;
+    std::vector<AnimationChannel> channels;
+};
+
+enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
+
+// glTF 2.0 metallic-roughness material. Texture fields index Scene::textures.
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f};
+    glm::vec3 emissiveFactor{0.0f};
+    float metallicFactor = 1.0f;
+    float roughnessFactor = 1.0f;
+    float normalScale = 1.0f;
+    float occlusionStrength = 1.0f;
+    float alphaCutoff = 0.5f;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    bool doubleSided = false;
+    int32_t baseColorTexture = kNone;         // sRGB
+    int32_t metallicRoughnessTexture = kNone; // linear (G = roughness, B = metallic)
+    int32_t normalTexture = kNone;            // linear
+    int32_t occlusionTexture = kNone;         // linear (R)
+    int32_t emissiveTexture = kNone;          // sRGB
+};
+
+struct MipLevel {
+    uint32_t width = 0;
+    uint32_t height = 0;
+    uint64_t offset = 0; // byte offset into Texture::texels
+    uint64_t size = 0;   // width * height * 4
+};
+
+// RGBA8 texture with its full mip chain (level 0 .. 1x1), levels stored back to back.
+struct Texture {
+    std::string name;
+    uint32_t width = 0;  // level 0 as stored (after any reduction)
+    uint32_t height = 0;
+    uint32_t sourceWidth = 0; // as decoded from the source image
+    uint32_t sourceHeight = 0;
+    bool srgb = false; // colour data (baseColor, emissive) is sRGB-encoded
+    std::vector<MipLevel> mips;
+    std::vector<uint8_t> texels;
+};
+
+// Per-triangle statistics, paper section 3.1 (eqs. texelCount, lfd_UVSize).
+enum TriangleFlags : uint32_t {
+    kTriangleTextured = 1u << 0,   // material has at least one texture and uvs exist
+    kTriangleDegenerate = 1u << 1, // zero world area (stats are zero)
+};
+
+struct TriangleStats {
+    float areaWorld = 0.0f;   // A_ws, object units^2
+    float areaTexture = 0.0f; // A_ts, uv units^2 (TEXCOORD_0)
+    float texelCount = 0.0f;  // n_tex = max_t A_ts * X_t * Y_t over the material's textures
+    float sizeUv = 0.0f;      // size_uv = A_ws / n_tex  (0 when untextured)
+    float texPerWorld = 0.0f; // A_ts / A_ws, used for size_vpuv (0 when untextured/degenerate)
+    uint32_t flags = 0;       // TriangleFlags
+};
+static_assert(sizeof(TriangleStats) == 24, "TriangleStats is a GPU-visible layout");
+
+struct SceneBounds {
+    glm::vec3 min{0.0f}; // scene-space AABB, conservative over all animation keys
+    glm::vec3 max{0.0f};
+    glm::vec3 center{0.0f}; // bounding sphere (the turntable rotates about center)
+    float radius = 0.0f;
+};
+
+// What the baker was asked to do; stored so the player can reproduce the framing the
+// tessellation bound assumed, and so a pack says how it was made.
+struct BakeSettings {
+    std::string bakerVersion;
+    std::string sourceFile;     // file name only, no directories
+    std::string displayProfile; // profile name
+    uint32_t viewWidth = 0;
+    uint32_t viewHeight = 0;
+    uint32_t viewCount = 0;
+    float maxEdgePx = 100.0f;      // tessellation bound in view pixels
+    float framingFill = 1.0f;      // see framing.h
+    float viewPixelWorld = 0.0f;   // scene units per view pixel used for the bound (conservative)
+    uint32_t maxTextureSize = 0;   // largest texture dimension kept
+};
+
+struct Scene {
+    VertexStreams vertices;
+    std::vector<uint32_t> indices; // triangle list
+    std::vector<TriangleStats> triangleStats; // indices.size() / 3 entries
+    std::vector<Primitive> primitives;
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<Node> nodes;
+    std::vector<Animation> animations;
+    SceneBounds bounds;
+    BakeSettings settings;
+
+    size_t triangleCount() const { return indices.size() / 3; }
+};
+
+} // namespace lfd

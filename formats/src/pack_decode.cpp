@@ -1,0 +1,323 @@
+// Sections -> Scene. Runs after validateStructure, so every known section lies inside
+// the buffer and its count matches its size: allocations sized from counts are bounded
+// by the bytes present. Cross-section runs (strings, channels, keys, mips, texels) are
+// checked here before they drive a copy; the remaining rules are validateScene's.
+#include "pack_internal.h"
+
+#include <cstring>
+
+namespace lfd::pack {
+
+namespace {
+
+class Decoder {
+public:
+    Decoder(const uint8_t* data, const SectionTable& table, const std::string& name, bool withTexels)
+        : data_(data), table_(table), name_(name), withTexels_(withTexels)
+    {
+        const SectionEntry& strings = section(kTagStrings);
+        strings_ = data_ + strings.offset;
+        stringBytes_ = strings.size;
+    }
+
+    Scene run()
+    {
+        Scene scene;
+        decodeSettings(scene.settings);
+        decodeBounds(scene.bounds);
+        decodeVertices(scene.vertices);
+        scene.indices = array<uint32_t>(kTagIndices);
+        scene.triangleStats = array<TriangleStats>(kTagTriangleStats);
+        decodePrimitives(scene.primitives);
+        decodeMeshes(scene.meshes);
+        decodeMaterials(scene.materials);
+        decodeTextures(scene.textures);
+        decodeNodes(scene.nodes);
+        decodeAnimations(scene.animations);
+        return scene;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& problem) const { pack::fail(name_, problem); }
+
+    const SectionEntry& section(uint32_t tag) const { return *table_.find(tag); } // required: present
+
+    template <typename T>
+    std::vector<T> array(uint32_t tag) const
+    {
+        const SectionEntry* e = table_.find(tag);
+        std::vector<T> out;
+        if (!e)
+            return out;
+        out.resize(size_t(e->count));
+        if (e->size != 0)
+            std::memcpy(out.data(), data_ + e->offset, size_t(e->size));
+        return out;
+    }
+
+    template <typename Record>
+    Record record(const SectionEntry& e, uint64_t i) const
+    {
+        Record r;
+        std::memcpy(&r, data_ + e.offset + i * sizeof(Record), sizeof r);
+        return r;
+    }
+
+    // Strings may not be shared: their lengths add up to at most the STRS size, so no
+    // pack can make the reader allocate more name bytes than it holds.
+    std::string string(StringRef ref, const std::string& what)
+    {
+        if (uint64_t(ref.offset) + ref.length > stringBytes_)
+            fail(what + ": name [" + std::to_string(ref.offset) + ", +" + std::to_string(ref.length) +
+                 ") is outside the " + std::to_string(stringBytes_) + "-byte string section");
+        stringTotal_ += ref.length;
+        if (stringTotal_ > stringBytes_)
+            fail(what + ": names add up to more bytes than the string section holds");
+        return std::string(reinterpret_cast<const char*>(strings_ + ref.offset), ref.length);
+    }
+
+    void reserved(uint64_t value, const std::string& what) const
+    {
+        if (value != 0)
+            fail(what + ": non-zero reserved field");
+    }
+
+    void decodeSettings(BakeSettings& s)
+    {
+        const auto r = record<BakeSettingsRecord>(section(kTagBakeSettings), 0);
+        s.bakerVersion = string(r.bakerVersion, "bake settings");
+        s.sourceFile = string(r.sourceFile, "bake settings");
+        s.displayProfile = string(r.displayProfile, "bake settings");
+        s.viewWidth = r.viewWidth;
+        s.viewHeight = r.viewHeight;
+        s.viewCount = r.viewCount;
+        s.maxTextureSize = r.maxTextureSize;
+        s.maxEdgePx = r.maxEdgePx;
+        s.framingFill = r.framingFill;
+        s.viewPixelWorld = r.viewPixelWorld;
+        reserved(uint64_t(r.reserved[0]) | r.reserved[1] | r.reserved[2], "bake settings");
+    }
+
+    void decodeBounds(SceneBounds& b) const
+    {
+        const auto r = record<BoundsRecord>(section(kTagBounds), 0);
+        std::memcpy(&b.min, r.min, sizeof r.min);
+        std::memcpy(&b.max, r.max, sizeof r.max);
+        std::memcpy(&b.center, r.center, sizeof r.center);
+        b.radius = r.radius;
+        reserved(uint64_t(r.reserved0) | r.reserved1, "scene bounds");
+    }
+
+    void decodeVertices(VertexStreams& v) const
+    {
+        v.positions = array<glm::vec3>(kTagPositions);
+        v.normals = array<glm::vec3>(kTagNormals);
+        v.tangents = array<glm::vec4>(kTagTangents);
+        v.uvs = array<glm::vec2>(kTagUvs);
+    }
+
+    void decodePrimitives(std::vector<Primitive>& primitives) const
+    {
+        const SectionEntry& e = section(kTagPrimitives);
+        primitives.resize(size_t(e.count));
+        for (uint64_t i = 0; i < e.count; ++i) {
+            const auto r = record<PrimitiveRecord>(e, i);
+            reserved(r.reserved, "primitive " + std::to_string(i));
+            primitives[i] = Primitive{r.firstIndex, r.indexCount, r.material};
+        }
+    }
+
+    void decodeMeshes(std::vector<Mesh>& meshes)
+    {
+        const SectionEntry& e = section(kTagMeshes);
+        meshes.resize(size_t(e.count));
+        for (uint64_t i = 0; i < e.count; ++i) {
+            const auto r = record<MeshRecord>(e, i);
+            Mesh& m = meshes[i];
+            m.name = string(r.name, "mesh " + std::to_string(i));
+            m.firstPrimitive = r.firstPrimitive;
+            m.primitiveCount = r.primitiveCount;
+        }
+    }
+
+    void decodeMaterials(std::vector<Material>& materials)
+    {
+        const SectionEntry& e = section(kTagMaterials);
+        materials.resize(size_t(e.count));
+        for (uint64_t i = 0; i < e.count; ++i) {
+            const auto r = record<MaterialRecord>(e, i);
+            const std::string where = "material " + std::to_string(i);
+            Material& m = materials[i];
+            m.name = string(r.name, where);
+            std::memcpy(&m.baseColorFactor, r.baseColorFactor, sizeof r.baseColorFactor);
+            std::memcpy(&m.emissiveFactor, r.emissiveFactor, sizeof r.emissiveFactor);
+            m.metallicFactor = r.metallicFactor;
+            m.roughnessFactor = r.roughnessFactor;
+            m.normalScale = r.normalScale;
+            m.occlusionStrength = r.occlusionStrength;
+            m.alphaCutoff = r.alphaCutoff;
+            m.alphaMode = AlphaMode(r.alphaMode); // range checked by validateScene
+            if (r.doubleSided > 1)
+                fail(where + ": doubleSided is " + std::to_string(r.doubleSided) + ", must be 0 or 1");
+            m.doubleSided = r.doubleSided == 1;
+            m.baseColorTexture = r.baseColorTexture;
+            m.metallicRoughnessTexture = r.metallicRoughnessTexture;
+            m.normalTexture = r.normalTexture;
+            m.occlusionTexture = r.occlusionTexture;
+            m.emissiveTexture = r.emissiveTexture;
+            reserved(uint64_t(r.reserved0) | r.reserved1[0] | r.reserved1[1], where);
+        }
+    }
+
+    // Textures own consecutive runs of MIPS and TEXL, in order, covering both sections.
+    void decodeTextures(std::vector<Texture>& textures)
+    {
+        const SectionEntry& e = section(kTagTextures);
+        const SectionEntry& mips = section(kTagMipLevels);
+        const SectionEntry& texels = section(kTagTexels);
+        textures.resize(size_t(e.count));
+        uint64_t nextMip = 0;
+        uint64_t nextTexel = 0;
+        for (uint64_t i = 0; i < e.count; ++i) {
+            const auto r = record<TextureRecord>(e, i);
+            const std::string where = "texture " + std::to_string(i);
+            Texture& t = textures[i];
+            t.name = string(r.name, where);
+            if (r.width == 0 || r.height == 0 || r.width > kMaxTextureDimension || r.height > kMaxTextureDimension)
+                fail(where + ": size " + std::to_string(r.width) + "x" + std::to_string(r.height) + " is outside 1.." +
+                     std::to_string(kMaxTextureDimension));
+            t.width = r.width;
+            t.height = r.height;
+            t.sourceWidth = r.sourceWidth;
+            t.sourceHeight = r.sourceHeight;
+            if (r.flags & ~kTextureSrgb)
+                fail(where + ": unknown flags " + std::to_string(r.flags));
+            t.srgb = (r.flags & kTextureSrgb) != 0;
+            reserved(uint64_t(r.reserved0) | r.reserved1, where);
+
+            // Mip chain: the full chain, stored as the next run of MIPS records.
+            const std::vector<MipLevel> chain = mipChain(r.width, r.height);
+            if (r.mipCount != chain.size())
+                fail(where + ": " + std::to_string(r.mipCount) + " mip levels, a " + std::to_string(r.width) + "x" +
+                     std::to_string(r.height) + " texture has " + std::to_string(chain.size()));
+            if (r.firstMip != nextMip || mips.count - nextMip < chain.size())
+                fail(where + ": mip levels [" + std::to_string(r.firstMip) + ", +" + std::to_string(r.mipCount) +
+                     ") do not follow the previous texture's within the " + std::to_string(mips.count) +
+                     " mip records");
+            for (uint32_t l = 0; l < chain.size(); ++l) {
+                const auto m = record<MipRecord>(mips, nextMip + l);
+                const MipLevel& want = chain[l];
+                if (m.width != want.width || m.height != want.height || m.offset != want.offset ||
+                    m.size != want.size)
+                    fail(where + ": mip level " + std::to_string(l) + " is " + std::to_string(m.width) + "x" +
+                         std::to_string(m.height) + " at +" + std::to_string(m.offset) + " size " +
+                         std::to_string(m.size) + ", expected " + std::to_string(want.width) + "x" +
+                         std::to_string(want.height) + " at +" + std::to_string(want.offset) + " size " +
+                         std::to_string(want.size));
+            }
+            nextMip += chain.size();
+            t.mips = chain;
+
+            // Texels: the next run of TEXL, exactly the chain's size.
+            const uint64_t bytes = mipChainBytes(r.width, r.height);
+            if (r.texelOffset != nextTexel || r.texelSize != bytes || texels.size - nextTexel < bytes)
+                fail(where + ": texels [" + std::to_string(r.texelOffset) + ", +" + std::to_string(r.texelSize) +
+                     ") are not the next " + std::to_string(bytes) + " bytes of the " + std::to_string(texels.size) +
+                     "-byte texel section");
+            if (withTexels_)
+                t.texels.assign(data_ + texels.offset + nextTexel, data_ + texels.offset + nextTexel + bytes);
+            nextTexel += bytes;
+        }
+        if (nextMip != mips.count)
+            fail("textures use " + std::to_string(nextMip) + " of " + std::to_string(mips.count) + " mip records");
+        if (nextTexel != texels.size)
+            fail("textures use " + std::to_string(nextTexel) + " of " + std::to_string(texels.size) + " texel bytes");
+    }
+
+    void decodeNodes(std::vector<Node>& nodes)
+    {
+        const SectionEntry& e = section(kTagNodes);
+        nodes.resize(size_t(e.count));
+        for (uint64_t i = 0; i < e.count; ++i) {
+            const auto r = record<NodeRecord>(e, i);
+            Node& n = nodes[i];
+            n.name = string(r.name, "node " + std::to_string(i));
+            n.parent = r.parent;
+            n.mesh = r.mesh;
+            std::memcpy(&n.translation, r.translation, sizeof r.translation);
+            n.rotation = glm::quat(r.rotation[3], r.rotation[0], r.rotation[1], r.rotation[2]);
+            std::memcpy(&n.scale, r.scale, sizeof r.scale);
+            reserved(uint64_t(r.reserved[0]) | r.reserved[1], "node " + std::to_string(i));
+        }
+    }
+
+    // Animations own consecutive runs of channels, channels consecutive runs of keys.
+    void decodeAnimations(std::vector<Animation>& animations)
+    {
+        const SectionEntry& e = section(kTagAnimations);
+        const SectionEntry& channels = section(kTagChannels);
+        const SectionEntry& times = section(kTagKeyTimes);
+        const SectionEntry& values = section(kTagKeyValues);
+        if (times.count != values.count)
+            fail(std::to_string(times.count) + " key times but " + std::to_string(values.count) + " key values");
+        animations.resize(size_t(e.count));
+        uint64_t nextChannel = 0;
+        uint64_t nextKey = 0;
+        for (uint64_t a = 0; a < e.count; ++a) {
+            const auto r = record<AnimationRecord>(e, a);
+            const std::string where = "animation " + std::to_string(a);
+            Animation& anim = animations[a];
+            anim.name = string(r.name, where);
+            if (r.firstChannel != nextChannel || channels.count - nextChannel < r.channelCount)
+                fail(where + ": channels [" + std::to_string(r.firstChannel) + ", +" + std::to_string(r.channelCount) +
+                     ") do not follow the previous animation's within the " + std::to_string(channels.count) +
+                     " channels");
+            anim.channels.resize(r.channelCount);
+            for (uint32_t c = 0; c < r.channelCount; ++c) {
+                const auto ch = record<ChannelRecord>(channels, nextChannel + c);
+                const std::string channelWhere = where + " channel " + std::to_string(c);
+                reserved(ch.reserved, channelWhere);
+                if (ch.firstKey != nextKey || times.count - nextKey < ch.keyCount)
+                    fail(channelWhere + ": keys [" + std::to_string(ch.firstKey) + ", +" +
+                         std::to_string(ch.keyCount) + ") do not follow the previous channel's within the " +
+                         std::to_string(times.count) + " keys");
+                AnimationChannel& out = anim.channels[c];
+                out.node = ch.node;
+                out.path = AnimationPath(ch.path);                  // range checked by validateScene
+                out.interpolation = Interpolation(ch.interpolation); // likewise
+                out.times.resize(size_t(ch.keyCount));
+                out.values.resize(size_t(ch.keyCount));
+                if (ch.keyCount != 0) {
+                    std::memcpy(out.times.data(), data_ + times.offset + nextKey * 4, size_t(ch.keyCount * 4));
+                    std::memcpy(out.values.data(), data_ + values.offset + nextKey * 16, size_t(ch.keyCount * 16));
+                }
+                nextKey += ch.keyCount;
+            }
+            nextChannel += r.channelCount;
+        }
+        if (nextChannel != channels.count)
+            fail("animations use " + std::to_string(nextChannel) + " of " + std::to_string(channels.count) +
+                 " channels");
+        if (nextKey != times.count)
+            fail("animation channels use " + std::to_string(nextKey) + " of " + std::to_string(times.count) + " keys");
+    }
+
+    const uint8_t* data_;
+    const SectionTable& table_;
+    const std::string& name_;
+    bool withTexels_;
+    const uint8_t* strings_ = nullptr;
+    uint64_t stringBytes_ = 0;
+    uint64_t stringTotal_ = 0;
+};
+
+} // namespace
+
+Scene decodeScene(const uint8_t* data, const SectionTable& table, const std::string& name, bool withTexels)
+{
+    Scene scene = Decoder(data, table, name, withTexels).run();
+    validateScene(scene, name, withTexels ? TexelPolicy::Required : TexelPolicy::MetadataOnly);
+    return scene;
+}
+
+} // namespace lfd::pack

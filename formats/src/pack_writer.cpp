@@ -1,0 +1,450 @@
+// .lfdpack writer. Plans the whole layout first (every section size is known up front,
+// texel sizes from the textures' width/height metadata), then streams the payloads in
+// order while hashing them, and finally seeks back to fill in the section table and the
+// header. The atomic file write around it lives in pack_file_writer.cpp.
+#include "pack_internal.h"
+
+#include <xxhash.h>
+
+#include <algorithm>
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <memory>
+
+namespace lfd::pack {
+
+namespace {
+
+static_assert(sizeof(glm::vec2) == 8 && sizeof(glm::vec3) == 12 && sizeof(glm::vec4) == 16,
+              "vertex streams are written straight from glm arrays");
+static_assert(offsetof(TriangleStats, flags) == 20, "TSTA is written straight from lfd::TriangleStats");
+
+class MemorySink final : public Sink {
+public:
+    explicit MemorySink(std::vector<uint8_t>& bytes) : bytes_(bytes) {}
+    void write(const void* data, size_t size) override
+    {
+        const auto* p = static_cast<const uint8_t*>(data);
+        bytes_.insert(bytes_.end(), p, p + size);
+    }
+    void writeAt(uint64_t offset, const void* data, size_t size) override
+    {
+        std::memcpy(bytes_.data() + offset, data, size);
+    }
+
+private:
+    std::vector<uint8_t>& bytes_;
+};
+
+using XxhState = std::unique_ptr<XXH3_state_t, decltype(&XXH3_freeState)>;
+
+// One section's payload on its way out: counts bytes and feeds the XXH3 streaming state.
+class SectionStream {
+public:
+    explicit SectionStream(Sink& sink) : sink_(sink), state_(XXH3_createState(), &XXH3_freeState)
+    {
+        if (!state_ || XXH3_64bits_reset(state_.get()) != XXH_OK)
+            throw std::bad_alloc();
+    }
+    void write(const void* data, size_t size)
+    {
+        sink_.write(data, size);
+        XXH3_64bits_update(state_.get(), data, size);
+        written_ += size;
+    }
+    uint64_t written() const { return written_; }
+    uint64_t digest() const { return XXH3_64bits_digest(state_.get()); }
+
+private:
+    Sink& sink_;
+    XxhState state_;
+    uint64_t written_ = 0;
+};
+
+// Names are appended once each; sections refer to them by (offset, length).
+class StringTable {
+public:
+    explicit StringTable(const std::string& name) : name_(name) {}
+    StringRef add(const std::string& s)
+    {
+        if (uint64_t(bytes_.size()) + s.size() > UINT32_MAX)
+            fail(name_, "names exceed 4 GiB");
+        StringRef ref{uint32_t(bytes_.size()), uint32_t(s.size())};
+        bytes_.insert(bytes_.end(), s.begin(), s.end());
+        return ref;
+    }
+    const std::vector<uint8_t>& bytes() const { return bytes_; }
+
+private:
+    const std::string& name_;
+    std::vector<uint8_t> bytes_;
+};
+
+template <typename Record>
+std::vector<uint8_t> recordBytes(const std::vector<Record>& records)
+{
+    std::vector<uint8_t> bytes(records.size() * sizeof(Record));
+    if (!records.empty())
+        std::memcpy(bytes.data(), records.data(), bytes.size());
+    return bytes;
+}
+
+// Calls the producer for texture i and checks that the result fills exactly the bytes
+// planned from Scene::textures[i]'s metadata.
+Texture produceTexture(const Scene& scene, const TextureProducer& produce, uint32_t i, const std::string& name)
+{
+    const std::string where = "texture " + std::to_string(i) + ": ";
+    Texture produced;
+    try {
+        produced = produce(i);
+    } catch (const PackError&) {
+        throw;
+    } catch (const std::exception& e) {
+        fail(name, where + "producer failed: " + e.what());
+    } catch (...) {
+        fail(name, where + "producer failed with an unknown exception");
+    }
+    const Texture& meta = scene.textures[i];
+    if (produced.width != meta.width || produced.height != meta.height)
+        fail(name, where + "produced " + std::to_string(produced.width) + "x" + std::to_string(produced.height) +
+                       " but the scene says " + std::to_string(meta.width) + "x" + std::to_string(meta.height));
+    if (produced.srgb != meta.srgb)
+        fail(name, where + "produced sRGB flag differs from the scene's");
+    const std::vector<MipLevel> chain = mipChain(produced.width, produced.height);
+    bool same = produced.mips.size() == chain.size();
+    for (size_t l = 0; same && l < chain.size(); ++l)
+        same = produced.mips[l].width == chain[l].width && produced.mips[l].height == chain[l].height &&
+               produced.mips[l].offset == chain[l].offset && produced.mips[l].size == chain[l].size;
+    if (!same)
+        fail(name, where + "produced mip levels that are not the full chain");
+    if (produced.texels.size() != mipChainBytes(produced.width, produced.height))
+        fail(name, where + "produced " + std::to_string(produced.texels.size()) + " texel bytes, expected " +
+                       std::to_string(mipChainBytes(produced.width, produced.height)));
+    return produced;
+}
+
+struct PlannedSection {
+    SectionEntry entry{}; // checksum filled in after emitting
+    std::function<void(SectionStream&)> emit;
+};
+
+class PackPlanner {
+public:
+    PackPlanner(const Scene& scene, const TextureProducer& produce, const std::string& name)
+        : scene_(scene), produce_(produce), name_(name), strings_(name)
+    {
+    }
+
+    std::vector<PlannedSection> plan()
+    {
+        // Metadata records are small: encode them now, which also fills the string table.
+        std::vector<uint8_t> bake = encodeSettings();
+        std::vector<uint8_t> bounds = encodeBounds();
+        std::vector<uint8_t> meshes = encodeMeshes();
+        std::vector<uint8_t> materials = encodeMaterials();
+        std::vector<uint8_t> mips;
+        std::vector<uint8_t> textures = encodeTextures(mips);
+        std::vector<uint8_t> nodes = encodeNodes();
+        std::vector<uint8_t> channels;
+        std::vector<uint8_t> animations = encodeAnimations(channels);
+        std::vector<uint8_t> primitives = encodePrimitives();
+
+        const VertexStreams& v = scene_.vertices;
+        addBytes(kTagBakeSettings, sizeof(BakeSettingsRecord), std::move(bake));
+        addBytes(kTagBounds, sizeof(BoundsRecord), std::move(bounds));
+        addBytes(kTagStrings, 1, strings_.bytes());
+        addArray(kTagPositions, v.positions, true);
+        addArray(kTagNormals, v.normals, false);
+        addArray(kTagTangents, v.tangents, false);
+        addArray(kTagUvs, v.uvs, false);
+        addArray(kTagIndices, scene_.indices, true);
+        addArray(kTagTriangleStats, scene_.triangleStats, true);
+        addBytes(kTagPrimitives, sizeof(PrimitiveRecord), std::move(primitives));
+        addBytes(kTagMeshes, sizeof(MeshRecord), std::move(meshes));
+        addBytes(kTagMaterials, sizeof(MaterialRecord), std::move(materials));
+        addBytes(kTagTextures, sizeof(TextureRecord), std::move(textures));
+        addBytes(kTagMipLevels, sizeof(MipRecord), std::move(mips));
+        addBytes(kTagNodes, sizeof(NodeRecord), std::move(nodes));
+        addBytes(kTagAnimations, sizeof(AnimationRecord), std::move(animations));
+        addBytes(kTagChannels, sizeof(ChannelRecord), std::move(channels));
+        addKeys();
+        addTexels(); // last: the large streamed section
+        return std::move(sections_);
+    }
+
+private:
+    void add(uint32_t tag, uint32_t stride, uint64_t count, std::function<void(SectionStream&)> emit)
+    {
+        PlannedSection s;
+        s.entry.tag = tag;
+        s.entry.version = kSectionVersion;
+        s.entry.stride = stride;
+        s.entry.count = count;
+        s.entry.size = count * stride;
+        s.emit = std::move(emit);
+        sections_.push_back(std::move(s));
+    }
+
+    void addBytes(uint32_t tag, uint32_t stride, std::vector<uint8_t> bytes)
+    {
+        const uint64_t count = bytes.size() / stride;
+        add(tag, stride, count, [bytes = std::move(bytes)](SectionStream& out) { out.write(bytes.data(), bytes.size()); });
+    }
+
+    template <typename T>
+    void addArray(uint32_t tag, const std::vector<T>& values, bool required)
+    {
+        if (values.empty() && !required)
+            return; // optional vertex streams are absent when unused
+        add(tag, sizeof(T), values.size(),
+            [&values](SectionStream& out) { out.write(values.data(), values.size() * sizeof(T)); });
+    }
+
+    std::vector<uint8_t> encodeSettings()
+    {
+        const BakeSettings& s = scene_.settings;
+        BakeSettingsRecord r{};
+        r.bakerVersion = strings_.add(s.bakerVersion);
+        r.sourceFile = strings_.add(s.sourceFile);
+        r.displayProfile = strings_.add(s.displayProfile);
+        r.viewWidth = s.viewWidth;
+        r.viewHeight = s.viewHeight;
+        r.viewCount = s.viewCount;
+        r.maxTextureSize = s.maxTextureSize;
+        r.maxEdgePx = s.maxEdgePx;
+        r.framingFill = s.framingFill;
+        r.viewPixelWorld = s.viewPixelWorld;
+        return recordBytes(std::vector<BakeSettingsRecord>{r});
+    }
+
+    std::vector<uint8_t> encodeBounds() const
+    {
+        const SceneBounds& b = scene_.bounds;
+        BoundsRecord r{};
+        std::memcpy(r.min, &b.min, sizeof r.min);
+        std::memcpy(r.max, &b.max, sizeof r.max);
+        std::memcpy(r.center, &b.center, sizeof r.center);
+        r.radius = b.radius;
+        return recordBytes(std::vector<BoundsRecord>{r});
+    }
+
+    std::vector<uint8_t> encodePrimitives() const
+    {
+        std::vector<PrimitiveRecord> records;
+        records.reserve(scene_.primitives.size());
+        for (const Primitive& p : scene_.primitives)
+            records.push_back(PrimitiveRecord{p.firstIndex, p.indexCount, p.material, 0});
+        return recordBytes(records);
+    }
+
+    std::vector<uint8_t> encodeMeshes()
+    {
+        std::vector<MeshRecord> records;
+        for (const Mesh& m : scene_.meshes)
+            records.push_back(MeshRecord{strings_.add(m.name), m.firstPrimitive, m.primitiveCount});
+        return recordBytes(records);
+    }
+
+    std::vector<uint8_t> encodeMaterials()
+    {
+        std::vector<MaterialRecord> records;
+        for (const Material& m : scene_.materials) {
+            MaterialRecord r{};
+            std::memcpy(r.baseColorFactor, &m.baseColorFactor, sizeof r.baseColorFactor);
+            std::memcpy(r.emissiveFactor, &m.emissiveFactor, sizeof r.emissiveFactor);
+            r.metallicFactor = m.metallicFactor;
+            r.roughnessFactor = m.roughnessFactor;
+            r.normalScale = m.normalScale;
+            r.occlusionStrength = m.occlusionStrength;
+            r.alphaCutoff = m.alphaCutoff;
+            r.alphaMode = uint32_t(m.alphaMode);
+            r.doubleSided = m.doubleSided ? 1 : 0;
+            r.baseColorTexture = m.baseColorTexture;
+            r.metallicRoughnessTexture = m.metallicRoughnessTexture;
+            r.normalTexture = m.normalTexture;
+            r.occlusionTexture = m.occlusionTexture;
+            r.emissiveTexture = m.emissiveTexture;
+            r.name = strings_.add(m.name);
+            records.push_back(r);
+        }
+        return recordBytes(records);
+    }
+
+    // Descriptors and mip levels come from the metadata alone, so the texel section's size
+    // is known before any texture is produced.
+    std::vector<uint8_t> encodeTextures(std::vector<uint8_t>& mipBytes)
+    {
+        std::vector<TextureRecord> records;
+        std::vector<MipRecord> mips;
+        uint64_t texelOffset = 0;
+        for (const Texture& t : scene_.textures) {
+            TextureRecord r{};
+            r.name = strings_.add(t.name);
+            r.width = t.width;
+            r.height = t.height;
+            r.sourceWidth = t.sourceWidth;
+            r.sourceHeight = t.sourceHeight;
+            r.flags = t.srgb ? kTextureSrgb : 0;
+            r.mipCount = fullMipCount(t.width, t.height);
+            r.firstMip = uint32_t(mips.size());
+            r.texelOffset = texelOffset;
+            r.texelSize = mipChainBytes(t.width, t.height);
+            for (const MipLevel& level : mipChain(t.width, t.height))
+                mips.push_back(MipRecord{level.width, level.height, level.offset, level.size});
+            texelOffset += r.texelSize;
+            records.push_back(r);
+        }
+        texelBytes_ = texelOffset;
+        mipBytes = recordBytes(mips);
+        return recordBytes(records);
+    }
+
+    std::vector<uint8_t> encodeNodes()
+    {
+        std::vector<NodeRecord> records;
+        for (const Node& n : scene_.nodes) {
+            NodeRecord r{};
+            std::memcpy(r.translation, &n.translation, sizeof r.translation);
+            r.parent = n.parent;
+            r.rotation[0] = n.rotation.x;
+            r.rotation[1] = n.rotation.y;
+            r.rotation[2] = n.rotation.z;
+            r.rotation[3] = n.rotation.w;
+            std::memcpy(r.scale, &n.scale, sizeof r.scale);
+            r.mesh = n.mesh;
+            r.name = strings_.add(n.name);
+            records.push_back(r);
+        }
+        return recordBytes(records);
+    }
+
+    std::vector<uint8_t> encodeAnimations(std::vector<uint8_t>& channelBytes)
+    {
+        std::vector<AnimationRecord> animations;
+        std::vector<ChannelRecord> channels;
+        keyCount_ = 0;
+        for (const Animation& a : scene_.animations) {
+            animations.push_back(AnimationRecord{strings_.add(a.name), uint32_t(channels.size()),
+                                                 uint32_t(a.channels.size())});
+            for (const AnimationChannel& c : a.channels) {
+                ChannelRecord r{};
+                r.node = c.node;
+                r.path = uint32_t(c.path);
+                r.interpolation = uint32_t(c.interpolation);
+                r.firstKey = keyCount_;
+                r.keyCount = c.times.size();
+                keyCount_ += c.times.size();
+                channels.push_back(r);
+            }
+        }
+        if (channels.size() > UINT32_MAX)
+            fail(name_, "too many animation channels");
+        channelBytes = recordBytes(channels);
+        return recordBytes(animations);
+    }
+
+    void addKeys()
+    {
+        const auto& animations = scene_.animations;
+        add(kTagKeyTimes, sizeof(float), keyCount_, [&animations](SectionStream& out) {
+            for (const Animation& a : animations)
+                for (const AnimationChannel& c : a.channels)
+                    out.write(c.times.data(), c.times.size() * sizeof(float));
+        });
+        add(kTagKeyValues, sizeof(glm::vec4), keyCount_, [&animations](SectionStream& out) {
+            for (const Animation& a : animations)
+                for (const AnimationChannel& c : a.channels)
+                    out.write(c.values.data(), c.values.size() * sizeof(glm::vec4));
+        });
+    }
+
+    void addTexels()
+    {
+        // The emitters outlive the planner: capture what they need, never `this`.
+        add(kTagTexels, 1, texelBytes_, [&scene = scene_, &produce = produce_, &name = name_](SectionStream& out) {
+            for (uint32_t i = 0; i < scene.textures.size(); ++i) {
+                if (!produce) {
+                    const std::vector<uint8_t>& texels = scene.textures[i].texels;
+                    out.write(texels.data(), texels.size());
+                    continue;
+                }
+                // Only one produced texture is alive at a time: it dies at the end of this
+                // iteration, right after its texels are written.
+                const Texture produced = produceTexture(scene, produce, i, name);
+                out.write(produced.texels.data(), produced.texels.size());
+            }
+        });
+    }
+
+    const Scene& scene_;
+    const TextureProducer& produce_;
+    const std::string& name_;
+    StringTable strings_;
+    std::vector<PlannedSection> sections_;
+    uint64_t texelBytes_ = 0;
+    uint64_t keyCount_ = 0;
+};
+
+} // namespace
+
+void emitPack(Sink& sink, const Scene& scene, const TextureProducer& produce, const std::string& name)
+{
+    validateScene(scene, name, produce ? TexelPolicy::MetadataOnly : TexelPolicy::Required);
+    std::vector<PlannedSection> sections = PackPlanner(scene, produce, name).plan();
+
+    // Lay out: header, table, then each payload at the next aligned offset.
+    const uint64_t tableBytes = sections.size() * sizeof(SectionEntry);
+    uint64_t cursor = sizeof(FileHeader) + tableBytes;
+    for (PlannedSection& s : sections) {
+        s.entry.offset = alignUp(cursor);
+        cursor = s.entry.offset + s.entry.size;
+    }
+    const uint64_t fileSize = cursor;
+
+    // Header and table are placeholders until the checksums are known.
+    static const uint8_t kZeros[kAlignment] = {};
+    std::vector<uint8_t> placeholder(sizeof(FileHeader) + tableBytes, 0);
+    sink.write(placeholder.data(), placeholder.size());
+    uint64_t position = placeholder.size();
+    for (PlannedSection& s : sections) {
+        sink.write(kZeros, size_t(s.entry.offset - position));
+        SectionStream out(sink);
+        s.emit(out);
+        if (out.written() != s.entry.size)
+            fail(name, "internal error: section '" + tagName(s.entry.tag) + "' wrote " + std::to_string(out.written()) +
+                           " bytes, planned " + std::to_string(s.entry.size));
+        s.entry.checksum = out.digest();
+        position = s.entry.offset + s.entry.size;
+    }
+
+    std::vector<SectionEntry> table;
+    for (const PlannedSection& s : sections)
+        table.push_back(s.entry);
+    FileHeader header{};
+    std::memcpy(header.magic, kMagic, sizeof kMagic);
+    header.formatVersion = kFormatVersion;
+    header.headerSize = sizeof(FileHeader);
+    header.sectionCount = uint32_t(table.size());
+    header.sectionEntrySize = sizeof(SectionEntry);
+    header.tableOffset = sizeof(FileHeader);
+    header.fileSize = fileSize;
+    header.tableChecksum = checksum(table.data(), size_t(tableBytes));
+    header.headerChecksum = checksum(&header, kHeaderChecksummedBytes);
+    sink.writeAt(sizeof(FileHeader), table.data(), size_t(tableBytes));
+    sink.writeAt(0, &header, sizeof header);
+}
+
+} // namespace lfd::pack
+
+namespace lfd {
+
+std::vector<uint8_t> writePackToMemory(const Scene& scene, const TextureProducer& produce)
+{
+    std::vector<uint8_t> bytes;
+    pack::MemorySink sink(bytes);
+    pack::emitPack(sink, scene, produce, "<memory>");
+    return bytes;
+}
+
+} // namespace lfd

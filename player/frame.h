@@ -1,0 +1,29 @@
+// Everything that describes one frame to render: display, framing, animation time and the
+// N view cameras. Built once per frame by makeFrameSetup and handed to every renderer.
+#pragma once
+
+#include "lfd/display_profile.h"
+#include "lfd/framing.h"
+
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace lfd::player {
+
+struct FrameSetup {
+    DisplayProfile profile;  // views/view size already overridden from the command line
+    Framing framing;
+    double time = 0.0;            // seconds, drives glTF node animations
+    double turntableAngle = 0.0;  // radians about the vertical axis through the scene centre
+    glm::dmat4 displayFromScene{1.0};
+    std::vector<ViewCamera> cameras; // profile.viewCount entries
+    // Per-view clipFromScene = cameras[i].clipFromDisplay * displayFromScene (float, for upload).
+    std::vector<glm::mat4> clipFromScene;
+    std::vector<glm::vec3> eyeScene; // camera positions in scene space (view-dependent shading)
+};
+
+// Turntable: one revolution every `turntablePeriod` seconds (0 = no rotation).
+FrameSetup makeFrameSetup(const DisplayProfile& profile, const Framing& framing, double time,
+                          double turntablePeriod);
+
+} // namespace lfd::player

@@ -1,0 +1,167 @@
+#include "gpu_scene.h"
+
+#include "gl_context.h"
+#include "scene_bindings.h"
+
+#include "lfd/scene_animation.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace lfd::player {
+
+namespace {
+
+GLuint makeBuffer(const void* data, size_t bytes, GLbitfield flags, size_t& total)
+{
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    // note: zero-sized storage is an error in GL; keep a 16-byte buffer so every SSBO
+    // binding stays valid for empty scenes.
+    glNamedBufferStorage(buffer, GLsizeiptr(std::max<size_t>(bytes, 16)), bytes ? data : nullptr,
+                         flags);
+    total += std::max<size_t>(bytes, 16);
+    return buffer;
+}
+
+bindings::MaterialGpu toGpu(const Material& m)
+{
+    bindings::MaterialGpu g{};
+    g.baseColorFactor = m.baseColorFactor;
+    g.emissiveCutoff = glm::vec4(m.emissiveFactor, m.alphaCutoff);
+    g.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
+    g.flags = (m.baseColorTexture != kNone ? bindings::kMaterialBaseColorTexture : 0u) |
+              (m.metallicRoughnessTexture != kNone ? bindings::kMaterialMetallicRoughnessTexture : 0u) |
+              (m.normalTexture != kNone ? bindings::kMaterialNormalTexture : 0u) |
+              (m.occlusionTexture != kNone ? bindings::kMaterialOcclusionTexture : 0u) |
+              (m.emissiveTexture != kNone ? bindings::kMaterialEmissiveTexture : 0u) |
+              (m.doubleSided ? bindings::kMaterialDoubleSided : 0u);
+    g.alphaMode = uint32_t(m.alphaMode);
+    return g;
+}
+
+} // namespace
+
+GpuScene::GpuScene(const Scene& scene) : scene_(scene)
+{
+    // Step 1: one vertex buffer per present stream, bound at binding index = location.
+    glCreateVertexArrays(1, &vao_);
+    auto addStream = [&](unsigned location, const void* data, size_t count, GLint components,
+                         size_t stride) {
+        if (count == 0)
+            return;
+        const GLuint vbo = makeBuffer(data, count * stride, 0, gpuBytes_);
+        vbos_.push_back(vbo);
+        glVertexArrayVertexBuffer(vao_, location, vbo, 0, GLsizei(stride));
+        glVertexArrayAttribFormat(vao_, location, components, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao_, location, location);
+        glEnableVertexArrayAttrib(vao_, location);
+    };
+    const VertexStreams& v = scene_.vertices;
+    addStream(bindings::kAttribPosition, v.positions.data(), v.positions.size(), 3, sizeof(glm::vec3));
+    addStream(bindings::kAttribNormal, v.normals.data(), v.normals.size(), 3, sizeof(glm::vec3));
+    addStream(bindings::kAttribTangent, v.tangents.data(), v.tangents.size(), 4, sizeof(glm::vec4));
+    addStream(bindings::kAttribUv, v.uvs.data(), v.uvs.size(), 2, sizeof(glm::vec2));
+    ibo_ = makeBuffer(scene_.indices.data(), scene_.indices.size() * sizeof(uint32_t), 0, gpuBytes_);
+    glVertexArrayElementBuffer(vao_, ibo_);
+
+    // Step 2: textures with the pack's full mip chain; colour textures decode sRGB in the
+    // sampler, data textures stay linear. Trilinear filtering, glTF's default REPEAT wrap.
+    textures_.resize(scene_.textures.size(), 0);
+    for (size_t t = 0; t < scene_.textures.size(); ++t) {
+        Texture& tex = scene_.textures[t];
+        if (tex.mips.empty() || tex.texels.empty())
+            throw gl::GlError("pack texture " + std::to_string(t) + " (" + tex.name +
+                              ") has no texels to upload");
+        GLuint name = 0;
+        glCreateTextures(GL_TEXTURE_2D, 1, &name);
+        const GLsizei levels = GLsizei(tex.mips.size());
+        glTextureStorage2D(name, levels, tex.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8,
+                           GLsizei(tex.mips[0].width), GLsizei(tex.mips[0].height));
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        for (GLsizei level = 0; level < levels; ++level) {
+            const MipLevel& mip = tex.mips[size_t(level)];
+            glTextureSubImage2D(name, level, 0, 0, GLsizei(mip.width), GLsizei(mip.height), GL_RGBA,
+                                GL_UNSIGNED_BYTE, tex.texels.data() + mip.offset);
+            gpuBytes_ += mip.size;
+        }
+        glTextureParameteri(name, GL_TEXTURE_MAX_LEVEL, levels - 1);
+        glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+        glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        textures_[t] = name;
+        // The texels live on the GPU now; keep the metadata only.
+        std::vector<uint8_t>().swap(tex.texels);
+    }
+
+    // Step 3: materials, plus the default material (glTF defaults) at index
+    // materials.size() for primitives with material -1.
+    std::vector<bindings::MaterialGpu> materials;
+    materials.reserve(scene_.materials.size() + 1);
+    for (const Material& m : scene_.materials)
+        materials.push_back(toGpu(m));
+    materials.push_back(toGpu(Material{}));
+    materialSsbo_ = makeBuffer(materials.data(), materials.size() * sizeof(materials[0]), 0, gpuBytes_);
+    statsSsbo_ = makeBuffer(scene_.triangleStats.data(),
+                            scene_.triangleStats.size() * sizeof(TriangleStats), 0, gpuBytes_);
+
+    // Step 4: one draw per (node, primitive) of every node that has a mesh.
+    for (uint32_t n = 0; n < scene_.nodes.size(); ++n) {
+        const Node& node = scene_.nodes[n];
+        if (node.mesh == kNone)
+            continue;
+        const Mesh& mesh = scene_.meshes[size_t(node.mesh)];
+        for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p) {
+            const Primitive& prim = scene_.primitives[p];
+            if (prim.indexCount == 0)
+                continue;
+            draws_.push_back({n, p, prim.firstIndex, prim.indexCount, prim.material});
+        }
+    }
+
+    // Step 5: per-node transforms (rewritten every frame by update()).
+    nodeSsbo_ = makeBuffer(nullptr, std::max<size_t>(scene_.nodes.size(), 1) * sizeof(bindings::NodeGpu),
+                           GL_DYNAMIC_STORAGE_BIT, gpuBytes_);
+    update(0.0);
+}
+
+GpuScene::~GpuScene()
+{
+    if (!vbos_.empty())
+        glDeleteBuffers(GLsizei(vbos_.size()), vbos_.data());
+    if (!textures_.empty())
+        glDeleteTextures(GLsizei(textures_.size()), textures_.data());
+    const GLuint buffers[] = {ibo_, materialSsbo_, statsSsbo_, nodeSsbo_};
+    glDeleteBuffers(4, buffers);
+    glDeleteVertexArrays(1, &vao_);
+}
+
+void GpuScene::update(double time)
+{
+    sceneFromNode_ = nodeWorldMatrices(scene_, float(time));
+    if (sceneFromNode_.empty())
+        return;
+    std::vector<bindings::NodeGpu> nodes(sceneFromNode_.size());
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        nodes[i].sceneFromObject = sceneFromNode_[i];
+        // Normals transform by the inverse transpose; a node scaled to zero (collapsed by
+        // an animation) has no inverse and draws nothing visible, keep its normals as is.
+        const glm::mat3 m(sceneFromNode_[i]);
+        const bool invertible = std::abs(glm::determinant(m)) > 1e-20f;
+        nodes[i].normalFromObject = glm::mat4(invertible ? glm::transpose(glm::inverse(m)) : m);
+    }
+    glNamedBufferSubData(nodeSsbo_, 0, GLsizeiptr(nodes.size() * sizeof(nodes[0])), nodes.data());
+}
+
+unsigned GpuScene::texture(int32_t index) const
+{
+    if (index < 0 || size_t(index) >= textures_.size())
+        return 0;
+    return textures_[size_t(index)];
+}
+
+} // namespace lfd::player

@@ -1,0 +1,53 @@
+// A pack uploaded to the GPU: one vertex buffer per stream, one index buffer, textures
+// (GL_TEXTURE_2D with the pack's mip chain; sRGB textures as GL_SRGB8_ALPHA8), materials
+// and per-triangle statistics as SSBOs, and per-frame node transforms. Draws are listed
+// per (node, primitive) so renderers can issue them (or multi-draw) in one place.
+#pragma once
+
+#include "lfd/scene.h"
+
+#include <glm/glm.hpp>
+#include <cstdint>
+#include <vector>
+
+namespace lfd::player {
+
+struct DrawItem {
+    uint32_t node = 0;
+    uint32_t primitive = 0;
+    uint32_t firstIndex = 0;
+    uint32_t indexCount = 0;
+    int32_t material = -1;
+};
+
+class GpuScene {
+public:
+    explicit GpuScene(const Scene& scene); // needs a current GL context
+    ~GpuScene();
+    GpuScene(const GpuScene&) = delete;
+    GpuScene& operator=(const GpuScene&) = delete;
+
+    // Evaluates glTF node animations at `time` and uploads sceneFromObject per node.
+    void update(double time);
+
+    const Scene& cpu() const { return scene_; } // metadata (textures' texels released after upload)
+    const std::vector<DrawItem>& draws() const { return draws_; }
+    const std::vector<glm::mat4>& sceneFromNode() const { return sceneFromNode_; }
+    unsigned vertexArray() const { return vao_; }
+    unsigned indexBuffer() const { return ibo_; }
+    unsigned texture(int32_t index) const; // 0 for kNone
+    unsigned materialBuffer() const { return materialSsbo_; }
+    unsigned triangleStatsBuffer() const { return statsSsbo_; }
+    unsigned nodeTransformBuffer() const { return nodeSsbo_; }
+    size_t gpuBytes() const { return gpuBytes_; }
+
+private:
+    Scene scene_;
+    std::vector<DrawItem> draws_;
+    std::vector<glm::mat4> sceneFromNode_;
+    std::vector<unsigned> vbos_, textures_;
+    unsigned vao_ = 0, ibo_ = 0, materialSsbo_ = 0, statsSsbo_ = 0, nodeSsbo_ = 0;
+    size_t gpuBytes_ = 0;
+};
+
+} // namespace lfd::player

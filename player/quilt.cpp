@@ -1,0 +1,125 @@
+// Quilt layout, assembly and file naming (Looking Glass convention).
+#include "quilt.h"
+
+#include "lfd/display_profile.h"
+#include "view_targets.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <regex>
+#include <stdexcept>
+
+namespace lfd::player {
+
+QuiltLayout chooseQuiltLayout(uint32_t viewCount, uint32_t viewWidth, uint32_t viewHeight,
+                              double targetAspect) {
+    if (viewCount == 0 || viewWidth == 0 || viewHeight == 0)
+        throw std::invalid_argument("quilt layout: view count and view size must be > 0");
+    if (!(targetAspect > 0.0) || !std::isfinite(targetAspect))
+        throw std::invalid_argument("quilt layout: target aspect must be a positive number");
+
+    QuiltLayout best;
+    double bestCost = std::numeric_limits<double>::infinity();
+    uint32_t bestEmpty = 0;
+    for (uint32_t cols = 1; cols <= viewCount; ++cols) {
+        const uint32_t rows = (viewCount + cols - 1) / cols;
+        const uint32_t empty = cols * rows - viewCount;
+        const double aspect =
+            (double(cols) * viewWidth) / (double(rows) * viewHeight);
+        const double cost = std::abs(std::log(aspect / targetAspect));
+        // note: compare with a tolerance so exact ties (equal aspects) fall to the
+        // tie-breakers instead of to rounding noise.
+        const bool better = cost < bestCost - 1e-12 ||
+                            (std::abs(cost - bestCost) <= 1e-12 && empty < bestEmpty);
+        if (better) {
+            best = QuiltLayout{cols, rows, viewWidth, viewHeight};
+            bestCost = cost;
+            bestEmpty = empty;
+        }
+    }
+    return best;
+}
+
+QuiltLayout chooseQuiltLayout(const DisplayProfile& profile) {
+    if (profile.panelHeight == 0)
+        throw std::invalid_argument("quilt layout: profile has no panel height");
+    return chooseQuiltLayout(profile.viewCount, profile.viewWidth, profile.viewHeight,
+                             double(profile.panelWidth) / double(profile.panelHeight));
+}
+
+std::vector<uint8_t> assembleQuilt(const QuiltLayout& layout,
+                                   const std::vector<std::vector<uint8_t>>& views) {
+    const size_t tileBytes = size_t(layout.tileWidth) * layout.tileHeight * 4;
+    if (views.size() > size_t(layout.cols) * layout.rows)
+        throw std::invalid_argument("quilt: " + std::to_string(views.size()) +
+                                    " views do not fit " + std::to_string(layout.cols) + "x" +
+                                    std::to_string(layout.rows) + " tiles");
+    const uint32_t W = layout.width(), H = layout.height();
+    std::vector<uint8_t> quilt(size_t(W) * H * 4, 0);
+    for (size_t i = 0; i < quilt.size(); i += 4)
+        quilt[i + 3] = 255; // empty tiles: opaque black
+
+    for (size_t v = 0; v < views.size(); ++v) {
+        if (views[v].size() != tileBytes)
+            throw std::invalid_argument("quilt: view " + std::to_string(v) + " has " +
+                                        std::to_string(views[v].size()) + " bytes, expected " +
+                                        std::to_string(tileBytes));
+        // View v sits in tile column v % cols, tile row v / cols counted from the bottom;
+        // in image order (row 0 = top) that tile row starts at (rows - 1 - v / cols) * h.
+        const uint32_t tileX = uint32_t(v % layout.cols);
+        const uint32_t tileYFromBottom = uint32_t(v / layout.cols);
+        const uint32_t x0 = tileX * layout.tileWidth;
+        const uint32_t y0 = (layout.rows - 1 - tileYFromBottom) * layout.tileHeight;
+        for (uint32_t y = 0; y < layout.tileHeight; ++y) {
+            const uint8_t* src = &views[v][size_t(y) * layout.tileWidth * 4];
+            uint8_t* dst = &quilt[(size_t(y0 + y) * W + x0) * 4];
+            std::copy(src, src + size_t(layout.tileWidth) * 4, dst);
+        }
+    }
+    return quilt;
+}
+
+std::vector<uint8_t> assembleQuilt(const QuiltLayout& layout, const ViewTargets& views) {
+    if (views.width() != layout.tileWidth || views.height() != layout.tileHeight)
+        throw std::invalid_argument("quilt: view targets are " + std::to_string(views.width()) +
+                                    "x" + std::to_string(views.height()) +
+                                    ", layout tiles are " + std::to_string(layout.tileWidth) +
+                                    "x" + std::to_string(layout.tileHeight));
+    std::vector<std::vector<uint8_t>> images;
+    images.reserve(views.viewCount());
+    for (uint32_t v = 0; v < views.viewCount(); ++v)
+        images.push_back(views.readView(v));
+    return assembleQuilt(layout, images);
+}
+
+std::string quiltSuffix(uint32_t cols, uint32_t rows, double aspect) {
+    char number[64];
+    std::snprintf(number, sizeof(number), "%.2f", aspect);
+    std::string a = number;
+    if (a.find('.') != std::string::npos) {
+        while (a.back() == '0')
+            a.pop_back();
+        if (a.back() == '.')
+            a.pop_back();
+    }
+    return "_qs" + std::to_string(cols) + "x" + std::to_string(rows) + "a" + a;
+}
+
+std::filesystem::path quiltFileName(const std::filesystem::path& requested, uint32_t cols,
+                                    uint32_t rows, double aspect) {
+    static const std::regex existingSuffix(R"(_qs\d+x\d+a\d+(\.\d+)?$)");
+    // "view_qs8x6a1.33" has no extension: ".33" belongs to the suffix.
+    const std::string filename = requested.filename().string();
+    if (std::regex_search(filename, existingSuffix))
+        return requested.parent_path() / (filename + ".png");
+    std::string extension = requested.extension().string();
+    if (extension.empty())
+        extension = ".png";
+    const std::string stem = requested.stem().string();
+    if (std::regex_search(stem, existingSuffix))
+        return requested.parent_path() / (stem + extension);
+    return requested.parent_path() / (stem + quiltSuffix(cols, rows, aspect) + extension);
+}
+
+} // namespace lfd::player

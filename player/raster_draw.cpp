@@ -1,0 +1,82 @@
+#include "raster_draw.h"
+
+#include "gpu_scene.h"
+#include "scene_bindings.h"
+#include "shader_library.h"
+
+#include <epoxy/gl.h>
+
+namespace lfd::player {
+
+RasterDraw::RasterDraw(const char* vertexShader)
+{
+    program_ = gl::buildProgram({{GL_VERTEX_SHADER, vertexShader}, {GL_FRAGMENT_SHADER, "mvr.frag"}});
+}
+
+RasterDraw::~RasterDraw() { glDeleteProgram(program_); }
+
+void RasterDraw::beginFrame(const GpuScene& scene, const FrameSetup& frame)
+{
+    uniforms_.upload(frame);
+    glUseProgram(program_);
+    glBindVertexArray(scene.vertexArray());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboMaterials, scene.materialBuffer());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboNodes, scene.nodeTransformBuffer());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboTriangleStats, scene.triangleStatsBuffer());
+    glProgramUniform1ui(program_, bindings::kLocStreams, scene.cpu().vertices.mask());
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_FRAMEBUFFER_SRGB); // the shader writes sRGB-encoded values itself
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glCullFace(GL_BACK);
+    glViewport(0, 0, GLsizei(frame.profile.viewWidth), GLsizei(frame.profile.viewHeight));
+}
+
+void RasterDraw::drawScene(const GpuScene& scene, unsigned instances) const
+{
+    const Scene& cpu = scene.cpu();
+    const uint32_t defaultMaterial = uint32_t(cpu.materials.size());
+    for (const DrawItem& draw : scene.draws()) {
+        const Material* material =
+            draw.material == kNone ? nullptr : &cpu.materials[size_t(draw.material)];
+        glProgramUniform1ui(program_, bindings::kLocNode, draw.node);
+        glProgramUniform1ui(program_, bindings::kLocMaterial,
+                            material ? uint32_t(draw.material) : defaultMaterial);
+
+        // Textures: absent ones stay unbound (0); the shader branches on the material flags.
+        const GLuint textures[5] = {
+            material ? scene.texture(material->baseColorTexture) : 0,
+            material ? scene.texture(material->metallicRoughnessTexture) : 0,
+            material ? scene.texture(material->normalTexture) : 0,
+            material ? scene.texture(material->occlusionTexture) : 0,
+            material ? scene.texture(material->emissiveTexture) : 0};
+        glBindTextures(bindings::kUnitBaseColor, 5, textures);
+
+        // Culling: glTF single-sided materials cull back faces, double-sided ones draw both
+        // (the shader flips the normal). A mirroring node transform flips the winding.
+        if (material && material->doubleSided)
+            glDisable(GL_CULL_FACE);
+        else
+            glEnable(GL_CULL_FACE);
+        const glm::mat4& m = scene.sceneFromNode()[draw.node];
+        glFrontFace(glm::determinant(glm::mat3(m)) < 0.0f ? GL_CW : GL_CCW);
+
+        glDrawElementsInstanced(GL_TRIANGLES, GLsizei(draw.indexCount), GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(size_t(draw.firstIndex) * sizeof(uint32_t)),
+                                GLsizei(instances));
+    }
+}
+
+void RasterDraw::endFrame() const
+{
+    glBindVertexArray(0);
+    glUseProgram(0);
+    glFrontFace(GL_CCW);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_DEPTH_TEST);
+}
+
+} // namespace lfd::player

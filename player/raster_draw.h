@@ -1,0 +1,33 @@
+// What mvr and mvr-layered share: the per-frame uniforms, the GL state of a raster pass,
+// and the loop over the scene's draws (per-draw node, material, textures and culling).
+// They differ only in how views are selected: a uniform per pass, or gl_InstanceID.
+#pragma once
+
+#include "frame_uniforms.h"
+#include "renderer.h"
+
+namespace lfd::player {
+
+class RasterDraw {
+public:
+    explicit RasterDraw(const char* vertexShader); // compiles vertexShader + mvr.frag
+    ~RasterDraw();
+    RasterDraw(const RasterDraw&) = delete;
+    RasterDraw& operator=(const RasterDraw&) = delete;
+
+    unsigned program() const { return program_; }
+    // Uploads the frame's views/constants and sets program, VAO, buffers, depth state.
+    void beginFrame(const GpuScene& scene, const FrameSetup& frame);
+    // Issues every DrawItem with `instances` instances (1 for mvr, N for mvr-layered).
+    void drawScene(const GpuScene& scene, unsigned instances) const;
+    void endFrame() const;
+
+private:
+    unsigned program_ = 0;
+    FrameUniforms uniforms_;
+};
+
+std::unique_ptr<Renderer> createMvrRenderer();
+std::unique_ptr<Renderer> createMvrLayeredRenderer();
+
+} // namespace lfd::player

@@ -1,0 +1,96 @@
+#include "view_targets.h"
+
+#include "gl_context.h"
+
+#include <epoxy/gl.h>
+
+#include <cstring>
+#include <string>
+
+namespace lfd::player {
+
+ViewTargets::ViewTargets(uint32_t viewCount, uint32_t width, uint32_t height)
+    : viewCount_(viewCount), width_(width), height_(height)
+{
+    GLint maxLayers = 0, maxSize = 0;
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (viewCount == 0 || width == 0 || height == 0 || viewCount > uint32_t(maxLayers) ||
+        width > uint32_t(maxSize) || height > uint32_t(maxSize))
+        throw gl::GlError("view targets: " + std::to_string(viewCount) + " views of " +
+                          std::to_string(width) + "x" + std::to_string(height) +
+                          " exceed the driver's limits (" + std::to_string(maxLayers) +
+                          " layers, " + std::to_string(maxSize) + " pixels)");
+
+    // Colour: RGBA8 holding sRGB-encoded values written by the shaders (not GL_SRGB8, so
+    // no conversion happens on write or read and readback bytes are display values).
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &color_);
+    glTextureStorage3D(color_, 1, GL_RGBA8, GLsizei(width), GLsizei(height), GLsizei(viewCount));
+    glTextureParameteri(color_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(color_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTextureParameteri(color_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(color_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &depth_);
+    glTextureStorage3D(depth_, 1, GL_DEPTH_COMPONENT32F, GLsizei(width), GLsizei(height),
+                       GLsizei(viewCount));
+
+    // One layered framebuffer (all layers; gl_Layer selects) and one per view.
+    auto check = [](GLuint fbo, const char* what) {
+        const GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE)
+            throw gl::GlError(std::string("view targets: ") + what + " framebuffer incomplete (0x" +
+                              std::to_string(status) + ")");
+    };
+    glCreateFramebuffers(1, &layeredFbo_);
+    glNamedFramebufferTexture(layeredFbo_, GL_COLOR_ATTACHMENT0, color_, 0);
+    glNamedFramebufferTexture(layeredFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
+    check(layeredFbo_, "layered");
+    layerFbos_.resize(viewCount);
+    glCreateFramebuffers(GLsizei(viewCount), layerFbos_.data());
+    for (uint32_t i = 0; i < viewCount; ++i) {
+        glNamedFramebufferTextureLayer(layerFbos_[i], GL_COLOR_ATTACHMENT0, color_, 0, GLint(i));
+        glNamedFramebufferTextureLayer(layerFbos_[i], GL_DEPTH_ATTACHMENT, depth_, 0, GLint(i));
+        check(layerFbos_[i], "per-view");
+    }
+}
+
+ViewTargets::~ViewTargets()
+{
+    if (!layerFbos_.empty())
+        glDeleteFramebuffers(GLsizei(layerFbos_.size()), layerFbos_.data());
+    glDeleteFramebuffers(1, &layeredFbo_);
+    glDeleteTextures(1, &color_);
+    glDeleteTextures(1, &depth_);
+}
+
+size_t ViewTargets::bytes() const
+{
+    return size_t(viewCount_) * width_ * height_ * (4 + 4); // RGBA8 + DEPTH32F
+}
+
+void ViewTargets::clear(const float rgba[4])
+{
+    // glClearTexImage clears every layer at once, independent of framebuffer state.
+    const float one = 1.0f;
+    glClearTexImage(color_, 0, GL_RGBA, GL_FLOAT, rgba);
+    glClearTexImage(depth_, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+}
+
+std::vector<uint8_t> ViewTargets::readView(uint32_t view) const
+{
+    if (view >= viewCount_)
+        throw gl::GlError("view targets: view " + std::to_string(view) + " out of range (" +
+                          std::to_string(viewCount_) + " views)");
+    const size_t row = size_t(width_) * 4;
+    std::vector<uint8_t> glOrder(row * height_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glGetTextureSubImage(color_, 0, 0, 0, GLint(view), GLsizei(width_), GLsizei(height_), 1,
+                         GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(glOrder.size()), glOrder.data());
+    // GL rows run bottom to top; images run top to bottom.
+    std::vector<uint8_t> image(glOrder.size());
+    for (uint32_t y = 0; y < height_; ++y)
+        std::memcpy(&image[size_t(y) * row], &glOrder[size_t(height_ - 1 - y) * row], row);
+    return image;
+}
+
+} // namespace lfd::player

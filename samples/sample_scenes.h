@@ -1,0 +1,31 @@
+// The project's own glTF 2.0 sample scenes (see samples/README.md). Each builder writes
+// <dir>/<name>.gltf, <name>.bin and its PNG textures into an existing directory and
+// returns what it wrote. Units are metres, +y up.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+
+namespace lfd::samples {
+
+struct SceneSummary {
+    std::string name;
+    size_t storedTriangles = 0; // in the buffer, each mesh once
+    size_t drawnTriangles = 0;  // summed over node instances
+    int textures = 0;
+};
+
+// A gallery interior (8 x 4 x 6 m, open towards +z): tiled floor with base colour,
+// normal and metallicRoughness maps, plaster walls, four framed views of one large
+// procedural painting (`textureSize`^2; the other textures are at most 1024^2).
+SceneSummary writeGalleryScene(const std::filesystem::path& dir, int textureSize);
+
+// A stylised untextured car with occluded interior parts and four instanced wheels
+// spinning over a 2 s LINEAR rotation animation.
+SceneSummary writeCarScene(const std::filesystem::path& dir);
+
+// `instances` cars on a grid on a large floor, all instancing the car's meshes.
+SceneSummary writeRoomScene(const std::filesystem::path& dir, int instances);
+
+} // namespace lfd::samples

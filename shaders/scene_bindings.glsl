@@ -1,0 +1,109 @@
+// Binding points, attribute locations and GPU struct layouts shared by every renderer.
+// This file is the single definition: player/scene_bindings.h mirrors it for C++, and
+// tests/player/shader_library_test.cpp checks every value against the C++ side.
+
+// Vertex attribute locations; each stream has its own vertex buffer, bound at the
+// vertex-buffer binding index equal to its location.
+#define LFD_ATTRIB_POSITION 0
+#define LFD_ATTRIB_NORMAL 1
+#define LFD_ATTRIB_TANGENT 2
+#define LFD_ATTRIB_UV 3
+
+// Shader storage buffer binding points.
+#define LFD_SSBO_MATERIALS 0
+#define LFD_SSBO_NODES 1
+#define LFD_SSBO_VIEWS 2
+#define LFD_SSBO_TRIANGLE_STATS 3
+
+// Uniform buffer binding points.
+#define LFD_UBO_FRAME 0
+
+// Texture units of the material textures.
+#define LFD_UNIT_BASE_COLOR 0
+#define LFD_UNIT_METALLIC_ROUGHNESS 1
+#define LFD_UNIT_NORMAL 2
+#define LFD_UNIT_OCCLUSION 3
+#define LFD_UNIT_EMISSIVE 4
+
+// Explicit uniform locations of the per-draw uniforms.
+#define LFD_LOC_NODE 0
+#define LFD_LOC_MATERIAL 1
+#define LFD_LOC_VIEW 2
+#define LFD_LOC_STREAMS 3
+
+// MaterialGpu.flags: which textures the material has, and double-sidedness.
+#define LFD_MATERIAL_BASE_COLOR_TEXTURE 1
+#define LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE 2
+#define LFD_MATERIAL_NORMAL_TEXTURE 4
+#define LFD_MATERIAL_OCCLUSION_TEXTURE 8
+#define LFD_MATERIAL_EMISSIVE_TEXTURE 16
+#define LFD_MATERIAL_DOUBLE_SIDED 32
+
+// MaterialGpu.alphaMode (= lfd::AlphaMode).
+#define LFD_ALPHA_OPAQUE 0
+#define LFD_ALPHA_MASK 1
+#define LFD_ALPHA_BLEND 2
+
+// Vertex stream bits of the u_streams uniform (= lfd::VertexStreamBits).
+#define LFD_STREAM_POSITION 1
+#define LFD_STREAM_NORMAL 2
+#define LFD_STREAM_TANGENT 4
+#define LFD_STREAM_UV 8
+
+// glTF metallic-roughness material (std430, 64 bytes).
+struct MaterialGpu {
+    vec4 baseColorFactor;
+    vec4 emissiveCutoff; // xyz emissiveFactor, w alphaCutoff
+    vec4 params;         // metallicFactor, roughnessFactor, normalScale, occlusionStrength
+    uint flags;          // LFD_MATERIAL_*
+    uint alphaMode;      // LFD_ALPHA_*
+    uint pad0;
+    uint pad1;
+};
+
+// Per-node transforms for the current frame (std430, 128 bytes).
+struct NodeGpu {
+    mat4 sceneFromObject;
+    mat4 normalFromObject; // inverse transpose of the upper 3x3, padded to mat4
+};
+
+// One LFD view camera (std430, 80 bytes).
+struct ViewGpu {
+    mat4 clipFromScene;
+    vec4 eyeScene; // xyz camera position in scene space, for view-dependent shading
+};
+
+// Per-triangle statistics from the baker (std430, 24 bytes; = lfd::TriangleStats).
+struct TriangleStatsGpu {
+    float areaWorld;
+    float areaTexture;
+    float texelCount;
+    float sizeUv;
+    float texPerWorld;
+    uint flags;
+};
+
+layout(std430, binding = LFD_SSBO_MATERIALS) readonly buffer MaterialBuffer {
+    MaterialGpu materials[];
+};
+layout(std430, binding = LFD_SSBO_NODES) readonly buffer NodeBuffer {
+    NodeGpu nodes[];
+};
+layout(std430, binding = LFD_SSBO_VIEWS) readonly buffer ViewBuffer {
+    ViewGpu views[];
+};
+layout(std430, binding = LFD_SSBO_TRIANGLE_STATS) readonly buffer TriangleStatsBuffer {
+    TriangleStatsGpu triangleStats[];
+};
+
+// Frame constants (std140, 80 bytes).
+layout(std140, binding = LFD_UBO_FRAME) uniform FrameBlock {
+    vec4 lightDirScene; // xyz unit vector towards the light, in scene space
+    vec4 lightColor;    // rgb irradiance scale of the directional light
+    vec4 ambientColor;  // rgb ambient light
+    vec4 background;    // rgba clear colour (sRGB-encoded, as stored in the views)
+    uint viewCount;
+    uint viewWidth;
+    uint viewHeight;
+    uint framePad;
+} u_frame;

@@ -1,0 +1,241 @@
+// End-to-end tests of the lfd-bake command line: bake the project's samples (and the
+// third-party scenes when ../shared/scenes exists), verify with --inspect, check the
+// tessellation bound on the written pack, and check bad inputs fail cleanly.
+#include "lfd/pack.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
+const std::string kMakeSamples = std::string(LFD_BINARY_DIR) + "/samples/lfd-make-samples";
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out; // stdout + stderr
+};
+
+RunResult run(const std::string& command)
+{
+    RunResult r;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe)
+        return r;
+    std::array<char, 4096> buffer{};
+    size_t n;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+        r.out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
+
+size_t lineCount(const std::string& s)
+{
+    size_t lines = 0;
+    for (char c : s)
+        lines += c == '\n';
+    return lines + (!s.empty() && s.back() != '\n');
+}
+
+class BakeCli : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        dir_ = fs::temp_directory_path() / ("lfd_bake_cli_" + std::to_string(::getpid()));
+        fs::create_directories(dir_);
+        const RunResult r = run(kMakeSamples + " " + quoted(dir_ / "samples") + " --scene all --texture-size 256 --quiet");
+        ASSERT_EQ(r.exitCode, 0) << r.out;
+    }
+    static void TearDownTestSuite() { fs::remove_all(dir_); }
+    static fs::path dir_;
+};
+fs::path BakeCli::dir_;
+
+// Longest edge of any drawn triangle in view pixels, using the bake's own pixel size
+// and the node scale (rest pose; the samples' animations are rotations only).
+double maxEdgeInViewPixels(const lfd::Scene& scene)
+{
+    double longest = 0.0;
+    for (const lfd::Node& node : scene.nodes) {
+        if (node.mesh < 0)
+            continue;
+        // World scale of the node chain (the samples use uniform or unit scales).
+        double scale = 1.0;
+        for (int32_t n = int32_t(&node - scene.nodes.data()); n >= 0; n = scene.nodes[size_t(n)].parent)
+            scale *= double(glm::max(scene.nodes[size_t(n)].scale.x,
+                                     glm::max(scene.nodes[size_t(n)].scale.y, scene.nodes[size_t(n)].scale.z)));
+        const lfd::Mesh& mesh = scene.meshes[size_t(node.mesh)];
+        for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p) {
+            const lfd::Primitive& prim = scene.primitives[p];
+            for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; i += 3)
+                for (int e = 0; e < 3; ++e) {
+                    const glm::vec3 a = scene.vertices.positions[scene.indices[i + e]];
+                    const glm::vec3 b = scene.vertices.positions[scene.indices[i + (e + 1) % 3]];
+                    longest = std::max(longest, double(glm::length(a - b)) * scale);
+                }
+        }
+    }
+    return longest / double(scene.settings.viewPixelWorld);
+}
+
+TEST_F(BakeCli, BakesCarSampleWithinEdgeBoundAndStoresNoUvs)
+{
+    const fs::path pack = dir_ / "car.lfdpack";
+    const RunResult r = run(kBake + " " + quoted(dir_ / "samples/car/car.gltf") + " -o " + quoted(pack));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find("bake report"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("triangles:"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("peak memory"), std::string::npos) << r.out;
+
+    const lfd::Scene scene = lfd::readPack(pack);
+    EXPECT_TRUE(scene.vertices.uvs.empty()) << "untextured scene must not store uvs";
+    EXPECT_TRUE(scene.vertices.tangents.empty());
+    EXPECT_TRUE(scene.textures.empty());
+    EXPECT_FALSE(scene.animations.empty()) << "wheel animation must survive the bake";
+    EXPECT_GT(scene.settings.viewPixelWorld, 0.0f);
+    EXPECT_LE(maxEdgeInViewPixels(scene), 100.0 * 1.0001);
+    for (const lfd::TriangleStats& s : scene.triangleStats)
+        EXPECT_FALSE(s.flags & lfd::kTriangleTextured);
+
+    const RunResult inspect = run(kBake + " --inspect " + quoted(pack));
+    EXPECT_EQ(inspect.exitCode, 0) << inspect.out;
+    EXPECT_NE(inspect.out.find("verified"), std::string::npos) << inspect.out;
+}
+
+TEST_F(BakeCli, BakesGallerySampleWithTexturesAndTighterBound)
+{
+    const fs::path pack = dir_ / "gallery.lfdpack";
+    const RunResult r = run(kBake + " " + quoted(dir_ / "samples/gallery/gallery.gltf") + " -o " + quoted(pack) +
+                            " --max-edge-px 50 --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(r.out.find("import:"), std::string::npos) << "--quiet must hide progress: " << r.out;
+
+    const lfd::Scene scene = lfd::readPack(pack);
+    EXPECT_FALSE(scene.vertices.uvs.empty());
+    EXPECT_FALSE(scene.vertices.tangents.empty()) << "gallery has a normal map";
+    ASSERT_FALSE(scene.textures.empty());
+    for (const lfd::Texture& t : scene.textures) {
+        EXPECT_GT(t.width, 0u);
+        EXPECT_EQ(t.mips.back().width, 1u);
+        EXPECT_EQ(t.mips.back().height, 1u);
+    }
+    EXPECT_LE(maxEdgeInViewPixels(scene), 50.0 * 1.0001);
+    size_t textured = 0;
+    for (const lfd::TriangleStats& s : scene.triangleStats) {
+        if (s.flags & lfd::kTriangleTextured) {
+            ++textured;
+            EXPECT_GT(s.texelCount, 0.0f);
+            EXPECT_GT(s.sizeUv, 0.0f);
+        }
+    }
+    EXPECT_GT(textured, 0u);
+}
+
+TEST_F(BakeCli, MissingInputFailsWithOneLineNamingTheFile)
+{
+    const fs::path pack = dir_ / "missing.lfdpack";
+    const RunResult r = run(kBake + " " + quoted(dir_ / "does_not_exist.gltf") + " -o " + quoted(pack));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(lineCount(r.out), 1u) << r.out;
+    EXPECT_NE(r.out.find("does_not_exist.gltf"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(pack));
+}
+
+TEST_F(BakeCli, MalformedGltfFailsAndLeavesExistingOutputIntact)
+{
+    const fs::path bad = dir_ / "malformed.gltf";
+    std::ofstream(bad) << "{ \"asset\": { \"version\": \"2.0\" }, \"meshes\": [ { ";
+    const fs::path pack = dir_ / "existing.lfdpack";
+    std::ofstream(pack) << "previous contents";
+    const RunResult r = run(kBake + " " + quoted(bad) + " -o " + quoted(pack) + " --quiet");
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("malformed.gltf"), std::string::npos) << r.out;
+    std::ifstream in(pack);
+    std::string contents((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_EQ(contents, "previous contents");
+}
+
+TEST_F(BakeCli, MissingTextureFailsWithoutPartialPack)
+{
+    // Copy the gallery next to a new name and delete one of its images.
+    const fs::path copy = dir_ / "gallery_broken";
+    fs::copy(dir_ / "samples/gallery", copy, fs::copy_options::recursive);
+    fs::path removed;
+    for (const auto& entry : fs::directory_iterator(copy))
+        if (entry.path().extension() == ".png") {
+            removed = entry.path();
+            break;
+        }
+    ASSERT_FALSE(removed.empty());
+    fs::remove(removed);
+    const fs::path pack = dir_ / "broken.lfdpack";
+    const RunResult r = run(kBake + " " + quoted(copy / "gallery.gltf") + " -o " + quoted(pack) + " --quiet");
+    EXPECT_NE(r.exitCode, 0) << r.out;
+    EXPECT_NE(r.out.find(removed.filename().string()), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(pack));
+    for (const auto& entry : fs::directory_iterator(dir_))
+        EXPECT_EQ(entry.path().string().find(".tmp"), std::string::npos) << "temp file left: " << entry.path();
+}
+
+TEST_F(BakeCli, InspectRejectsCorruptPack)
+{
+    const fs::path pack = dir_ / "corrupt.lfdpack";
+    ASSERT_EQ(run(kBake + " " + quoted(dir_ / "samples/car/car.gltf") + " -o " + quoted(pack) + " --quiet").exitCode, 0);
+    {
+        std::fstream f(pack, std::ios::in | std::ios::out | std::ios::binary);
+        f.seekp(std::streamoff(fs::file_size(pack) / 2));
+        const char garbage = char(0xA5);
+        f.write(&garbage, 1);
+    }
+    const RunResult r = run(kBake + " --inspect " + quoted(pack));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(lineCount(r.out), 1u) << r.out;
+    EXPECT_NE(r.out.find("corrupt.lfdpack"), std::string::npos) << r.out;
+
+    fs::resize_file(pack, 100);
+    const RunResult t = run(kBake + " --inspect " + quoted(pack));
+    EXPECT_NE(t.exitCode, 0);
+    EXPECT_EQ(lineCount(t.out), 1u) << t.out;
+}
+
+TEST_F(BakeCli, BadArgumentsAreRejected)
+{
+    EXPECT_NE(run(kBake).exitCode, 0);
+    EXPECT_NE(run(kBake + " " + quoted(dir_ / "samples/car/car.gltf") + " -o x.lfdpack --max-edge-px 0").exitCode, 0);
+    const RunResult r = run(kBake + " " + quoted(dir_ / "samples/car/car.gltf") + " -o " + quoted(dir_ / "p.lfdpack") +
+                            " --display " + quoted(dir_ / "no_profile.json"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("no_profile.json"), std::string::npos) << r.out;
+}
+
+TEST_F(BakeCli, BakesThirdPartyScenes)
+{
+    const fs::path scenes = LFD_SHARED_SCENES;
+    if (!fs::exists(scenes))
+        GTEST_SKIP() << "no third-party scenes at " << scenes;
+    for (const char* name : {"CesiumMilkTruck", "DamagedHelmet"}) {
+        const fs::path input = scenes / name / (std::string(name) + ".gltf");
+        if (!fs::exists(input))
+            continue;
+        const fs::path pack = dir_ / (std::string(name) + ".lfdpack");
+        const RunResult r = run(kBake + " " + quoted(input) + " -o " + quoted(pack) + " --quiet");
+        ASSERT_EQ(r.exitCode, 0) << name << ": " << r.out;
+        const lfd::Scene scene = lfd::readPack(pack);
+        EXPECT_FALSE(scene.textures.empty()) << name;
+        EXPECT_EQ(scene.triangleStats.size(), scene.triangleCount()) << name;
+        EXPECT_EQ(run(kBake + " --inspect " + quoted(pack)).exitCode, 0) << name;
+    }
+}
+
+} // namespace

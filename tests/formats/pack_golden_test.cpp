@@ -1,0 +1,150 @@
+// Format stability: tests/data/golden_v1.lfdpack was written from goldenScene() below.
+// The reader must keep reading it, and today's writer must reproduce it byte for byte.
+// An intentional format change is a new format version (golden_v2), not a regenerated v1.
+//
+// Regenerate (only when goldenScene() itself changes):
+//   LFD_REGENERATE_GOLDEN=1 ./lfd_formats_tests --gtest_filter='PackGolden.*'
+#include "pack_test_scenes.h"
+
+#include <xxhash.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace lfd::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kGoldenPath = fs::path(LFD_TEST_DATA) / "golden_v1.lfdpack";
+
+// Fixed forever: every section of version 1, tiny textures so the file stays small.
+Scene goldenScene()
+{
+    Scene s;
+    s.vertices.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.5f}};
+    s.vertices.normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}, {0, 0.6f, 0.8f}};
+    s.vertices.tangents = {{1, 0, 0, 1}, {1, 0, 0, 1}, {1, 0, 0, -1}, {1, 0, 0, 1}};
+    s.vertices.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    s.indices = {0, 1, 2, 0, 2, 3};
+    s.triangleStats = {{0.5f, 0.5f, 7.5f, 0.5f / 7.5f, 1.0f, kTriangleTextured},
+                       {0.5590f, 0.5f, 7.5f, 0.5590f / 7.5f, 0.5f / 0.5590f, kTriangleTextured}};
+    s.primitives = {{0, 3, 0}, {3, 3, kNone}};
+    s.meshes = {{"quad", 0, 2}};
+    Material m;
+    m.name = "golden µ";
+    m.baseColorFactor = {1.0f, 0.5f, 0.25f, 1.0f};
+    m.emissiveFactor = {0.0f, 0.0f, 0.125f};
+    m.metallicFactor = 0.0f;
+    m.roughnessFactor = 0.5f;
+    m.alphaMode = AlphaMode::Mask;
+    m.alphaCutoff = 0.25f;
+    m.doubleSided = true;
+    m.baseColorTexture = 0;
+    m.metallicRoughnessTexture = 1;
+    m.normalTexture = 1;
+    m.occlusionTexture = 1;
+    m.emissiveTexture = 0;
+    s.materials = {m};
+    s.textures = {makeTexture("base", 5, 3, true, 3), makeTexture("data", 2, 2, false, 4)};
+    Node root;
+    root.name = "root";
+    root.translation = {0.0f, 1.0f, 0.0f};
+    Node child;
+    child.name = "child";
+    child.parent = 0;
+    child.mesh = 0;
+    child.rotation = glm::quat(0.0f, 0.0f, 1.0f, 0.0f);
+    child.scale = {0.5f, 0.5f, 0.5f};
+    s.nodes = {root, child};
+    s.animations = {{"turn",
+                     {{1, AnimationPath::Rotation, Interpolation::Linear, {0.0f, 1.0f},
+                       {{0, 0, 0, 1}, {0, 1, 0, 0}}},
+                      {0, AnimationPath::Translation, Interpolation::Step, {0.5f}, {{0, 2, 0, 0}}}}}};
+    s.bounds = {{0, 0.5f, -0.25f}, {1, 2, 0.25f}, {0.5f, 1.25f, 0}, 0.9f};
+    s.settings.bakerVersion = "golden";
+    s.settings.sourceFile = "golden.gltf";
+    s.settings.displayProfile = "test-display";
+    s.settings.viewWidth = 64;
+    s.settings.viewHeight = 48;
+    s.settings.viewCount = 8;
+    s.settings.maxEdgePx = 100.0f;
+    s.settings.framingFill = 0.75f;
+    s.settings.viewPixelWorld = 0.03125f;
+    s.settings.maxTextureSize = 8;
+    return s;
+}
+
+std::vector<uint8_t> goldenBytes()
+{
+    std::ifstream in(kGoldenPath, std::ios::binary);
+    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
+}
+
+template <typename T>
+T at(const std::vector<uint8_t>& bytes, size_t offset)
+{
+    T v;
+    std::memcpy(&v, bytes.data() + offset, sizeof v);
+    return v;
+}
+
+class PackGolden : public ::testing::Test {
+protected:
+    static void SetUpTestSuite()
+    {
+        const char* regenerate = std::getenv("LFD_REGENERATE_GOLDEN");
+        if (regenerate && std::string(regenerate) == "1")
+            writePack(kGoldenPath, goldenScene());
+    }
+};
+
+TEST_F(PackGolden, CommittedFileIsSmallAndReadable)
+{
+    ASSERT_TRUE(fs::exists(kGoldenPath)) << kGoldenPath << " is missing (LFD_REGENERATE_GOLDEN=1 writes it)";
+    EXPECT_LT(fs::file_size(kGoldenPath), 16u * 1024u);
+    expectSameScene(goldenScene(), readPack(kGoldenPath));
+}
+
+TEST_F(PackGolden, WriterReproducesTheCommittedBytes)
+{
+    const std::vector<uint8_t> committed = goldenBytes();
+    const std::vector<uint8_t> today = writePackToMemory(goldenScene());
+    ASSERT_EQ(today.size(), committed.size());
+    for (size_t i = 0; i < today.size(); ++i)
+        ASSERT_EQ(today[i], committed[i]) << "first difference at byte " << i;
+}
+
+// The header fields at the offsets formats/README.md documents, read without pack_layout.h
+// structs, with the checksum computed by xxhash directly.
+TEST_F(PackGolden, HeaderMatchesTheDocumentedLayout)
+{
+    const std::vector<uint8_t> bytes = goldenBytes();
+    ASSERT_GE(bytes.size(), 64u);
+    EXPECT_EQ(std::string(reinterpret_cast<const char*>(bytes.data()), 8), std::string("LFDPACK\x1a", 8));
+    EXPECT_EQ(at<uint32_t>(bytes, 8), 1u);   // format version
+    EXPECT_EQ(at<uint32_t>(bytes, 12), 64u); // header size
+    const uint32_t sectionCount = at<uint32_t>(bytes, 16);
+    EXPECT_EQ(sectionCount, 20u);             // every v1 section, optional streams included
+    EXPECT_EQ(at<uint32_t>(bytes, 20), 48u);  // section entry size
+    EXPECT_EQ(at<uint64_t>(bytes, 24), 64u);  // table offset
+    EXPECT_EQ(at<uint64_t>(bytes, 32), bytes.size());
+    EXPECT_EQ(at<uint64_t>(bytes, 40), XXH3_64bits(bytes.data() + 64, sectionCount * 48));
+    EXPECT_EQ(at<uint64_t>(bytes, 48), 0u);
+    EXPECT_EQ(at<uint64_t>(bytes, 56), XXH3_64bits(bytes.data(), 56));
+    for (uint32_t i = 0; i < sectionCount; ++i) {
+        const size_t entry = 64 + i * 48;
+        const uint64_t offset = at<uint64_t>(bytes, entry + 8);
+        const uint64_t size = at<uint64_t>(bytes, entry + 16);
+        const uint64_t count = at<uint64_t>(bytes, entry + 24);
+        const uint32_t stride = at<uint32_t>(bytes, entry + 40);
+        EXPECT_EQ(at<uint32_t>(bytes, entry + 4), 1u);
+        EXPECT_EQ(offset % 64, 0u);
+        EXPECT_EQ(size, count * stride);
+        EXPECT_EQ(at<uint64_t>(bytes, entry + 32), XXH3_64bits(bytes.data() + offset, size));
+    }
+}
+
+} // namespace
+} // namespace lfd::test

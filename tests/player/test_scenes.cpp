@@ -1,0 +1,240 @@
+#include "test_scenes.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace lfd::test {
+
+namespace {
+
+// Appends a mesh of one primitive and a node instancing it.
+void addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material, const glm::vec3& t,
+             const glm::quat& r, const glm::vec3& s)
+{
+    Primitive prim;
+    prim.firstIndex = uint32_t(scene.indices.size());
+    prim.indexCount = uint32_t(indices.size());
+    prim.material = material;
+    scene.indices.insert(scene.indices.end(), indices.begin(), indices.end());
+    Mesh mesh;
+    mesh.name = "mesh" + std::to_string(scene.meshes.size());
+    mesh.firstPrimitive = uint32_t(scene.primitives.size());
+    mesh.primitiveCount = 1;
+    scene.primitives.push_back(prim);
+    Node node;
+    node.name = "node" + std::to_string(scene.nodes.size());
+    node.mesh = int32_t(scene.meshes.size());
+    node.translation = t;
+    node.rotation = r;
+    node.scale = s;
+    scene.meshes.push_back(mesh);
+    scene.nodes.push_back(node);
+}
+
+// Cube of half size 0.5 with per-face normals, uvs (0..2 per face) and tangents.
+std::vector<uint32_t> addCube(Scene& scene)
+{
+    VertexStreams& v = scene.vertices;
+    std::vector<uint32_t> indices;
+    const glm::vec3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const glm::vec3& n : normals) {
+        // Face basis: u along the tangent, w = n x u along the bitangent (right-handed).
+        const glm::vec3 up = std::abs(n.y) > 0.5f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+        const glm::vec3 u = glm::normalize(glm::cross(up, n));
+        const glm::vec3 w = glm::cross(n, u);
+        const uint32_t base = uint32_t(v.positions.size());
+        const glm::vec2 corners[4] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+        for (const glm::vec2& c : corners) {
+            v.positions.push_back(0.5f * (n + c.x * u + c.y * w));
+            v.normals.push_back(n);
+            v.tangents.push_back(glm::vec4(u, 1.0f));
+            v.uvs.push_back(glm::vec2(c.x + 1.0f, 1.0f - c.y)); // 0..2: the checker repeats
+        }
+        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u})
+            indices.push_back(base + i);
+    }
+    return indices;
+}
+
+std::vector<uint32_t> addSphere(Scene& scene, float radius, uint32_t slices, uint32_t stacks)
+{
+    VertexStreams& v = scene.vertices;
+    const uint32_t base = uint32_t(v.positions.size());
+    const float pi = std::numbers::pi_v<float>;
+    for (uint32_t j = 0; j <= stacks; ++j) {
+        const float theta = pi * float(j) / float(stacks);
+        for (uint32_t i = 0; i <= slices; ++i) {
+            const float phi = 2.0f * pi * float(i) / float(slices);
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+            v.positions.push_back(radius * n);
+            v.normals.push_back(n);
+            v.tangents.push_back(glm::vec4(-std::sin(phi), 0.0f, -std::cos(phi), 1.0f));
+            v.uvs.push_back(glm::vec2(float(i) / float(slices), float(j) / float(stacks)));
+        }
+    }
+    std::vector<uint32_t> indices;
+    for (uint32_t j = 0; j < stacks; ++j)
+        for (uint32_t i = 0; i < slices; ++i) {
+            const uint32_t a = base + j * (slices + 1) + i, b = a + slices + 1;
+            for (uint32_t k : {a, b, a + 1, a + 1, b, b + 1})
+                indices.push_back(k);
+        }
+    return indices;
+}
+
+// Bounds: AABB and bounding sphere over all node-transformed positions (no animation).
+void computeBounds(Scene& scene)
+{
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    std::vector<glm::vec3> points;
+    for (const Node& node : scene.nodes) {
+        const Mesh& mesh = scene.meshes[size_t(node.mesh)];
+        for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p) {
+            const Primitive& prim = scene.primitives[p];
+            for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; ++i) {
+                const glm::vec3 q = node.translation +
+                                    node.rotation * (node.scale * scene.vertices.positions[scene.indices[i]]);
+                lo = glm::min(lo, q);
+                hi = glm::max(hi, q);
+                points.push_back(q);
+            }
+        }
+    }
+    scene.bounds.min = lo;
+    scene.bounds.max = hi;
+    scene.bounds.center = 0.5f * (lo + hi);
+    float r = 0.0f;
+    for (const glm::vec3& q : points)
+        r = std::max(r, glm::length(q - scene.bounds.center));
+    scene.bounds.radius = r;
+}
+
+void fillTriangleStats(Scene& scene)
+{
+    scene.triangleStats.assign(scene.indices.size() / 3, TriangleStats{});
+    for (size_t t = 0; t < scene.triangleStats.size(); ++t) {
+        const glm::vec3& a = scene.vertices.positions[scene.indices[3 * t]];
+        const glm::vec3& b = scene.vertices.positions[scene.indices[3 * t + 1]];
+        const glm::vec3& c = scene.vertices.positions[scene.indices[3 * t + 2]];
+        scene.triangleStats[t].areaWorld = 0.5f * glm::length(glm::cross(b - a, c - a));
+    }
+}
+
+} // namespace
+
+Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec4 b, bool srgb)
+{
+    Texture tex;
+    tex.name = "checker";
+    tex.width = tex.height = tex.sourceWidth = tex.sourceHeight = size;
+    tex.srgb = srgb;
+    // Level 0, then 2x2 box filtered levels down to 1x1 (plain byte averages are enough
+    // for a test texture).
+    std::vector<uint8_t> level(size_t(size) * size * 4);
+    for (uint32_t y = 0; y < size; ++y)
+        for (uint32_t x = 0; x < size; ++x) {
+            const glm::u8vec4 c = ((x / square + y / square) % 2) ? b : a;
+            std::copy(&c[0], &c[0] + 4, &level[(size_t(y) * size + x) * 4]);
+        }
+    uint32_t w = size;
+    while (true) {
+        MipLevel mip{w, w, tex.texels.size(), level.size()};
+        tex.mips.push_back(mip);
+        tex.texels.insert(tex.texels.end(), level.begin(), level.end());
+        if (w == 1)
+            break;
+        const uint32_t h = w / 2;
+        std::vector<uint8_t> next(size_t(h) * h * 4);
+        for (uint32_t y = 0; y < h; ++y)
+            for (uint32_t x = 0; x < h; ++x)
+                for (uint32_t ch = 0; ch < 4; ++ch) {
+                    uint32_t sum = 0;
+                    for (uint32_t dy = 0; dy < 2; ++dy)
+                        for (uint32_t dx = 0; dx < 2; ++dx)
+                            sum += level[((size_t(2 * y + dy) * w) + 2 * x + dx) * 4 + ch];
+                    next[(size_t(y) * h + x) * 4 + ch] = uint8_t((sum + 2) / 4);
+                }
+        level.swap(next);
+        w = h;
+    }
+    return tex;
+}
+
+Scene cubeAndSphereScene()
+{
+    Scene scene;
+    scene.textures.push_back(checkerTexture(128, 8, {230, 200, 60, 255}, {40, 60, 160, 255}, true));
+
+    Material cube;
+    cube.name = "checker";
+    cube.baseColorTexture = 0;
+    cube.metallicFactor = 0.0f;
+    cube.roughnessFactor = 0.5f;
+    Material red;
+    red.name = "red";
+    red.baseColorFactor = {0.8f, 0.1f, 0.08f, 1.0f};
+    red.metallicFactor = 0.1f;
+    red.roughnessFactor = 0.35f;
+    scene.materials = {cube, red};
+
+    const std::vector<uint32_t> cubeIndices = addCube(scene);
+    const std::vector<uint32_t> sphereIndices = addSphere(scene, 0.5f, 24, 16);
+    addMesh(scene, cubeIndices, 0, {-0.6f, 0.0f, 0.0f},
+            glm::angleAxis(0.5f, glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f))), glm::vec3(1.0f));
+    addMesh(scene, sphereIndices, 1, {0.7f, 0.05f, -0.1f}, glm::quat(1, 0, 0, 0), glm::vec3(0.9f));
+    // A small default-material box in front: material -1 must render with glTF defaults.
+    addMesh(scene, cubeIndices, kNone, {0.1f, -0.45f, 0.55f}, glm::quat(1, 0, 0, 0), glm::vec3(0.25f));
+    fillTriangleStats(scene);
+    computeBounds(scene);
+    return scene;
+}
+
+Scene positionsOnlyScene()
+{
+    Scene scene;
+    scene.vertices.positions = {{-0.5f, -0.4f, 0.3f}, {0.5f, -0.4f, 0.3f}, {0.0f, -0.4f, -0.5f}, {0.0f, 0.5f, 0.0f}};
+    addMesh(scene, {0, 1, 3, 1, 2, 3, 2, 0, 3, 0, 2, 1}, kNone, glm::vec3(0.0f), glm::quat(1, 0, 0, 0),
+            glm::vec3(1.0f));
+    fillTriangleStats(scene);
+    computeBounds(scene);
+    return scene;
+}
+
+EmissiveQuads emissiveQuadsScene(float radius, float zBack)
+{
+    EmissiveQuads q;
+    Scene& scene = q.scene;
+    q.frontEmissive = {0.2f, 0.9f, 0.3f};
+    q.backEmissive = {0.9f, 0.25f, 0.6f};
+    q.frontCenter = {-0.3f * radius, 0.25f * radius, 0.0f};
+    q.backCenter = {0.3f * radius, 0.0f, zBack};
+    for (const glm::vec3& e : {q.frontEmissive, q.backEmissive}) {
+        Material m;
+        m.baseColorFactor = {0.0f, 0.0f, 0.0f, 1.0f};
+        m.metallicFactor = 1.0f;
+        m.roughnessFactor = 1.0f;
+        m.emissiveFactor = e;
+        scene.materials.push_back(m);
+    }
+    const float h = 0.1f * radius; // quads of 0.2 r x 0.2 r
+    for (int k = 0; k < 2; ++k) {
+        const uint32_t base = uint32_t(scene.vertices.positions.size());
+        for (const glm::vec2& c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+            scene.vertices.positions.push_back(glm::vec3(h * c, 0.0f));
+            scene.vertices.normals.push_back({0.0f, 0.0f, 1.0f});
+        }
+        addMesh(scene, {base, base + 1, base + 2, base, base + 2, base + 3}, k,
+                k == 0 ? q.frontCenter : q.backCenter, glm::quat(1, 0, 0, 0), glm::vec3(1.0f));
+    }
+    fillTriangleStats(scene);
+    scene.bounds.min = glm::vec3(-radius);
+    scene.bounds.max = glm::vec3(radius);
+    scene.bounds.center = glm::vec3(0.0f);
+    scene.bounds.radius = radius;
+    return q;
+}
+
+} // namespace lfd::test

@@ -1,0 +1,33 @@
+// Small deterministic scenes built in memory for the player tests (no files needed).
+#pragma once
+
+#include "lfd/scene.h"
+
+#include <glm/glm.hpp>
+
+namespace lfd::test {
+
+// RGBA8 checker texture (squares of `square` texels) with its full box-filtered mip chain.
+Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec4 b, bool srgb);
+
+// A textured, normal-mapped-free cube (checker base colour, tangents present) rotated on
+// the left, an untextured red sphere on the right, and a small default-material (-1) box
+// in front. Bounds enclose everything. Deterministic.
+Scene cubeAndSphereScene();
+
+// Positions only (no normals, uvs or tangents), default material: a tetrahedron-ish
+// pyramid. Exercises the "missing streams" paths.
+Scene positionsOnlyScene();
+
+// Two emissive-only unit quads facing +z (base colour black, metallic 1, roughness 1, so
+// direct and ambient light add nothing measurable): `front` centred at (-x, +y, 0) on the
+// scene centre plane (zero parallax), `back` at (+x, 0, zBack). Bounds: sphere of
+// `radius` about the origin, so the framing is known.
+struct EmissiveQuads {
+    Scene scene;
+    glm::vec3 frontCenter, backCenter;
+    glm::vec3 frontEmissive, backEmissive;
+};
+EmissiveQuads emissiveQuadsScene(float radius, float zBack);
+
+} // namespace lfd::test

@@ -1,0 +1,121 @@
+// Windowed lfd-play under Xvfb: a GLFW window with a GL 4.5 core context renders a few
+// frames and saves a screenshot of its back buffer. Skipped when Xvfb is not installed.
+#include "gl_test_support.h"
+#include "test_scenes.h"
+
+#include "image_output.h"
+
+#include "lfd/pack.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+extern char** environ;
+
+namespace lfd::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string findXvfb()
+{
+    for (const char* dir : {"/usr/bin", "/usr/local/bin", "/bin"})
+        if (fs::exists(fs::path(dir) / "Xvfb"))
+            return (fs::path(dir) / "Xvfb").string();
+    return {};
+}
+
+// An Xvfb server on a free display number, stopped (by its pid) when this goes away.
+class XvfbServer {
+public:
+    explicit XvfbServer(const std::string& binary)
+    {
+        for (int n = 87; n < 120 && pid_ <= 0; ++n) {
+            if (fs::exists("/tmp/.X11-unix/X" + std::to_string(n)) || fs::exists("/tmp/.X" + std::to_string(n) + "-lock"))
+                continue;
+            const std::string display = ":" + std::to_string(n);
+            const char* argv[] = {binary.c_str(), display.c_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp", nullptr};
+            pid_t pid = 0;
+            if (posix_spawn(&pid, binary.c_str(), nullptr, nullptr, const_cast<char**>(argv), environ) != 0)
+                return;
+            // Wait for its socket (or for it to exit because the display was taken).
+            for (int i = 0; i < 100; ++i) {
+                if (fs::exists("/tmp/.X11-unix/X" + std::to_string(n))) {
+                    pid_ = pid;
+                    display_ = display;
+                    break;
+                }
+                int status = 0;
+                if (waitpid(pid, &status, WNOHANG) == pid)
+                    break;
+                std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            }
+            if (pid_ <= 0) {
+                kill(pid, SIGTERM);
+                waitpid(pid, nullptr, 0);
+            }
+        }
+    }
+    ~XvfbServer()
+    {
+        if (pid_ > 0) {
+            kill(pid_, SIGTERM);
+            waitpid(pid_, nullptr, 0);
+        }
+    }
+    const std::string& display() const { return display_; }
+
+private:
+    pid_t pid_ = -1;
+    std::string display_;
+};
+
+TEST(WindowSmoke, RendersEveryOutputAndSavesScreenshotsUnderXvfb)
+{
+    const std::string xvfb = findXvfb();
+    if (xvfb.empty())
+        GTEST_SKIP() << "Xvfb not installed; windowed mode not tested";
+    const fs::path play = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
+    ASSERT_TRUE(fs::exists(play)) << play << " not built";
+
+    const fs::path dir = testOutputDir("window_smoke");
+    writePack(dir / "scene.lfdpack", cubeAndSphereScene());
+    XvfbServer server(xvfb);
+    ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+
+    // Every displayed output once: EIA (the default), quilt, single view, simulated viewer.
+    for (const char* show : {"eia", "quilt", "view", "viewer"}) {
+        SCOPED_TRACE(show);
+        const fs::path shot = dir / (std::string("shot_") + show + ".png");
+        const fs::path logPath = dir / (std::string("log_") + show + ".txt");
+        const std::string command = "DISPLAY=" + server.display() + " '" + play.string() + "' '" +
+                                    (dir / "scene.lfdpack").string() +
+                                    "' --views 4 --view-size 96x72 --frames 5 --window-size 320x200 --show " + show +
+                                    " --screenshot '" + shot.string() + "' > '" + logPath.string() + "' 2>&1";
+        const int status = std::system(command.c_str());
+        std::ifstream logFile(logPath);
+        const std::string log((std::istreambuf_iterator<char>(logFile)), std::istreambuf_iterator<char>());
+        ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << log;
+        ASSERT_TRUE(fs::exists(shot)) << log;
+
+        const player::Image image = player::readImage(shot, 3);
+        EXPECT_EQ(image.width, 320u);
+        EXPECT_EQ(image.height, 200u);
+        // Not uniform: the scene shows up (many pixels differ from the first one).
+        size_t differing = 0;
+        for (size_t i = 3; i < image.pixels.size(); ++i)
+            differing += image.pixels[i] != image.pixels[i % 3];
+        EXPECT_GT(differing, image.pixels.size() / 20) << "screenshot is (nearly) uniform";
+    }
+}
+
+} // namespace
+} // namespace lfd::test
