@@ -61,7 +61,7 @@ void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const
     out << "  time:";
     double total = 0.0;
     for (const auto& [name, seconds] : r.stageSeconds) {
-        out << " " << name << " " << std::setprecision(2) << seconds << " s,";
+        out << " " << name << " " << std::setprecision(3) << seconds << " s,";
         total += seconds;
     }
     out << " total " << total << " s\n";

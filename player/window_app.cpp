@@ -68,6 +68,8 @@ struct BlitSource {
         glTextureStorage2D(texture, 1, GL_RGBA8, GLsizei(w), GLsizei(h));
         glCreateFramebuffers(1, &fbo);
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, texture, 0);
+        const uint8_t black[4] = {0, 0, 0, 255}; // quilt tiles past the last view stay black
+        glClearTexImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, black);
     }
     void release()
     {
