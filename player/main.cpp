@@ -151,6 +151,12 @@ int main(int argc, char** argv)
     app.add_option("PACK", pack, "packed scene from lfd-bake")->required();
     app.add_flag("--headless", options.headless, "render without a window (EGL)");
     app.add_option("--renderer", options.renderer, "renderer: " + renderers)->capture_default_str();
+    bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false;
+    std::string atomics = "auto";
+    app.add_flag("--no-lfd-sampling", noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
+    app.add_flag("--no-texture-splatting", noTextureSplatting, "lfdpr: no density reduction by texture");
+    app.add_flag("--no-mv-mipmapping", noMvMipmapping, "lfdpr: texture values at LOD 0 (no multiview mipmapping)");
+    app.add_option("--atomics", atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
     app.add_option("--display", options.displayProfile, "display profile JSON (default: the paper's prototype)");
     auto* viewsOpt = app.add_option("--views", views, "number of views (overrides the profile)");
     auto* sizeOpt = app.add_option("--view-size", viewSize, "view size WxH (overrides the profile)");
@@ -209,6 +215,14 @@ int main(int argc, char** argv)
             throw UsageError("--turntable-period: must be >= 0");
         if (options.show != "eia" && options.show != "quilt" && options.show != "view" && options.show != "viewer")
             throw UsageError("--show: expected eia, quilt, view or viewer, got '" + options.show + "'");
+        options.lfdpr.lfdBiasedSampling = !noLfdSampling;
+        options.lfdpr.textureSplatting = !noTextureSplatting;
+        options.lfdpr.multiviewMipmapping = !noMvMipmapping;
+        try {
+            options.lfdpr.atomics = lfd::player::parseLfdprAtomics(atomics);
+        } catch (const std::exception& e) {
+            throw UsageError(e.what());
+        }
         const std::vector<std::string> known = lfd::player::rendererNames();
         if (std::find(known.begin(), known.end(), options.renderer) == known.end())
             throw UsageError("--renderer: unknown renderer '" + options.renderer + "' (known: " + renderers + ")");

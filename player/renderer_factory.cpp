@@ -1,5 +1,6 @@
 // Renderer registry: name -> constructor. Other methods (lfdpr, gstd) add a line here.
 #include "raster_draw.h"
+#include "renderer_lfdpr.h"
 
 #include <functional>
 #include <stdexcept>
@@ -18,6 +19,7 @@ const std::vector<Entry>& registry()
     static const std::vector<Entry> entries = {
         {"mvr", createMvrRenderer},
         {"mvr-layered", createMvrLayeredRenderer},
+        {"lfdpr", [] { return std::unique_ptr<Renderer>(createLfdprRenderer()); }},
     };
     return entries;
 }

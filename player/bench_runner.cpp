@@ -1,0 +1,285 @@
+#include "bench_runner.h"
+
+#include "eia_builder.h"
+#include "frame.h"
+#include "gpu_scene.h"
+#include "image_output.h"
+#include "renderer_lfdpr.h"
+#include "view_targets.h"
+
+#include "lfd/framing.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+
+namespace lfd::player {
+
+namespace {
+
+// lfdpr with one of the paper's three innovations switched off (ablation).
+struct LfdprVariant {
+    const char* name;
+    void (*disable)(LfdprOptions&);
+};
+
+const LfdprVariant kLfdprVariants[] = {
+    {"lfdpr-no-lfd-sampling", [](LfdprOptions& o) { o.lfdBiasedSampling = false; }},
+    {"lfdpr-no-texture-splatting", [](LfdprOptions& o) { o.textureSplatting = false; }},
+    {"lfdpr-no-mv-mipmapping", [](LfdprOptions& o) { o.multiviewMipmapping = false; }},
+};
+
+// Everything one renderer run shares with the others: the uploaded scene, the view
+// targets and the EIA builder (created once, so no renderer pays for uploads).
+struct Stage {
+    const DisplayProfile& profile;
+    const Framing& framing;
+    double turntablePeriod;
+    GpuScene& scene;
+    ViewTargets& targets;
+    EiaBuilder& eia;
+
+    // The frame as PlayerSession::renderFrame times it: "total" around views and EIA.
+    void renderFrame(Renderer& renderer, double time, GpuTimer& timer)
+    {
+        scene.update(time);
+        const FrameSetup frame = makeFrameSetup(profile, framing, time, turntablePeriod);
+        timer.begin("total");
+        renderer.render(scene, frame, targets, timer);
+        eia.build(targets, Reconstruction::None, timer);
+        timer.end();
+    }
+};
+
+struct CapturedFrame {
+    std::vector<Image> views; // image order
+    Image eia;
+};
+
+CapturedFrame capture(const DisplayProfile& profile, const ViewTargets& targets, const EiaBuilder& eia)
+{
+    CapturedFrame out;
+    out.views.reserve(targets.viewCount());
+    for (uint32_t i = 0; i < targets.viewCount(); ++i)
+        out.views.push_back({targets.width(), targets.height(), 4, targets.readView(i)});
+    out.eia = {profile.panelWidth, profile.panelHeight, 4, eia.read()};
+    return out;
+}
+
+Quality compare(const Image& a, const Image& reference)
+{
+    return {rmse(a, reference), psnr(a, reference), ssimLuma(a, reference)};
+}
+
+double psnrFromRmse(double e)
+{
+    return e == 0.0 ? std::numeric_limits<double>::infinity() : 20.0 * std::log10(255.0 / e);
+}
+
+} // namespace
+
+double RendererResult::stageMean(const std::string& stage) const
+{
+    const auto it = stages.find(stage);
+    return it == stages.end() ? 0.0 : it->second.mean();
+}
+
+std::optional<double> RendererResult::extraValue(const std::string& key) const
+{
+    for (const auto& [k, v] : extra)
+        if (k == key)
+            return v;
+    return std::nullopt;
+}
+
+const RendererResult* BenchReport::find(const std::string& name) const
+{
+    for (const RendererResult& r : results)
+        if (r.name == name)
+            return &r;
+    return nullptr;
+}
+
+std::optional<double> BenchReport::speedUp(const std::string& renderer, const std::string& other) const
+{
+    const RendererResult* a = find(renderer);
+    const RendererResult* b = find(other);
+    if (!a || !b || !a->timed || !b->timed)
+        return std::nullopt;
+    const double ta = a->stageMean("total"), tb = b->stageMean("total");
+    if (!(ta > 0.0) || !(tb > 0.0))
+        return std::nullopt;
+    return tb / ta;
+}
+
+std::vector<std::string> lfdprVariantNames()
+{
+    std::vector<std::string> names;
+    for (const LfdprVariant& v : kLfdprVariants)
+        names.emplace_back(v.name);
+    return names;
+}
+
+std::vector<std::string> benchRendererNames()
+{
+    std::vector<std::string> names = rendererNames();
+    for (const std::string& v : lfdprVariantNames())
+        names.push_back(v);
+    return names;
+}
+
+std::unique_ptr<Renderer> createBenchRenderer(const std::string& name)
+{
+    for (const LfdprVariant& v : kLfdprVariants)
+        if (name == v.name) {
+            LfdprOptions options;
+            v.disable(options);
+            return createLfdprRenderer(options);
+        }
+    const std::vector<std::string> known = benchRendererNames();
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+        std::string list;
+        for (const std::string& k : known)
+            list += (list.empty() ? "" : ", ") + k;
+        throw std::invalid_argument("unknown renderer \"" + name + "\" (known: " + list + ")");
+    }
+    return createRenderer(name);
+}
+
+BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& profile, Scene scene,
+                         const std::string& packName, const std::string& glDescription,
+                         std::ostream& progress, std::map<std::string, FrameImages>* images)
+{
+    using Clock = std::chrono::steady_clock;
+    if (options.frames == 0)
+        throw std::invalid_argument("frames: must be at least 1");
+    if (options.renderers.empty())
+        throw std::invalid_argument("renderers: the list is empty");
+    const std::vector<std::string> known = benchRendererNames();
+    for (const std::string& name : options.renderers)
+        if (std::find(known.begin(), known.end(), name) == known.end())
+            createBenchRenderer(name); // throws the one-line "unknown renderer" error
+    if (std::find(known.begin(), known.end(), options.reference) == known.end())
+        createBenchRenderer(options.reference);
+
+    BenchReport report;
+    report.options = options;
+    report.gl = glDescription;
+    report.packName = packName;
+    report.profile = profile;
+    report.triangles = scene.triangleCount();
+
+    // Step 1: upload once; framing as the baker assumed it (its fill), as lfd-play does.
+    const double fill = scene.settings.framingFill > 0.0f ? double(scene.settings.framingFill) : 1.0;
+    const Framing framing = fitSceneToDisplay(profile, scene.bounds, fill);
+    GpuScene gpu(scene);
+    scene = Scene{}; // the GPU copy is all that is needed from here on
+    report.sceneGpuBytes = gpu.gpuBytes();
+    ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
+    EiaBuilder eia(profile);
+    Stage stage{profile, framing, options.turntablePeriod, gpu, targets, eia};
+
+    // Step 2: the reference runs first so every other renderer is compared as soon as it
+    // has rendered (only the reference's frame is kept); the table keeps the user's order.
+    std::vector<std::string> order = options.renderers;
+    const bool referenceTimed =
+        std::find(order.begin(), order.end(), options.reference) != order.end();
+    order.erase(std::remove(order.begin(), order.end(), options.reference), order.end());
+    order.insert(order.begin(), options.reference);
+
+    CapturedFrame reference;
+    std::vector<RendererResult> results;
+    const double qualityTime = double(options.qualityFrame) / options.fps;
+    for (size_t i = 0; i < order.size(); ++i) {
+        const std::string& name = order[i];
+        const Clock::time_point start = Clock::now();
+        RendererResult result;
+        result.name = name;
+        result.timed = name != options.reference || referenceTimed;
+        auto say = [&](const std::string& line) {
+            if (!options.quiet)
+                progress << "lfd-bench: [" << (i + 1) << "/" << order.size() << "] " << name << ": "
+                         << line << std::endl;
+        };
+        std::unique_ptr<Renderer> renderer = createBenchRenderer(name);
+
+        // Step 3: warm-up frames (shader compilation, buffer growth), then timed frames;
+        // the warm-up replays the first timed frames' times and is timed separately.
+        if (result.timed) {
+            say("warm-up " + std::to_string(options.warmup) + " frame(s), then " +
+                std::to_string(options.frames) + " timed frame(s)");
+            GpuTimer warmTimer;
+            for (uint32_t k = 0; k < options.warmup; ++k)
+                stage.renderFrame(*renderer, double(k % options.frames) / options.fps, warmTimer);
+            warmTimer.finish();
+            GpuTimer timer;
+            for (uint32_t k = 0; k < options.frames; ++k)
+                stage.renderFrame(*renderer, double(k) / options.fps, timer);
+            timer.finish();
+            result.stages = timer.stages();
+            result.extra = renderer->extraStats();
+            char line[128];
+            std::snprintf(line, sizeof(line), "mean total %.2f ms", result.stageMean("total"));
+            say(line);
+        } else {
+            say("reference only (not in --renderers): quality frame");
+        }
+
+        // Step 4: the quality frame, untimed, compared with the reference's.
+        GpuTimer qualityTimer;
+        stage.renderFrame(*renderer, qualityTime, qualityTimer);
+        qualityTimer.finish();
+        if (!result.timed)
+            result.extra = renderer->extraStats();
+        if (const GLenum error = glGetError(); error != GL_NO_ERROR)
+            throw std::runtime_error("GL error " + std::to_string(error) + " while rendering with " + name);
+        CapturedFrame frame = capture(profile, targets, eia);
+        renderer.reset();
+
+        if (i == 0) {
+            // The reference against itself: identical.
+            const Quality identical{0.0, std::numeric_limits<double>::infinity(), 1.0};
+            result.eia = result.centreView = result.allViews = identical;
+            reference = std::move(frame);
+        } else {
+            result.eia = compare(frame.eia, reference.eia);
+            const size_t centre = frame.views.size() / 2;
+            result.centreView = compare(frame.views[centre], reference.views[centre]);
+            double mse = 0.0, ssim = 0.0;
+            for (size_t v = 0; v < frame.views.size(); ++v) {
+                const double e = rmse(frame.views[v], reference.views[v]);
+                mse += e * e;
+                ssim += ssimLuma(frame.views[v], reference.views[v]);
+            }
+            const double n = double(frame.views.size());
+            result.allViews = {std::sqrt(mse / n), psnrFromRmse(std::sqrt(mse / n)), ssim / n};
+            char line[160];
+            std::snprintf(line, sizeof(line), "vs %s: EIA RMSE %.2f SSIM %.4f, centre view RMSE %.2f SSIM %.4f",
+                          options.reference.c_str(), result.eia.rmse, result.eia.ssim,
+                          result.centreView.rmse, result.centreView.ssim);
+            say(line);
+        }
+        const CapturedFrame& kept = i == 0 ? reference : frame;
+        if (images)
+            (*images)[name] = {kept.eia.pixels, kept.views[kept.views.size() / 2].pixels};
+        result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        results.push_back(std::move(result));
+    }
+
+    // Step 5: the user's order, an untimed reference last.
+    for (const std::string& name : options.renderers)
+        for (RendererResult& r : results)
+            if (r.name == name)
+                report.results.push_back(r);
+    if (!referenceTimed)
+        report.results.push_back(results.front());
+    return report;
+}
+
+} // namespace lfd::player

@@ -1,0 +1,42 @@
+// LFDPR view generation (paper sections 3.2, 3.3; shaders/lfdpr_splat.comp) and the
+// resolve into ViewTargets (shaders/lfdpr_resolve.comp): the per-view depth/colour buffers
+// for either atomics path, the indirect dispatch built from the point counter
+// (shaders/lfdpr_dispatch.comp), the splat pass(es) and the resolve.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace lfd::player {
+
+class ViewTargets;
+
+class LfdprViewGeneration {
+public:
+    // int64: use the 64-bit atomicMin path (needs GL_NV_shader_atomic_int64 and
+    // GL_ARB_gpu_shader_int64; its shaders are only compiled then).
+    explicit LfdprViewGeneration(bool int64);
+    ~LfdprViewGeneration();
+    LfdprViewGeneration(const LfdprViewGeneration&) = delete;
+    LfdprViewGeneration& operator=(const LfdprViewGeneration&) = delete;
+
+    bool int64() const { return int64_; }
+    // (Re)allocates the view buffers for N views of W x H (no-op when unchanged).
+    void resize(uint32_t viewCount, uint32_t width, uint32_t height);
+    size_t viewBufferBytes() const; // 8 bytes per view pixel on either path
+
+    // Clears the view buffers and splats every point into every view. The caller has
+    // bound the LFDPR buffers, the scene's materials and the frame uniforms; `counters`
+    // is the counter buffer (its dispatch words are written here and read indirectly).
+    void splat(unsigned counters) const;
+    // Writes the resolved colours into targets' colour array.
+    void resolve(ViewTargets& targets) const;
+
+private:
+    bool int64_;
+    unsigned dispatchProgram_ = 0, splatProgram_ = 0, resolveProgram_ = 0;
+    unsigned depth_ = 0, color_ = 0; // 64-bit path: depth_ holds the words, color_ unused
+    uint32_t views_ = 0, width_ = 0, height_ = 0;
+};
+
+} // namespace lfd::player

@@ -1,0 +1,111 @@
+// LFDPR buffers: binding points, uniform locations and std430/std140 layouts shared by the
+// point-generation and view-generation stages. The C++ side reads the #defines from the
+// embedded source (gl::shaderDefineValue), so numbers are never written down twice; the
+// C++ structs that are uploaded (LfdprFrameGpu) are checked against the block size the
+// driver reports when the programs are built.
+//
+// Requires scene_bindings.glsl first (LFD_SSBO_* 0..3 and LFD_UBO_FRAME 0 are taken).
+
+#define LFDPR_SSBO_POINTS 4
+#define LFDPR_SSBO_TRIANGLES 5    // TriangleRecordGpu: what view generation needs
+#define LFDPR_SSBO_SAMPLING 6     // TriangleSamplingGpu: what the point FS needs
+#define LFDPR_SSBO_COUNTERS 7
+#define LFDPR_SSBO_VIEW_DEPTH 8   // 32-bit path: depth words; 64-bit path: depth|colour
+#define LFDPR_SSBO_VIEW_COLOR 9   // 32-bit path: colour words
+#define LFDPR_SSBO_VIEW_INVERSE 10 // sceneFromClip per view
+#define LFDPR_UBO_FRAME 1
+#define LFDPR_IMAGE_VIEWS 0
+
+// Per-draw uniforms beyond LFD_LOC_NODE / MATERIAL / STREAMS (0, 1, 3).
+#define LFDPR_LOC_RECORD_BASE 4   // first triangle record of this draw
+#define LFDPR_LOC_FIRST_TRIANGLE 5 // scene triangle index of the draw's first triangle
+#define LFDPR_LOC_PASS 6          // 32-bit view generation: 0 depth pass, 1 colour pass
+
+// LfdprFrameGpu.options bits (the ablation switches).
+#define LFDPR_OPTION_LFD_SAMPLING 1
+#define LFDPR_OPTION_TEXTURE_SPLATTING 2
+#define LFDPR_OPTION_MV_MIPMAPPING 4
+
+// TriangleRecordGpu flags.
+#define LFDPR_TRIANGLE_DOUBLE_SIDED 1
+#define LFDPR_TRIANGLE_MIRRORED 2     // node transform flips the winding (front = CW)
+#define LFDPR_TRIANGLE_FACE_NORMAL 4  // no normal stream: shade with the face normal
+
+// Sampling viewport: tiles of LFDPR_TILE_SIZE^2 pixels, at most LFDPR_MAX_TILES per
+// triangle (the geometry shader emits 4 vertices per tile).
+#define LFDPR_TILE_SIZE 2048
+#define LFDPR_MAX_TILES 16
+
+// Splats are enlarged by this factor (per axis) so neighbouring splats of one triangle
+// overlap slightly: pixel centres on a cell boundary are never lost to rounding. The
+// overlap is resolved by the depth test (same plane) and the colour minimum.
+#define LFDPR_SPLAT_OVERLAP 1.02
+
+#define LFDPR_POINT_BYTES 48
+#define LFDPR_TRIANGLE_RECORD_BYTES 96
+#define LFDPR_TRIANGLE_SAMPLING_BYTES 96
+#define LFDPR_COUNTER_BYTES 32
+#define LFDPR_VIEW_INVERSE_BYTES 64
+#define LFDPR_GROUP_SIZE 64
+
+// One point (std430, 48 bytes): position, its triangle record, and the texture values
+// fetched at LOD_min and LOD_max (paper: tv_min, tv_max), packed 8 bits per channel.
+// Normal-mapped surfaces store the two perturbed normals instead of the two normal-map
+// texels (the tangent frame is applied at fetch time, so no frame is stored per point).
+struct PointGpu {
+    vec3 position;      // scene space (splat centre)
+    uint triangle;      // TriangleRecordGpu index
+    uint normalMin;     // octahedral unit normal, 2 x snorm16 (LOD_min)
+    uint normalMax;     // (LOD_max)
+    uint baseColorMin;  // sRGB-encoded rgb, linear alpha (texture value, factor not applied)
+    uint baseColorMax;
+    uint ormMin;        // r occlusion, g roughness, b metallic (texture values), a unused
+    uint ormMax;
+    uint emissiveMin;   // sRGB-encoded rgb (texture value)
+    uint emissiveMax;
+};
+
+// One triangle as view generation sees it (std430, 96 bytes), indexed by draw record base
+// + gl_PrimitiveID: scene-space vertices for the inside-triangle test, the sampling axes
+// and spacings (the splat size), and the multiview-mipmapping range.
+struct TriangleRecordGpu {
+    vec4 p0;    // xyz scene position, w = uintBitsToFloat(material index)
+    vec4 p1;    // xyz, w = A_ts / A_ws in scene units (texture area per world area)
+    vec4 p2;    // xyz, w = uintBitsToFloat(LFDPR_TRIANGLE_* flags)
+    vec4 axisU; // xyz unit "horizontal" axis (T_align row 0), w = spacing along it
+    vec4 axisV; // xyz unit "vertical" axis (T_align row 1), w = spacing along it
+    vec4 mip;   // x size_vpuv^min, y size_vpuv^max (eqs. minVPUVSize, maxVPUVSize), zw 0
+};
+
+// What the point fragment shader needs besides the record (std430, 96 bytes).
+struct TriangleSamplingGpu {
+    vec4 origin;   // xyz scene point of sampling coordinates (0, 0), w unused
+    vec4 q01;      // sampling coordinates of p0 (xy) and p1 (zw)
+    vec4 q2uv0;    // q2 (xy), uv0 (zw)
+    vec4 uv12;     // uv1 (xy), uv2 (zw)
+    uvec4 normals; // xyz octahedral vertex normals (scene), w unused
+    uvec4 tangents; // xyz octahedral vertex tangents (scene), w bit i: tangent i has w < 0
+};
+
+layout(std430, binding = LFDPR_SSBO_COUNTERS) coherent buffer LfdprCounters {
+    uint pointCount;       // points generated (may exceed the capacity: overflow)
+    uint triangleCount;    // triangles that emitted points
+    uint oversizedCount;   // triangles larger than one sampling tile (tiled in the GS)
+    uint coarsenedCount;   // ... larger than LFDPR_MAX_TILES tiles (sampled coarser)
+    uint dispatchX;        // view-generation dispatch arguments (glDispatchComputeIndirect)
+    uint dispatchY;
+    uint dispatchZ;
+    uint counterPad;
+} counters;
+
+// Frame constants of point generation (std140, 208 bytes; C++: LfdprFrameGpu).
+layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
+    vec4 displayX;     // xyz unit display x axis in scene space, w = view pixel width (scene units)
+    vec4 displayY;     // xyz unit display y axis, w = view pixel height (scene units)
+    vec4 displayZ;     // xyz unit display z axis (screen normal, towards the viewer)
+    vec4 screenCenter; // xyz screen centre in scene space (zero-parallax plane)
+    vec4 viewLine;     // xyz a point of the viewing line (camera 0's eye)
+    vec4 planes[6];    // convex hull of the union of all view frusta, inside: dot >= 0
+    uvec4 counts;      // x view count, y point capacity, z options (LFDPR_OPTION_*), w 0
+    vec4 viewSize;     // x view width, y view height (pixels), zw 0
+} u_lfd;

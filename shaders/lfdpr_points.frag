@@ -1,0 +1,144 @@
+#version 450 core
+// LFDPR point generation, fragment stage (paper sections 3.1, 3.3): each sampling pixel
+// that overlaps the triangle is one point. Its position is the pixel centre mapped back
+// onto the triangle plane (inverse of S_ortho * T_align); its attributes come from the
+// barycentrics clamped onto the triangle; its texture values are fetched twice, at
+// LOD_min and LOD_max (eqs. minLOD, maxLOD; multiview mipmapping), and the point is
+// appended to the point buffer. No colour attachment: nothing is written but the buffer.
+#include "scene_bindings.glsl"
+#include "lfdpr_bindings.glsl"
+#include "lfdpr_math.glsl"
+#include "pbr_shading.glsl" // linearToSrgb
+
+layout(location = 0) flat in uint g_record;
+layout(location = 1) flat in vec2 g_tileOrigin;
+
+layout(location = LFD_LOC_MATERIAL) uniform uint u_material;
+layout(location = LFD_LOC_STREAMS) uniform uint u_streams;
+
+layout(binding = LFD_UNIT_BASE_COLOR) uniform sampler2D t_baseColor;
+layout(binding = LFD_UNIT_METALLIC_ROUGHNESS) uniform sampler2D t_metallicRoughness;
+layout(binding = LFD_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = LFD_UNIT_OCCLUSION) uniform sampler2D t_occlusion;
+layout(binding = LFD_UNIT_EMISSIVE) uniform sampler2D t_emissive;
+
+layout(std430, binding = LFDPR_SSBO_TRIANGLES) coherent readonly buffer TriangleRecords {
+    TriangleRecordGpu records[];
+};
+layout(std430, binding = LFDPR_SSBO_SAMPLING) coherent readonly buffer TriangleSampling {
+    TriangleSamplingGpu sampling[];
+};
+layout(std430, binding = LFDPR_SSBO_POINTS) writeonly buffer Points {
+    PointGpu points[];
+};
+
+// Texture values at the two LODs of one texture (eqs. minLOD, maxLOD with its X_t * Y_t).
+struct TexPair {
+    vec4 lo; // at LOD_min
+    vec4 hi; // at LOD_max
+};
+
+TexPair fetchPair(sampler2D t, vec2 uv, vec2 vpuv, bool mipmapping)
+{
+    ivec2 size = textureSize(t, 0);
+    float texels = float(size.x) * float(size.y);
+    TexPair pair;
+    pair.lo = textureLod(t, uv, mipmapping ? lfdLod(vpuv.x, texels) : 0.0);
+    pair.hi = mipmapping ? textureLod(t, uv, lfdLod(vpuv.y, texels)) : pair.lo;
+    return pair;
+}
+
+// Tangent-space normal map value -> scene-space normal (glTF: B = cross(N, T) * w), as
+// mvr.frag does per pixel.
+vec3 perturb(vec3 n, vec3 t, float handedness, vec4 texel, float scale)
+{
+    vec3 tn = texel.xyz * 2.0 - 1.0;
+    tn.xy *= scale;
+    vec3 b = cross(n, t) * handedness;
+    return normalize(mat3(t, b, n) * tn);
+}
+
+void main()
+{
+    // Step 1: conservative coverage in the sampling viewport.
+    TriangleSamplingGpu s = sampling[g_record];
+    vec2 q0 = s.q01.xy, q1 = s.q01.zw, q2 = s.q2uv0.xy;
+    vec2 q = gl_FragCoord.xy + g_tileOrigin;
+    if (!lfdPixelOverlapsTriangle(q, q0, q1, q2))
+        return;
+
+    // Step 2: the point: pixel centre on the triangle plane; attributes from the clamped
+    // barycentrics (conservative pixels may lie just outside the triangle).
+    TriangleRecordGpu r = records[g_record];
+    LfdFrame frame;
+    frame.u = r.axisU.xyz;
+    frame.v = r.axisV.xyz;
+    frame.n = cross(frame.u, frame.v);
+    vec2 spacing = vec2(r.axisU.w, r.axisV.w);
+    vec3 position = lfdSceneFromSampling(q, s.origin.xyz, frame, spacing);
+    vec3 w = lfdClampedBarycentric(q0, q1, q2, q);
+    vec2 uv = w.x * s.q2uv0.zw + w.y * s.uv12.xy + w.z * s.uv12.zw;
+    uint flags = floatBitsToUint(r.p2.w);
+    vec3 n;
+    if ((flags & LFDPR_TRIANGLE_FACE_NORMAL) != 0u) {
+        n = frame.n;
+    } else {
+        n = w.x * lfdOctDecode(unpackSnorm2x16(s.normals.x)) + w.y * lfdOctDecode(unpackSnorm2x16(s.normals.y)) +
+            w.z * lfdOctDecode(unpackSnorm2x16(s.normals.z));
+        n = dot(n, n) > 0.0 ? normalize(n) : frame.n;
+    }
+
+    // Step 3: texture values at LOD_min and LOD_max for each of the material's textures
+    // (multiview mipmapping); LOD 0 for both when it is switched off.
+    MaterialGpu m = materials[u_material];
+    bool useTextures = (u_streams & LFD_STREAM_UV) != 0u;
+    bool mipmapping = (u_lfd.counts.z & LFDPR_OPTION_MV_MIPMAPPING) != 0u;
+    vec2 vpuv = r.mip.xy;
+    TexPair base = TexPair(vec4(1.0), vec4(1.0));
+    TexPair mr = TexPair(vec4(1.0), vec4(1.0));
+    TexPair occlusion = TexPair(vec4(1.0), vec4(1.0));
+    TexPair emissive = TexPair(vec4(1.0), vec4(1.0));
+    vec3 normalLo = n, normalHi = n;
+    if (useTextures && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE) != 0u)
+        base = fetchPair(t_baseColor, uv, vpuv, mipmapping);
+    if (useTextures && (m.flags & LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE) != 0u)
+        mr = fetchPair(t_metallicRoughness, uv, vpuv, mipmapping);
+    if (useTextures && (m.flags & LFD_MATERIAL_OCCLUSION_TEXTURE) != 0u)
+        occlusion = fetchPair(t_occlusion, uv, vpuv, mipmapping);
+    if (useTextures && (m.flags & LFD_MATERIAL_EMISSIVE_TEXTURE) != 0u)
+        emissive = fetchPair(t_emissive, uv, vpuv, mipmapping);
+    if (useTextures && (m.flags & LFD_MATERIAL_NORMAL_TEXTURE) != 0u &&
+        (u_streams & LFD_STREAM_TANGENT) != 0u && (flags & LFDPR_TRIANGLE_FACE_NORMAL) == 0u) {
+        vec3 tangent = w.x * lfdOctDecode(unpackSnorm2x16(s.tangents.x)) +
+                       w.y * lfdOctDecode(unpackSnorm2x16(s.tangents.y)) +
+                       w.z * lfdOctDecode(unpackSnorm2x16(s.tangents.z));
+        // Handedness of the nearest vertex (it is constant across a well-formed triangle).
+        uint nearest = w.x >= w.y && w.x >= w.z ? 0u : (w.y >= w.z ? 1u : 2u);
+        float handedness = (s.tangents.w & (1u << nearest)) != 0u ? -1.0 : 1.0;
+        vec3 t = tangent - n * dot(n, tangent);
+        if (dot(t, t) > 1e-12) {
+            t = normalize(t);
+            TexPair nt = fetchPair(t_normal, uv, vpuv, mipmapping);
+            normalLo = perturb(n, t, handedness, nt.lo, m.params.z);
+            normalHi = perturb(n, t, handedness, nt.hi, m.params.z);
+        }
+    }
+
+    // Step 4: append (never past the capacity: the count still grows, so the renderer sees
+    // the overflow and enlarges the buffer for the next frame).
+    uint index = atomicAdd(counters.pointCount, 1u);
+    if (index >= u_lfd.counts.y)
+        return;
+    PointGpu p;
+    p.position = position;
+    p.triangle = g_record;
+    p.normalMin = packSnorm2x16(lfdOctEncode(normalLo));
+    p.normalMax = packSnorm2x16(lfdOctEncode(normalHi));
+    p.baseColorMin = packUnorm4x8(vec4(linearToSrgb(base.lo.rgb), base.lo.a));
+    p.baseColorMax = packUnorm4x8(vec4(linearToSrgb(base.hi.rgb), base.hi.a));
+    p.ormMin = packUnorm4x8(vec4(occlusion.lo.r, mr.lo.g, mr.lo.b, 0.0));
+    p.ormMax = packUnorm4x8(vec4(occlusion.hi.r, mr.hi.g, mr.hi.b, 0.0));
+    p.emissiveMin = packUnorm4x8(vec4(linearToSrgb(emissive.lo.rgb), 0.0));
+    p.emissiveMax = packUnorm4x8(vec4(linearToSrgb(emissive.hi.rgb), 0.0));
+    points[index] = p;
+}

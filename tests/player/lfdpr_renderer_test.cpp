@@ -1,0 +1,356 @@
+// The lfdpr renderer on a headless GL context (Mesa llvmpipe on CI), small views: agreement
+// with mvr (SSIM, RMSE, covered pixels), sub-pixel triangles, point-buffer overflow and
+// recovery, the atomics path in use (and 64-bit == 32-bit where both exist), and the
+// ablation switches moving the point count the expected way. The full comparison suite
+// (coverage, SSIM, point reductions, mipmapping error on real packs) is lfd-bench's.
+#include "gl_test_support.h"
+#include "render_test_util.h"
+#include "test_scenes.h"
+
+#include "gpu_scene.h"
+#include "gpu_timer.h"
+#include "image_output.h"
+#include "renderer_lfdpr.h"
+#include "view_targets.h"
+
+#include "lfd/framing.h"
+
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+
+namespace lfd::test {
+namespace {
+
+using player::Image;
+using player::LfdprOptions;
+
+class LfdprRendererTest : public GlTest {};
+
+// Renders `frames` frames of `scene` (still, time 0) with one renderer, the same GPU scene
+// and targets throughout, and returns the last frame's views.
+struct Rendered {
+    std::vector<Image> views;
+    std::vector<std::string> stages;
+};
+
+Rendered renderFrames(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile,
+                      int frames = 1, double angle = 0.0)
+{
+    player::GpuScene gpu(scene);
+    const Framing framing = fitSceneToDisplay(profile, scene.bounds);
+    // A turntable period of 2 pi seconds makes `angle` the time.
+    const player::FrameSetup frame = player::makeFrameSetup(profile, framing, angle, 2.0 * 3.14159265358979);
+    player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
+    player::GpuTimer timer;
+    for (int i = 0; i < frames; ++i)
+        renderer.render(gpu, frame, targets, timer);
+    timer.finish();
+    Rendered out;
+    for (const auto& [stage, times] : timer.stages())
+        out.stages.push_back(stage);
+    for (uint32_t i = 0; i < profile.viewCount; ++i)
+        out.views.push_back({profile.viewWidth, profile.viewHeight, 4, targets.readView(i)});
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    return out;
+}
+
+Rendered renderNamed(const std::string& name, const Scene& scene, const DisplayProfile& profile, double angle = 0.0)
+{
+    std::unique_ptr<player::Renderer> renderer = player::createRenderer(name);
+    return renderFrames(*renderer, scene, profile, 1, angle);
+}
+
+bool isBackground(const uint8_t* p)
+{
+    // kBackground 0.05 stored as 13 (sRGB-encoded values are written as is).
+    return p[0] == 13 && p[1] == 13 && p[2] == 13;
+}
+
+size_t coveredPixels(const Image& image)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < image.pixels.size(); i += 4)
+        n += !isBackground(&image.pixels[i]);
+    return n;
+}
+
+// Pixels covered in exactly one of the two images.
+size_t coverageDifference(const Image& a, const Image& b)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < a.pixels.size(); i += 4)
+        n += isBackground(&a.pixels[i]) != isBackground(&b.pixels[i]);
+    return n;
+}
+
+// The baker's per-triangle statistics (DESIGN.md section 4, paper eqs. texelCount and
+// lfd_UVSize): the test scenes carry only A_ws, and LFDPR's texture splatting and
+// multiview mipmapping need the rest.
+Scene withTextureStats(Scene scene)
+{
+    for (const Primitive& prim : scene.primitives) {
+        const Material* m = prim.material == kNone ? nullptr : &scene.materials[size_t(prim.material)];
+        float maxTexels = 0.0f; // X_t * Y_t of the material's largest texture
+        if (m)
+            for (int32_t t : {m->baseColorTexture, m->metallicRoughnessTexture, m->normalTexture,
+                              m->occlusionTexture, m->emissiveTexture})
+                if (t != kNone)
+                    maxTexels = std::max(maxTexels, float(scene.textures[size_t(t)].width) *
+                                                        float(scene.textures[size_t(t)].height));
+        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; i += 3) {
+            TriangleStats& s = scene.triangleStats[i / 3];
+            if (maxTexels == 0.0f || scene.vertices.uvs.empty() || s.areaWorld <= 0.0f)
+                continue;
+            const glm::vec2 a = scene.vertices.uvs[scene.indices[i]], b = scene.vertices.uvs[scene.indices[i + 1]],
+                            c = scene.vertices.uvs[scene.indices[i + 2]];
+            s.areaTexture = 0.5f * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+            s.texelCount = s.areaTexture * maxTexels;
+            s.sizeUv = s.texelCount > 0.0f ? s.areaWorld / s.texelCount : 0.0f;
+            s.texPerWorld = s.areaTexture / s.areaWorld;
+            s.flags |= kTriangleTextured;
+        }
+    }
+    return scene;
+}
+
+// A unit quad facing +z with a coarse 4 x 4 checker texture and the baker's statistics
+// (paper eqs. texelCount, lfd_UVSize; A_ts / A_ws), so texture-based splatting applies.
+Scene coarseTexturedQuad()
+{
+    Scene scene;
+    scene.textures.push_back(checkerTexture(4, 1, {220, 60, 40, 255}, {40, 180, 220, 255}, true));
+    Material m;
+    m.baseColorTexture = 0;
+    m.metallicFactor = 0.0f;
+    m.roughnessFactor = 0.8f;
+    scene.materials.push_back(m);
+    scene.vertices.positions = {{-0.5f, -0.5f, 0.0f}, {0.5f, -0.5f, 0.0f}, {0.5f, 0.5f, 0.0f}, {-0.5f, 0.5f, 0.0f}};
+    scene.vertices.normals.assign(4, glm::vec3(0, 0, 1));
+    scene.vertices.uvs = {{0, 1}, {1, 1}, {1, 0}, {0, 0}};
+    scene.indices = {0, 1, 2, 0, 2, 3};
+    scene.primitives.push_back({0, 6, 0});
+    scene.meshes.push_back({"quad", 0, 1});
+    Node node;
+    node.mesh = 0;
+    scene.nodes.push_back(node);
+    for (int t = 0; t < 2; ++t) {
+        TriangleStats s;
+        s.areaWorld = 0.5f;
+        s.areaTexture = 0.5f;
+        s.texelCount = 0.5f * 16.0f;
+        s.sizeUv = s.areaWorld / s.texelCount;
+        s.texPerWorld = s.areaTexture / s.areaWorld;
+        s.flags = kTriangleTextured;
+        scene.triangleStats.push_back(s);
+    }
+    scene.bounds.min = glm::vec3(-0.5f, -0.5f, 0.0f);
+    scene.bounds.max = glm::vec3(0.5f, 0.5f, 0.0f);
+    scene.bounds.radius = std::sqrt(0.5f);
+    return scene;
+}
+
+TEST_F(LfdprRendererTest, AgreesWithMvr)
+{
+    // Same scene, views, cameras and shading function as mvr; differences come from
+    // per-splat (not per-pixel) shading and texture values, and from the min/max-LOD
+    // interpolation instead of hardware trilinear filtering. Measured on llvmpipe: SSIM
+    // 0.97-0.98, RMSE ~4-5 (0..255), coverage differing in < 0.3% of the covered pixels;
+    // the bounds leave margin for other drivers.
+    const Scene scene = withTextureStats(cubeAndSphereScene());
+    const DisplayProfile profile = smallProfile(6, 160, 120);
+    for (double angle : {0.0, 0.9}) {
+        const Rendered lfdpr = renderNamed("lfdpr", scene, profile, angle);
+        const Rendered mvr = renderNamed("mvr", scene, profile, angle);
+        for (uint32_t v = 0; v < profile.viewCount; ++v) {
+            const size_t covered = coveredPixels(mvr.views[v]);
+            ASSERT_GT(covered, size_t(160 * 120 / 10)) << "scene visible";
+            EXPECT_GT(player::ssimLuma(lfdpr.views[v], mvr.views[v]), 0.9) << "view " << v;
+            EXPECT_LT(player::rmse(lfdpr.views[v], mvr.views[v]), 10.0) << "view " << v;
+            EXPECT_LT(double(coverageDifference(lfdpr.views[v], mvr.views[v])), 0.01 * double(covered))
+                << "holes or overdraw, view " << v;
+        }
+        // On failure (or with LFD_KEEP_TEST_IMAGES set) keep the images for inspection.
+        if (HasFailure() || std::getenv("LFD_KEEP_TEST_IMAGES")) {
+            const std::filesystem::path dir = testOutputDir("lfdpr_agrees_with_mvr_" + std::to_string(int(angle * 10)));
+            for (uint32_t v = 0; v < profile.viewCount; ++v) {
+                const std::string stem = "angle" + std::to_string(int(angle * 10)) + "_view" + std::to_string(v);
+                player::writeImage(dir / (stem + "_lfdpr.png"), lfdpr.views[v]);
+                player::writeImage(dir / (stem + "_mvr.png"), mvr.views[v]);
+                player::writeDiffImage(dir / (stem + "_diff.png"), lfdpr.views[v], mvr.views[v]);
+            }
+            if (HasFailure())
+                FAIL() << "images in " << dir;
+        }
+    }
+}
+
+TEST_F(LfdprRendererTest, ReportsStagesAndTheAtomicsPathInUse)
+{
+    auto renderer = player::createLfdprRenderer();
+    const Rendered r = renderFrames(*renderer, withTextureStats(cubeAndSphereScene()), smallProfile(4, 96, 72));
+    for (const char* stage : {"point_generation", "view_generation", "resolve"})
+        EXPECT_NE(std::find(r.stages.begin(), r.stages.end(), stage), r.stages.end()) << stage;
+    const player::LfdprFrameInfo& info = renderer->lastFrame();
+    EXPECT_EQ(info.int64Atomics, caps().int64Atomics) << "Auto picks 64-bit exactly where it exists";
+    EXPECT_GT(info.points, 1000u);
+    EXPECT_FALSE(info.overflowed);
+    EXPECT_EQ(info.bytesPerPoint, 48u);
+    EXPECT_EQ(info.viewBufferBytes, 4u * 96u * 72u * 8u);
+    std::map<std::string, double> stats;
+    for (const auto& [key, value] : renderer->extraStats())
+        stats[key] = value;
+    for (const char* key : {"points", "bytes_per_point", "point_buffer_bytes", "view_buffer_bytes",
+                            "point_capacity", "overflow_frames", "atomics", "triangles_oversized"})
+        EXPECT_TRUE(stats.count(key)) << key;
+    EXPECT_EQ(stats["points"], double(info.points));
+    EXPECT_EQ(stats["atomics"], caps().int64Atomics ? 1.0 : 0.0);
+    if (!caps().int64Atomics) {
+        EXPECT_THROW(player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::Int64}), gl::GlError);
+    }
+}
+
+TEST_F(LfdprRendererTest, Int64AndTwoPass32GiveTheSameImage)
+{
+    if (!caps().int64Atomics)
+        GTEST_SKIP() << "GL_NV_shader_atomic_int64 absent (" << caps().renderer << "): only the 32-bit path runs";
+    const Scene scene = withTextureStats(cubeAndSphereScene());
+    const DisplayProfile profile = smallProfile(4, 160, 120);
+    auto r64 = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::Int64});
+    auto r32 = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::TwoPass32});
+    const Rendered a = renderFrames(*r64, scene, profile);
+    const Rendered b = renderFrames(*r32, scene, profile);
+    for (uint32_t v = 0; v < profile.viewCount; ++v)
+        EXPECT_EQ(player::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
+}
+
+TEST_F(LfdprRendererTest, SubPixelTriangleStillMakesAPointAndAPixel)
+{
+    // One triangle of ~0.4 x 0.4 view pixels on the zero-parallax plane, centred on a pixel
+    // centre, so every view sees it over the same pixel. The scene bounds (a sphere much
+    // larger than the triangle) fix the framing. Raster (mvr) covers that one pixel per
+    // view; lfdpr must too, from at least one point.
+    const DisplayProfile profile = smallProfile(4, 96, 72);
+    Scene scene;
+    SceneBounds bounds;
+    bounds.min = glm::vec3(-1.0f);
+    bounds.max = glm::vec3(1.0f);
+    bounds.radius = 1.0f;
+    const Framing framing = fitSceneToDisplay(profile, bounds);
+    const glm::dvec2 pixelScene = viewPixelSizeMm(profile) / framing.mmPerUnit;
+    const glm::vec2 centre(0.5 * pixelScene.x, 0.5 * pixelScene.y); // centre of pixel (48, 36)
+    const glm::vec2 r(0.2 * pixelScene.x, 0.2 * pixelScene.y);
+    scene.vertices.positions = {{centre.x - r.x, centre.y - r.y, 0.0f},
+                                {centre.x + r.x, centre.y - r.y, 0.0f},
+                                {centre.x, centre.y + r.y, 0.0f}};
+    scene.indices = {0, 1, 2};
+    scene.primitives.push_back({0, 3, kNone});
+    scene.meshes.push_back({"tiny", 0, 1});
+    Node node;
+    node.mesh = 0;
+    scene.nodes.push_back(node);
+    scene.triangleStats.resize(1);
+    scene.triangleStats[0].areaWorld = r.x * r.y * 2.0f;
+    scene.bounds = bounds;
+
+    auto renderer = player::createLfdprRenderer();
+    const Rendered lfdpr = renderFrames(*renderer, scene, profile);
+    const Rendered mvr = renderNamed("mvr", scene, profile);
+    EXPECT_GE(renderer->lastFrame().points, 1u);
+    EXPECT_LE(renderer->lastFrame().points, 4u) << "one sampling pixel (or its neighbours)";
+    for (uint32_t v = 0; v < profile.viewCount; ++v) {
+        EXPECT_EQ(coveredPixels(mvr.views[v]), 1u) << "raster reference, view " << v;
+        EXPECT_EQ(coveredPixels(lfdpr.views[v]), 1u) << "view " << v;
+        EXPECT_EQ(coverageDifference(lfdpr.views[v], mvr.views[v]), 0u) << "same pixel, view " << v;
+    }
+}
+
+TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
+{
+    const Scene scene = withTextureStats(cubeAndSphereScene());
+    const DisplayProfile profile = smallProfile(4, 96, 72);
+    auto reference = player::createLfdprRenderer();
+    const Rendered expected = renderFrames(*reference, scene, profile);
+    const uint64_t needed = reference->lastFrame().points;
+
+    auto renderer = player::createLfdprRenderer({.initialPointCapacity = 16});
+    player::GpuScene gpu(scene);
+    const Framing framing = fitSceneToDisplay(profile, scene.bounds);
+    const player::FrameSetup frame = player::makeFrameSetup(profile, framing, 0.0, 0.0);
+    player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
+    player::GpuTimer timer;
+
+    // Frame 1: overflows; only 16 points are stored and splatted (no out-of-bounds writes:
+    // the frame still renders, partially).
+    renderer->render(gpu, frame, targets, timer);
+    const player::LfdprFrameInfo first = renderer->lastFrame();
+    EXPECT_TRUE(first.overflowed);
+    EXPECT_EQ(first.points, needed);
+    EXPECT_EQ(first.pointsStored, 16u);
+    EXPECT_EQ(first.pointCapacity, 16u);
+    EXPECT_EQ(first.overflowFrames, 1u);
+
+    // Frame 2: grown to needed * 1.25, complete, and identical to an unconstrained render
+    // (depth ties break by colour, so the image does not depend on point order).
+    renderer->render(gpu, frame, targets, timer);
+    const player::LfdprFrameInfo second = renderer->lastFrame();
+    EXPECT_FALSE(second.overflowed);
+    EXPECT_GE(second.pointCapacity, uint32_t(std::ceil(1.25 * double(needed))));
+    EXPECT_EQ(second.overflowFrames, 1u);
+    timer.finish();
+    for (uint32_t v = 0; v < profile.viewCount; ++v) {
+        const Image image{profile.viewWidth, profile.viewHeight, 4, targets.readView(v)};
+        EXPECT_EQ(player::maxAbsDiff(image, expected.views[v]), 0) << "view " << v;
+    }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
+TEST_F(LfdprRendererTest, AblationSwitchesMoveThePointCount)
+{
+    const DisplayProfile profile = smallProfile(4, 160, 120);
+    auto points = [&](const Scene& scene, const LfdprOptions& options) {
+        auto renderer = player::createLfdprRenderer(options);
+        renderFrames(*renderer, scene, profile);
+        return renderer->lastFrame().points;
+    };
+    // LFD-biased sampling: these views' pixels are 4:3 (2.16 x 1.62 mm), so isotropic
+    // sampling at the finer density needs ~4/3 the points.
+    const Scene cube = withTextureStats(cubeAndSphereScene());
+    const uint64_t biased = points(cube, {});
+    const uint64_t isotropic = points(cube, {.lfdBiasedSampling = false});
+    EXPECT_GT(double(isotropic), 1.2 * double(biased));
+    EXPECT_LT(double(isotropic), 2.0 * double(biased));
+
+    // Texture-based splatting on a 4 x 4 texture: about one point per texel instead of one
+    // per view pixel - and the quad is still covered completely (splats grow).
+    const Scene quad = coarseTexturedQuad();
+    const uint64_t splatting = points(quad, {});
+    const uint64_t dense = points(quad, {.textureSplatting = false});
+    EXPECT_LT(splatting, dense / 10);
+    EXPECT_LE(splatting, 64u) << "~16 texels, plus conservative edge cells";
+    EXPECT_GE(splatting, 16u);
+    auto renderer = player::createLfdprRenderer();
+    const Rendered splatted = renderFrames(*renderer, quad, profile);
+    const Rendered mvr = renderNamed("mvr", quad, profile);
+    for (uint32_t v = 0; v < profile.viewCount; ++v) {
+        const size_t covered = coveredPixels(mvr.views[v]);
+        EXPECT_LT(double(coverageDifference(splatted.views[v], mvr.views[v])), 0.01 * double(covered))
+            << "view " << v;
+    }
+}
+
+TEST(LfdprOptions, ParsesTheAtomicsFlag)
+{
+    EXPECT_EQ(player::parseLfdprAtomics("auto"), LfdprOptions::Atomics::Auto);
+    EXPECT_EQ(player::parseLfdprAtomics("64"), LfdprOptions::Atomics::Int64);
+    EXPECT_EQ(player::parseLfdprAtomics("32"), LfdprOptions::Atomics::TwoPass32);
+    EXPECT_THROW(player::parseLfdprAtomics("128"), std::invalid_argument);
+}
+
+} // namespace
+} // namespace lfd::test
