@@ -166,7 +166,7 @@ int main(int argc, char** argv)
                              options.reference == "mvr-layered";
         context->require(layered);
         if (!options.quiet)
-            std::cout << "lfd-bench: " << context->describe() << std::endl;
+            std::cout << "lfd-bench: " << context->describeWithCodePaths() << std::endl;
 
         // Step 4: measure, then print and write.
         std::map<std::string, FrameImages> images;

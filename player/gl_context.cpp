@@ -241,6 +241,14 @@ std::string GlContext::describe() const
     return "OpenGL " + caps_.version + " / " + caps_.renderer + " / " + caps_.vendor;
 }
 
+std::string GlContext::describeWithCodePaths() const
+{
+    auto yesNo = [](bool b) { return b ? "yes" : "no"; };
+    return describe() + " (NV_shader_atomic_int64: " + yesNo(caps_.int64Atomics) +
+           ", ARB_gpu_shader_int64: " + yesNo(caps_.gpuShaderInt64) +
+           ", ARB_shader_viewport_layer_array: " + yesNo(caps_.layerFromVertexShader) + ")";
+}
+
 void GlContext::require(bool layeredRendering) const
 {
     if (caps_.major < 4 || (caps_.major == 4 && caps_.minor < 5))

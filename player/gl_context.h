@@ -42,6 +42,9 @@ public:
     const GlCapabilities& caps() const { return caps_; }
     // One line: "OpenGL 4.5 (Core Profile) Mesa 22.3.6 / llvmpipe (LLVM 15.0.6, 256 bits) / Mesa"
     std::string describe() const;
+    // describe() plus the extensions that choose code paths, for the start-up line:
+    // "... (NV_shader_atomic_int64: no, ARB_gpu_shader_int64: yes, ARB_shader_viewport_layer_array: yes)"
+    std::string describeWithCodePaths() const;
     // Throws GlError naming what is missing (extensions the renderers need).
     void require(bool layeredRendering) const;
 

@@ -60,11 +60,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
 {
     using namespace lfd::player;
     std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless();
-    const lfd::gl::GlCapabilities& caps = context->caps();
-    std::printf("lfd-play: %s (NV_shader_atomic_int64: %s, ARB_gpu_shader_int64: %s, "
-                "ARB_shader_viewport_layer_array: %s)\n",
-                context->describe().c_str(), caps.int64Atomics ? "yes" : "no",
-                caps.gpuShaderInt64 ? "yes" : "no", caps.layerFromVertexShader ? "yes" : "no");
+    std::printf("lfd-play: %s\n", context->describeWithCodePaths().c_str());
     std::fflush(stdout);
     context->require(options.renderer == "mvr-layered");
 

@@ -117,11 +117,7 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
 {
     std::unique_ptr<gl::GlContext> context =
         gl::GlContext::createWindow(int(options.windowWidth), int(options.windowHeight), "lfd-play");
-    const lfd::gl::GlCapabilities& caps = context->caps();
-    std::printf("lfd-play: %s (NV_shader_atomic_int64: %s, ARB_gpu_shader_int64: %s, "
-                "ARB_shader_viewport_layer_array: %s)\n",
-                context->describe().c_str(), caps.int64Atomics ? "yes" : "no",
-                caps.gpuShaderInt64 ? "yes" : "no", caps.layerFromVertexShader ? "yes" : "no");
+    std::printf("lfd-play: %s\n", context->describeWithCodePaths().c_str());
     std::fflush(stdout);
     context->require(options.renderer == "mvr-layered");
     GLFWwindow* window = context->window();

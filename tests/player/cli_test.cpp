@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -48,10 +49,12 @@ struct RunResult {
     std::string out, err;
 };
 
-RunResult runPlay(const fs::path& dir, const std::string& args)
+const fs::path kBench = fs::path(LFD_BINARY_DIR) / "player" / "lfd-bench";
+
+RunResult runTool(const fs::path& tool, const fs::path& dir, const std::string& args)
 {
     const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string command = "'" + kPlay.string() + "' " + args + " > '" + out.string() + "' 2> '" +
+    const std::string command = "'" + tool.string() + "' " + args + " > '" + out.string() + "' 2> '" +
                                 err.string() + "'";
     RunResult r;
     const int raw = std::system(command.c_str());
@@ -62,6 +65,8 @@ RunResult runPlay(const fs::path& dir, const std::string& args)
     fs::remove(err);
     return r;
 }
+
+RunResult runPlay(const fs::path& dir, const std::string& args) { return runTool(kPlay, dir, args); }
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
@@ -220,6 +225,57 @@ TEST_F(CliTest, BadInputFailsCleanly)
         EXPECT_NE(r.err.find(culprit), std::string::npos) << "error must name " << culprit << ": " << r.err;
         EXPECT_EQ(outputsIn(dir_), std::vector<std::string>{}) << args;
     }
+}
+
+} // namespace
+} // namespace lfd::test
+
+namespace lfd::test {
+namespace {
+
+TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
+{
+    const fs::path out = dir_ / "out";
+    fs::create_directories(out);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 96x72";
+    const RunResult r = runPlay(dir_, common + " --renderer lfdpr --stats " + q(out / "lfdpr.json"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json stats = nlohmann::json::parse(readText(out / "lfdpr.json"));
+    for (const char* key : {"points", "bytes_per_point", "point_generation_ms", "view_generation_ms", "eia_ms",
+                            "total_ms", "point_buffer_bytes", "view_buffer_bytes", "atomics"})
+        EXPECT_TRUE(stats.contains(key)) << key;
+    EXPECT_EQ(stats["renderer"], "lfdpr");
+    EXPECT_GT(stats["points"].get<double>(), 0.0);
+
+    // Isotropic sampling (the LFD-biased innovation off) needs more points on the same frame.
+    const RunResult iso = runPlay(dir_, common + " --renderer lfdpr --no-lfd-sampling --stats " + q(out / "iso.json"));
+    ASSERT_EQ(iso.status, 0) << iso.err;
+    const nlohmann::json isoStats = nlohmann::json::parse(readText(out / "iso.json"));
+    EXPECT_GT(isoStats["points"].get<double>(), stats["points"].get<double>());
+
+    const RunResult bad = runPlay(dir_, common + " --renderer lfdpr --atomics 16");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+}
+
+TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
+{
+    ASSERT_TRUE(fs::exists(kBench)) << kBench << " not built (build target lfd-bench)";
+    const fs::path out = dir_ / "bench";
+    const RunResult r = runTool(kBench, dir_, q(pack_) + " --display " + q(profile_) +
+                                                  " --views 4 --view-size 96x72 --frames 2 --warmup 1 --out " + q(out));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("lfdpr/mvr total-time ratio:"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("lfdpr/mvr-layered:"), std::string::npos) << r.out;
+    for (const char* file : {"bench.json", "bench.csv", "speed_vs_error.svg", "lfdpr_eia.png", "mvr_eia.png"})
+        EXPECT_TRUE(fs::exists(out / file)) << file;
+    const nlohmann::json bench = nlohmann::json::parse(readText(out / "bench.json"));
+    EXPECT_FALSE(bench.dump().find("\"lfdpr\"") == std::string::npos) << "bench.json names lfdpr";
+
+    const RunResult missing = runTool(kBench, dir_, q(dir_ / "missing.lfdpack"));
+    EXPECT_NE(missing.status, 0);
+    EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
+    EXPECT_NE(missing.err.find("missing.lfdpack"), std::string::npos) << missing.err;
 }
 
 } // namespace

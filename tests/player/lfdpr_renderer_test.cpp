@@ -89,36 +89,6 @@ size_t coverageDifference(const Image& a, const Image& b)
     return n;
 }
 
-// The baker's per-triangle statistics (DESIGN.md section 4, paper eqs. texelCount and
-// lfd_UVSize): the test scenes carry only A_ws, and LFDPR's texture splatting and
-// multiview mipmapping need the rest.
-Scene withTextureStats(Scene scene)
-{
-    for (const Primitive& prim : scene.primitives) {
-        const Material* m = prim.material == kNone ? nullptr : &scene.materials[size_t(prim.material)];
-        float maxTexels = 0.0f; // X_t * Y_t of the material's largest texture
-        if (m)
-            for (int32_t t : {m->baseColorTexture, m->metallicRoughnessTexture, m->normalTexture,
-                              m->occlusionTexture, m->emissiveTexture})
-                if (t != kNone)
-                    maxTexels = std::max(maxTexels, float(scene.textures[size_t(t)].width) *
-                                                        float(scene.textures[size_t(t)].height));
-        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; i += 3) {
-            TriangleStats& s = scene.triangleStats[i / 3];
-            if (maxTexels == 0.0f || scene.vertices.uvs.empty() || s.areaWorld <= 0.0f)
-                continue;
-            const glm::vec2 a = scene.vertices.uvs[scene.indices[i]], b = scene.vertices.uvs[scene.indices[i + 1]],
-                            c = scene.vertices.uvs[scene.indices[i + 2]];
-            s.areaTexture = 0.5f * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-            s.texelCount = s.areaTexture * maxTexels;
-            s.sizeUv = s.texelCount > 0.0f ? s.areaWorld / s.texelCount : 0.0f;
-            s.texPerWorld = s.areaTexture / s.areaWorld;
-            s.flags |= kTriangleTextured;
-        }
-    }
-    return scene;
-}
-
 // A unit quad facing +z with a coarse 4 x 4 checker texture and the baker's statistics
 // (paper eqs. texelCount, lfd_UVSize; A_ts / A_ws), so texture-based splatting applies.
 Scene coarseTexturedQuad()
@@ -162,7 +132,7 @@ TEST_F(LfdprRendererTest, AgreesWithMvr)
     // interpolation instead of hardware trilinear filtering. Measured on llvmpipe: SSIM
     // 0.97-0.98, RMSE ~4-5 (0..255), coverage differing in < 0.3% of the covered pixels;
     // the bounds leave margin for other drivers.
-    const Scene scene = withTextureStats(cubeAndSphereScene());
+    const Scene scene = cubeAndSphereScene();
     const DisplayProfile profile = smallProfile(6, 160, 120);
     for (double angle : {0.0, 0.9}) {
         const Rendered lfdpr = renderNamed("lfdpr", scene, profile, angle);
@@ -193,7 +163,7 @@ TEST_F(LfdprRendererTest, AgreesWithMvr)
 TEST_F(LfdprRendererTest, ReportsStagesAndTheAtomicsPathInUse)
 {
     auto renderer = player::createLfdprRenderer();
-    const Rendered r = renderFrames(*renderer, withTextureStats(cubeAndSphereScene()), smallProfile(4, 96, 72));
+    const Rendered r = renderFrames(*renderer, cubeAndSphereScene(), smallProfile(4, 96, 72));
     for (const char* stage : {"point_generation", "view_generation", "resolve"})
         EXPECT_NE(std::find(r.stages.begin(), r.stages.end(), stage), r.stages.end()) << stage;
     const player::LfdprFrameInfo& info = renderer->lastFrame();
@@ -219,7 +189,7 @@ TEST_F(LfdprRendererTest, Int64AndTwoPass32GiveTheSameImage)
 {
     if (!caps().int64Atomics)
         GTEST_SKIP() << "GL_NV_shader_atomic_int64 absent (" << caps().renderer << "): only the 32-bit path runs";
-    const Scene scene = withTextureStats(cubeAndSphereScene());
+    const Scene scene = cubeAndSphereScene();
     const DisplayProfile profile = smallProfile(4, 160, 120);
     auto r64 = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::Int64});
     auto r32 = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::TwoPass32});
@@ -272,7 +242,7 @@ TEST_F(LfdprRendererTest, SubPixelTriangleStillMakesAPointAndAPixel)
 
 TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
 {
-    const Scene scene = withTextureStats(cubeAndSphereScene());
+    const Scene scene = cubeAndSphereScene();
     const DisplayProfile profile = smallProfile(4, 96, 72);
     auto reference = player::createLfdprRenderer();
     const Rendered expected = renderFrames(*reference, scene, profile);
@@ -320,7 +290,7 @@ TEST_F(LfdprRendererTest, AblationSwitchesMoveThePointCount)
     };
     // LFD-biased sampling: these views' pixels are 4:3 (2.16 x 1.62 mm), so isotropic
     // sampling at the finer density needs ~4/3 the points.
-    const Scene cube = withTextureStats(cubeAndSphereScene());
+    const Scene cube = cubeAndSphereScene();
     const uint64_t biased = points(cube, {});
     const uint64_t isotropic = points(cube, {.lfdBiasedSampling = false});
     EXPECT_GT(double(isotropic), 1.2 * double(biased));

@@ -7,6 +7,8 @@
 #include "gl_test_support.h"
 #include "test_scenes.h"
 
+#include "bake.h"
+
 #include "eia_builder.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
@@ -52,96 +54,6 @@ DisplayProfile comparisonProfile(uint32_t views, uint32_t width, uint32_t height
 }
 
 // ---- Scenes (built here with the baker's per-triangle statistics) -------------------
-
-// The baker's per-triangle statistics (baker/triangle_stats.cpp, paper eqs. texelCount,
-// lfd_UVSize): A_ws, A_ts, n_tex = max_t A_ts X_t Y_t, size_uv = A_ws / max(n_tex, 1),
-// A_ts / A_ws. lfdpr's texture-based splatting and multiview mipmapping read them.
-void computeTriangleStats(Scene& scene)
-{
-    scene.triangleStats.assign(scene.triangleCount(), TriangleStats{});
-    for (const Primitive& prim : scene.primitives) {
-        uint32_t texW = 0, texH = 0;
-        if (prim.material != kNone && !scene.vertices.uvs.empty()) {
-            const Material& m = scene.materials[size_t(prim.material)];
-            for (int32_t t : {m.baseColorTexture, m.metallicRoughnessTexture, m.normalTexture,
-                              m.occlusionTexture, m.emissiveTexture})
-                if (t != kNone && uint64_t(scene.textures[size_t(t)].width) * scene.textures[size_t(t)].height >
-                                      uint64_t(texW) * texH) {
-                    texW = scene.textures[size_t(t)].width;
-                    texH = scene.textures[size_t(t)].height;
-                }
-        }
-        for (uint32_t tri = prim.firstIndex / 3; tri < (prim.firstIndex + prim.indexCount) / 3; ++tri) {
-            const uint32_t* i = &scene.indices[3 * size_t(tri)];
-            const glm::dvec3 p0 = scene.vertices.positions[i[0]], p1 = scene.vertices.positions[i[1]],
-                             p2 = scene.vertices.positions[i[2]];
-            TriangleStats& s = scene.triangleStats[tri];
-            const double areaWorld = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0));
-            s.areaWorld = float(areaWorld);
-            if (texW == 0)
-                continue;
-            const glm::dvec2 t0 = scene.vertices.uvs[i[0]], t1 = scene.vertices.uvs[i[1]],
-                             t2 = scene.vertices.uvs[i[2]];
-            const double areaTexture = 0.5 * std::abs((t1.x - t0.x) * (t2.y - t0.y) - (t1.y - t0.y) * (t2.x - t0.x));
-            const double texels = areaTexture * texW * texH;
-            s.flags = kTriangleTextured;
-            s.areaTexture = float(areaTexture);
-            s.texelCount = float(texels);
-            s.sizeUv = float(areaWorld / std::max(texels, 1.0));
-            s.texPerWorld = float(areaTexture / areaWorld);
-        }
-    }
-}
-
-// Scene-space bounds over all node-transformed vertices (no hierarchy, no animation).
-void computeBounds(Scene& scene)
-{
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    std::vector<glm::vec3> points;
-    for (const Node& node : scene.nodes) {
-        const Primitive& prim = scene.primitives[scene.meshes[size_t(node.mesh)].firstPrimitive];
-        for (uint32_t k = prim.firstIndex; k < prim.firstIndex + prim.indexCount; ++k) {
-            const glm::vec3 q = node.translation + node.rotation * (node.scale * scene.vertices.positions[scene.indices[k]]);
-            lo = glm::min(lo, q);
-            hi = glm::max(hi, q);
-            points.push_back(q);
-        }
-    }
-    scene.bounds.min = lo;
-    scene.bounds.max = hi;
-    scene.bounds.center = 0.5f * (lo + hi);
-    scene.bounds.radius = 0.0f;
-    for (const glm::vec3& q : points)
-        scene.bounds.radius = std::max(scene.bounds.radius, glm::length(q - scene.bounds.center));
-}
-
-// One mesh of one primitive; returns the mesh index.
-int32_t addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material)
-{
-    Primitive prim;
-    prim.firstIndex = uint32_t(scene.indices.size());
-    prim.indexCount = uint32_t(indices.size());
-    prim.material = material;
-    scene.indices.insert(scene.indices.end(), indices.begin(), indices.end());
-    Mesh mesh;
-    mesh.name = "mesh" + std::to_string(scene.meshes.size());
-    mesh.firstPrimitive = uint32_t(scene.primitives.size());
-    mesh.primitiveCount = 1;
-    scene.primitives.push_back(prim);
-    scene.meshes.push_back(mesh);
-    return int32_t(scene.meshes.size() - 1);
-}
-
-void addNode(Scene& scene, int32_t mesh, const glm::vec3& t, const glm::quat& r, float s)
-{
-    Node node;
-    node.name = "node" + std::to_string(scene.nodes.size());
-    node.mesh = mesh;
-    node.translation = t;
-    node.rotation = r;
-    node.scale = glm::vec3(s);
-    scene.nodes.push_back(node);
-}
 
 // A grid of cells x cells quads in the plane z = 0, [-h, h]^2, facing +z, uvs 0..uvScale.
 // Split into cells as the baker's tessellation bound would split a big quad.
@@ -211,9 +123,8 @@ Scene texturedCubeScene()
     scene.materials.push_back(texturedMaterial(0));
     const int32_t cube = addMesh(scene, addCube(scene), 0);
     addNode(scene, cube, glm::vec3(0.0f),
-            glm::angleAxis(0.6f, glm::normalize(glm::vec3(1.0f, 1.5f, 0.2f))), 1.0f);
-    computeTriangleStats(scene);
-    computeBounds(scene);
+            glm::angleAxis(0.6f, glm::normalize(glm::vec3(1.0f, 1.5f, 0.2f))), glm::vec3(1.0f));
+    finishScene(scene);
     return scene;
 }
 
@@ -225,12 +136,11 @@ Scene instancedCubesScene()
     scene.textures.push_back(checkerTexture(64, 8, {230, 200, 60, 255}, {40, 90, 200, 255}, true));
     scene.materials.push_back(texturedMaterial(0));
     const int32_t cube = addMesh(scene, addCube(scene), 0);
-    addNode(scene, cube, {-0.8f, 0.5f, 0.0f}, glm::angleAxis(0.4f, glm::normalize(glm::vec3(1, 1, 0))), 0.7f);
-    addNode(scene, cube, {0.8f, 0.5f, -0.3f}, glm::angleAxis(1.1f, glm::normalize(glm::vec3(0, 1, 1))), 0.9f);
-    addNode(scene, cube, {-0.7f, -0.6f, 0.3f}, glm::angleAxis(2.0f, glm::normalize(glm::vec3(1, 0, 1))), 0.5f);
-    addNode(scene, cube, {0.6f, -0.6f, 0.2f}, glm::angleAxis(0.8f, glm::normalize(glm::vec3(-1, 2, 1))), 1.2f);
-    computeTriangleStats(scene);
-    computeBounds(scene);
+    addNode(scene, cube, {-0.8f, 0.5f, 0.0f}, glm::angleAxis(0.4f, glm::normalize(glm::vec3(1, 1, 0))), glm::vec3(0.7f));
+    addNode(scene, cube, {0.8f, 0.5f, -0.3f}, glm::angleAxis(1.1f, glm::normalize(glm::vec3(0, 1, 1))), glm::vec3(0.9f));
+    addNode(scene, cube, {-0.7f, -0.6f, 0.3f}, glm::angleAxis(2.0f, glm::normalize(glm::vec3(1, 0, 1))), glm::vec3(0.5f));
+    addNode(scene, cube, {0.6f, -0.6f, 0.2f}, glm::angleAxis(0.8f, glm::normalize(glm::vec3(-1, 2, 1))), glm::vec3(1.2f));
+    finishScene(scene);
     return scene;
 }
 
@@ -244,7 +154,7 @@ Scene untexturedMaterialsScene()
     scene.materials[0].metallicFactor = 0.7f;
     scene.materials[0].roughnessFactor = 0.3f;
     scene.textures.clear();
-    computeTriangleStats(scene);
+    bake::computeTriangleStats(scene);
     return scene;
 }
 
@@ -255,9 +165,8 @@ Scene texturedQuadScene(Texture texture)
     scene.textures.push_back(std::move(texture));
     scene.materials.push_back(texturedMaterial(0));
     const int32_t quad = addMesh(scene, addGrid(scene, 0.5f, 4, 1.0f), 0);
-    addNode(scene, quad, glm::vec3(0.0f), glm::quat(1, 0, 0, 0), 1.0f);
-    computeTriangleStats(scene);
-    computeBounds(scene);
+    addNode(scene, quad, glm::vec3(0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f));
+    finishScene(scene);
     return scene;
 }
 
@@ -557,7 +466,7 @@ Scene texturedMixedScene()
 {
     Scene scene = cubeAndSphereScene();
     scene.textures[0] = checkerTexture(128, 32, {230, 200, 60, 255}, {40, 60, 160, 255}, true);
-    computeTriangleStats(scene);
+    bake::computeTriangleStats(scene);
     return scene;
 }
 

@@ -1,5 +1,7 @@
 #include "test_scenes.h"
 
+#include "bake.h"
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -11,27 +13,10 @@ namespace lfd::test {
 namespace {
 
 // Appends a mesh of one primitive and a node instancing it.
-void addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material, const glm::vec3& t,
-             const glm::quat& r, const glm::vec3& s)
+void addInstancedMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material, const glm::vec3& t,
+                      const glm::quat& r, const glm::vec3& s)
 {
-    Primitive prim;
-    prim.firstIndex = uint32_t(scene.indices.size());
-    prim.indexCount = uint32_t(indices.size());
-    prim.material = material;
-    scene.indices.insert(scene.indices.end(), indices.begin(), indices.end());
-    Mesh mesh;
-    mesh.name = "mesh" + std::to_string(scene.meshes.size());
-    mesh.firstPrimitive = uint32_t(scene.primitives.size());
-    mesh.primitiveCount = 1;
-    scene.primitives.push_back(prim);
-    Node node;
-    node.name = "node" + std::to_string(scene.nodes.size());
-    node.mesh = int32_t(scene.meshes.size());
-    node.translation = t;
-    node.rotation = r;
-    node.scale = s;
-    scene.meshes.push_back(mesh);
-    scene.nodes.push_back(node);
+    addNode(scene, addMesh(scene, indices, material), t, r, s);
 }
 
 // Cube of half size 0.5 with per-face normals, uvs (0..2 per face) and tangents.
@@ -85,45 +70,40 @@ std::vector<uint32_t> addSphere(Scene& scene, float radius, uint32_t slices, uin
     return indices;
 }
 
-// Bounds: AABB and bounding sphere over all node-transformed positions (no animation).
-void computeBounds(Scene& scene)
-{
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    std::vector<glm::vec3> points;
-    for (const Node& node : scene.nodes) {
-        const Mesh& mesh = scene.meshes[size_t(node.mesh)];
-        for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p) {
-            const Primitive& prim = scene.primitives[p];
-            for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; ++i) {
-                const glm::vec3 q = node.translation +
-                                    node.rotation * (node.scale * scene.vertices.positions[scene.indices[i]]);
-                lo = glm::min(lo, q);
-                hi = glm::max(hi, q);
-                points.push_back(q);
-            }
-        }
-    }
-    scene.bounds.min = lo;
-    scene.bounds.max = hi;
-    scene.bounds.center = 0.5f * (lo + hi);
-    float r = 0.0f;
-    for (const glm::vec3& q : points)
-        r = std::max(r, glm::length(q - scene.bounds.center));
-    scene.bounds.radius = r;
-}
-
-void fillTriangleStats(Scene& scene)
-{
-    scene.triangleStats.assign(scene.indices.size() / 3, TriangleStats{});
-    for (size_t t = 0; t < scene.triangleStats.size(); ++t) {
-        const glm::vec3& a = scene.vertices.positions[scene.indices[3 * t]];
-        const glm::vec3& b = scene.vertices.positions[scene.indices[3 * t + 1]];
-        const glm::vec3& c = scene.vertices.positions[scene.indices[3 * t + 2]];
-        scene.triangleStats[t].areaWorld = 0.5f * glm::length(glm::cross(b - a, c - a));
-    }
-}
-
 } // namespace
+
+int32_t addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material)
+{
+    Primitive prim;
+    prim.firstIndex = uint32_t(scene.indices.size());
+    prim.indexCount = uint32_t(indices.size());
+    prim.material = material;
+    scene.indices.insert(scene.indices.end(), indices.begin(), indices.end());
+    Mesh mesh;
+    mesh.name = "mesh" + std::to_string(scene.meshes.size());
+    mesh.firstPrimitive = uint32_t(scene.primitives.size());
+    mesh.primitiveCount = 1;
+    scene.primitives.push_back(prim);
+    scene.meshes.push_back(mesh);
+    return int32_t(scene.meshes.size() - 1);
+}
+
+void addNode(Scene& scene, int32_t mesh, const glm::vec3& t, const glm::quat& r, const glm::vec3& s)
+{
+    Node node;
+    node.name = "node" + std::to_string(scene.nodes.size());
+    node.mesh = mesh;
+    node.translation = t;
+    node.rotation = r;
+    node.scale = s;
+    scene.nodes.push_back(node);
+}
+
+void finishScene(Scene& scene)
+{
+    bake::computeTriangleStats(scene);
+    scene.bounds = bake::computeBounds(scene);
+}
 
 Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec4 b, bool srgb)
 {
@@ -182,13 +162,12 @@ Scene cubeAndSphereScene()
 
     const std::vector<uint32_t> cubeIndices = addCube(scene);
     const std::vector<uint32_t> sphereIndices = addSphere(scene, 0.5f, 24, 16);
-    addMesh(scene, cubeIndices, 0, {-0.6f, 0.0f, 0.0f},
+    addInstancedMesh(scene, cubeIndices, 0, {-0.6f, 0.0f, 0.0f},
             glm::angleAxis(0.5f, glm::normalize(glm::vec3(1.0f, 1.0f, 0.0f))), glm::vec3(1.0f));
-    addMesh(scene, sphereIndices, 1, {0.7f, 0.05f, -0.1f}, glm::quat(1, 0, 0, 0), glm::vec3(0.9f));
+    addInstancedMesh(scene, sphereIndices, 1, {0.7f, 0.05f, -0.1f}, glm::quat(1, 0, 0, 0), glm::vec3(0.9f));
     // A small default-material box in front: material -1 must render with glTF defaults.
-    addMesh(scene, cubeIndices, kNone, {0.1f, -0.45f, 0.55f}, glm::quat(1, 0, 0, 0), glm::vec3(0.25f));
-    fillTriangleStats(scene);
-    computeBounds(scene);
+    addInstancedMesh(scene, cubeIndices, kNone, {0.1f, -0.45f, 0.55f}, glm::quat(1, 0, 0, 0), glm::vec3(0.25f));
+    finishScene(scene);
     return scene;
 }
 
@@ -196,10 +175,9 @@ Scene positionsOnlyScene()
 {
     Scene scene;
     scene.vertices.positions = {{-0.5f, -0.4f, 0.3f}, {0.5f, -0.4f, 0.3f}, {0.0f, -0.4f, -0.5f}, {0.0f, 0.5f, 0.0f}};
-    addMesh(scene, {0, 1, 3, 1, 2, 3, 2, 0, 3, 0, 2, 1}, kNone, glm::vec3(0.0f), glm::quat(1, 0, 0, 0),
+    addInstancedMesh(scene, {0, 1, 3, 1, 2, 3, 2, 0, 3, 0, 2, 1}, kNone, glm::vec3(0.0f), glm::quat(1, 0, 0, 0),
             glm::vec3(1.0f));
-    fillTriangleStats(scene);
-    computeBounds(scene);
+    finishScene(scene);
     return scene;
 }
 
@@ -226,10 +204,10 @@ EmissiveQuads emissiveQuadsScene(float radius, float zBack)
             scene.vertices.positions.push_back(glm::vec3(h * c, 0.0f));
             scene.vertices.normals.push_back({0.0f, 0.0f, 1.0f});
         }
-        addMesh(scene, {base, base + 1, base + 2, base, base + 2, base + 3}, k,
+        addInstancedMesh(scene, {base, base + 1, base + 2, base, base + 2, base + 3}, k,
                 k == 0 ? q.frontCenter : q.backCenter, glm::quat(1, 0, 0, 0), glm::vec3(1.0f));
     }
-    fillTriangleStats(scene);
+    bake::computeTriangleStats(scene);
     scene.bounds.min = glm::vec3(-radius);
     scene.bounds.max = glm::vec3(radius);
     scene.bounds.center = glm::vec3(0.0f);

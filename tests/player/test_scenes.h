@@ -4,8 +4,19 @@
 #include "lfd/scene.h"
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <vector>
 
 namespace lfd::test {
+
+// Appends a mesh of one primitive (indices absolute into scene.vertices); returns its index.
+int32_t addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material);
+// Appends a node instancing `mesh` with local transform T * R * S.
+void addNode(Scene& scene, int32_t mesh, const glm::vec3& t, const glm::quat& r, const glm::vec3& s);
+// What the baker computes for a finished scene: per-triangle statistics (texture sizes
+// must be set) and bounds, with the baker's own stages.
+void finishScene(Scene& scene);
 
 // RGBA8 checker texture (squares of `square` texels) with its full box-filtered mip chain.
 Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec4 b, bool srgb);
