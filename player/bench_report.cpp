@@ -113,7 +113,8 @@ std::string benchTable(const BenchReport& report)
     const DisplayProfile& p = report.profile;
     std::ostringstream s;
     s << "GL: " << report.gl << "\n";
-    s << "pack: " << report.packName << ", " << report.triangles << " triangles; display: " << p.name
+    s << "pack: " << report.packName << ", " << report.triangles << " triangles (" << report.drawnTriangles
+      << " drawn per frame); display: " << p.name
       << ", " << p.viewCount << " views of " << p.viewWidth << "x" << p.viewHeight << ", panel "
       << p.panelWidth << "x" << p.panelHeight << "\n";
     s << "frames: " << o.warmup << " warm-up + " << o.frames << " timed (frame k at k/" << o.fps
@@ -180,6 +181,7 @@ nlohmann::json benchJson(const BenchReport& report)
     j["gl"] = report.gl;
     j["pack"] = report.packName;
     j["triangles"] = report.triangles;
+    j["drawn_triangles"] = report.drawnTriangles;
     j["scene_gpu_bytes"] = report.sceneGpuBytes;
     j["profile"] = {{"name", p.name},           {"views", p.viewCount},
                     {"view_width", p.viewWidth}, {"view_height", p.viewHeight},

@@ -174,6 +174,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     report.packName = packName;
     report.profile = profile;
     report.triangles = scene.triangleCount();
+    report.drawnTriangles = scene.drawnTriangleCount();
 
     // Step 1: upload once; framing as the baker assumed it (its fill), as lfd-play does.
     const double fill = scene.settings.framingFill > 0.0f ? double(scene.settings.framingFill) : 1.0;

@@ -62,6 +62,7 @@ struct BenchReport {
     std::string packName;
     DisplayProfile profile;
     uint64_t triangles = 0;
+    uint64_t drawnTriangles = 0; // with every node instance counted
     uint64_t sceneGpuBytes = 0;
     std::vector<RendererResult> results; // in options.renderers order, reference last if untimed
 

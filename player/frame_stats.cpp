@@ -26,6 +26,7 @@ nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageT
     j["view_buffer_bytes"] = info.viewBufferBytes;
     j["scene_gpu_bytes"] = info.sceneGpuBytes;
     j["triangles"] = info.triangles;
+    j["drawn_triangles"] = info.drawnTriangles;
 
     // Means at the top level (the numbers a reader wants first), details under "stages".
     nlohmann::json detail = nlohmann::json::object();

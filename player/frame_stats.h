@@ -21,13 +21,13 @@ struct RunInfo {
     std::string renderer, gpu, profile, pack, reconstruction;
     uint32_t views = 0, viewWidth = 0, viewHeight = 0, frames = 0;
     uint32_t panelWidth = 0, panelHeight = 0;
-    uint64_t viewBufferBytes = 0, sceneGpuBytes = 0, triangles = 0;
+    uint64_t viewBufferBytes = 0, sceneGpuBytes = 0, triangles = 0, drawnTriangles = 0;
     std::vector<std::pair<std::string, double>> extra; // Renderer::extraStats()
 };
 
 // Keys: renderer, views, view_width, view_height, frames, gpu, <stage>_ms (means) for
 // every stage (view_generation_ms, eia_ms, total_ms at least), stages {name: {mean,
-// median, min, max, samples}}, view_buffer_bytes, scene_gpu_bytes, triangles,
+// median, min, max, samples}}, view_buffer_bytes, scene_gpu_bytes, triangles, drawn_triangles,
 // panel_width, panel_height, profile, pack, reconstruction, and the extra stats.
 nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageTimes>& stages);
 // "frame,stage,ms" header, then one row per recorded sample.

@@ -65,6 +65,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
     context->require(options.renderer == "mvr-layered");
 
     const uint64_t triangles = scene.triangleCount();
+    const uint64_t drawnTriangles = scene.drawnTriangleCount();
     PlayerSession session(options, profile, std::move(scene), packName);
 
     // Render F frames of the rotating scene; read the outputs back right after frame K.
@@ -107,6 +108,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
             info.viewBufferBytes = session.targets().bytes();
             info.sceneGpuBytes = session.scene().gpuBytes();
             info.triangles = triangles;
+            info.drawnTriangles = drawnTriangles;
             info.extra = session.renderer().extraStats();
             writeStats(options.statsOut, info, stages);
             written.push_back(options.statsOut);

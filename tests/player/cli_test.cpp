@@ -140,8 +140,11 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
     const nlohmann::json stats = nlohmann::json::parse(readText(out / "stats.json"));
     for (const char* key : {"renderer", "views", "view_width", "view_height", "frames", "gpu", "view_generation_ms",
                             "eia_ms", "total_ms", "stages", "view_buffer_bytes", "panel_width", "panel_height",
-                            "profile", "pack"})
+                            "profile", "pack", "triangles", "drawn_triangles"})
         EXPECT_TRUE(stats.contains(key)) << key;
+    // cubeAndSphereScene draws each of its meshes once: 2 cubes of 12 + a 24x16 sphere.
+    EXPECT_EQ(stats["triangles"].get<uint64_t>(), 2u * 12u + 2u * 24u * 16u);
+    EXPECT_EQ(stats["drawn_triangles"].get<uint64_t>(), stats["triangles"].get<uint64_t>());
     EXPECT_EQ(stats["renderer"], "mvr");
     EXPECT_EQ(stats["views"], 4);
     EXPECT_EQ(stats["view_width"], 96);

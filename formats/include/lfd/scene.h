@@ -179,6 +179,19 @@ struct Scene {
     BakeSettings settings;
 
     size_t triangleCount() const { return indices.size() / 3; }
+    // Triangles drawn per frame: every node instance of a mesh counts its triangles.
+    size_t drawnTriangleCount() const
+    {
+        size_t drawn = 0;
+        for (const Node& node : nodes) {
+            if (node.mesh < 0 || size_t(node.mesh) >= meshes.size())
+                continue;
+            const Mesh& mesh = meshes[size_t(node.mesh)];
+            for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount && p < primitives.size(); ++p)
+                drawn += primitives[p].indexCount / 3;
+        }
+        return drawn;
+    }
 };
 
 } // namespace lfd
