@@ -120,13 +120,17 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
     }
 
     std::string summary;
-    for (const char* stage : {"view_generation", "eia", "total"})
+    // Pipeline order; a renderer's other stages (e.g. lfdpr's point_generation, resolve).
+    for (const char* stage : {"point_generation", "view_generation", "resolve", "eia", "total"})
         if (auto it = stages.find(stage); it != stages.end()) {
             char part[96];
             std::snprintf(part, sizeof(part), "%s%s %.2f ms", summary.empty() ? "" : ", ", stage,
                           it->second.mean());
             summary += part;
         }
+    for (const auto& [name, value] : session.renderer().extraStats())
+        if (name == "points")
+            summary += ", " + std::to_string(uint64_t(value)) + " points";
     std::printf("lfd-play: %s, %u views of %ux%u, %u frame(s), mean GPU time: %s\n",
                 session.renderer().name().c_str(), profile.viewCount, profile.viewWidth,
                 profile.viewHeight, options.frames, summary.c_str());
