@@ -1,5 +1,6 @@
 #include "render_test_util.h"
 
+#include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "renderer.h"
@@ -9,6 +10,7 @@
 
 #include <epoxy/gl.h>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace lfd::test {
@@ -39,6 +41,44 @@ RenderedViews renderScene(const Scene& scene, const std::string& rendererName,
 DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height)
 {
     return withViews(prototypeDisplayProfile(), views, width, height);
+}
+
+std::vector<uint8_t> coverageMask(const player::Image& image)
+{
+    const uint8_t bg = uint8_t(std::lround(player::kBackground[0] * 255.0f));
+    std::vector<uint8_t> mask(size_t(image.width) * image.height);
+    for (size_t i = 0; i < mask.size(); ++i) {
+        const uint8_t* p = &image.pixels[i * 4];
+        mask[i] = p[0] != bg || p[1] != bg || p[2] != bg;
+    }
+    return mask;
+}
+
+CoverageStats compareCoverage(const player::Image& reference, const player::Image& test)
+{
+    const std::vector<uint8_t> m = coverageMask(reference), l = coverageMask(test);
+    const int W = int(reference.width), H = int(reference.height);
+    auto at = [&](int x, int y) { return x < 0 || y < 0 || x >= W || y >= H ? uint8_t(0) : m[size_t(y) * W + x]; };
+    CoverageStats s;
+    for (int y = 0; y < H; ++y)
+        for (int x = 0; x < W; ++x) {
+            const uint8_t self = at(x, y);
+            bool nearBoundary = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    nearBoundary = nearBoundary || at(x + dx, y + dy) != self;
+            const bool testCovers = l[size_t(y) * W + x] != 0;
+            if (self) {
+                ++s.covered;
+                if (!nearBoundary) {
+                    ++s.interior;
+                    s.holes += !testCovers;
+                }
+            } else if (!nearBoundary && testCovers) {
+                ++s.extra;
+            }
+        }
+    return s;
 }
 
 } // namespace lfd::test

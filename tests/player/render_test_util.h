@@ -24,4 +24,32 @@ RenderedViews renderScene(const Scene& scene, const std::string& renderer,
 // The prototype profile with small views, for fast tests.
 DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height);
 
+// ---- Coverage of one renderer against a reference (lfdpr against mvr) ----------------
+
+// 1 where a pixel is covered: its colour differs from the renderers' clear colour
+// (player::kBackground, written as is: 0.05 -> 13).
+std::vector<uint8_t> coverageMask(const player::Image& image);
+
+struct CoverageStats {
+    size_t covered = 0;  // pixels the reference covers
+    size_t interior = 0; // of those, farther than 1 px from the reference's coverage boundary
+    size_t holes = 0;    // interior pixels the test image leaves empty
+    size_t extra = 0;    // pixels the test image covers that the reference does not, farther than 1 px from it
+    double holeRate() const { return covered ? double(holes) / double(covered) : 0.0; }
+    double extraRate() const { return covered ? double(extra) / double(covered) : 0.0; }
+    CoverageStats& operator+=(const CoverageStats& o)
+    {
+        covered += o.covered;
+        interior += o.interior;
+        holes += o.holes;
+        extra += o.extra;
+        return *this;
+    }
+};
+
+// Silhouette band: a pixel is "near the boundary" if any pixel of its 3 x 3
+// neighbourhood has the other coverage state in the reference image (image edges count as
+// empty); holes and extra coverage are only counted outside that band.
+CoverageStats compareCoverage(const player::Image& reference, const player::Image& test);
+
 } // namespace lfd::test

@@ -5,6 +5,7 @@
 // minified high-frequency texture against a supersampled reference.
 // Every test prints its numbers ("[ numbers  ] ...") so they can be quoted.
 #include "gl_test_support.h"
+#include "render_test_util.h"
 #include "test_scenes.h"
 
 #include "bake.h"
@@ -226,68 +227,9 @@ uint64_t lfdprPoints(const player::LfdprOptions& options, const Scene& scene, co
 
 // ---- Coverage -------------------------------------------------------------------------
 
-// Background: the colour of a pixel nothing covers (the corners; scenes are fitted inside
-// a circle of the screen height, so the corners of a 4:3 view are always empty).
-std::vector<uint8_t> coverageMask(const Image& image)
-{
-    const uint8_t* bg = &image.pixels[0];
-    std::vector<uint8_t> mask(size_t(image.width) * image.height);
-    for (size_t i = 0; i < mask.size(); ++i) {
-        const uint8_t* p = &image.pixels[i * 4];
-        mask[i] = p[0] != bg[0] || p[1] != bg[1] || p[2] != bg[2];
-    }
-    return mask;
-}
-
-struct CoverageStats {
-    size_t covered = 0;  // pixels mvr covers
-    size_t interior = 0; // of those, farther than 1 px from mvr's coverage boundary
-    size_t holes = 0;    // interior pixels lfdpr leaves empty
-    size_t extra = 0;    // pixels lfdpr covers that mvr does not, farther than 1 px from it
-    double holeRate() const { return covered ? double(holes) / double(covered) : 0.0; }
-    double extraRate() const { return covered ? double(extra) / double(covered) : 0.0; }
-    CoverageStats& operator+=(const CoverageStats& o)
-    {
-        covered += o.covered;
-        interior += o.interior;
-        holes += o.holes;
-        extra += o.extra;
-        return *this;
-    }
-};
-
-// Silhouette band: a pixel is "near the boundary" if any pixel of its 3 x 3
-// neighbourhood has the other coverage state in mvr's image (image edges count as empty).
-CoverageStats compareCoverage(const Image& mvr, const Image& lfdpr)
-{
-    const std::vector<uint8_t> m = coverageMask(mvr), l = coverageMask(lfdpr);
-    const int W = int(mvr.width), H = int(mvr.height);
-    auto at = [&](int x, int y) { return x < 0 || y < 0 || x >= W || y >= H ? uint8_t(0) : m[size_t(y) * W + x]; };
-    CoverageStats s;
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-            const uint8_t self = at(x, y);
-            bool nearBoundary = false;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                    nearBoundary = nearBoundary || at(x + dx, y + dy) != self;
-            const bool lfdprCovers = l[size_t(y) * W + x] != 0;
-            if (self) {
-                ++s.covered;
-                if (!nearBoundary) {
-                    ++s.interior;
-                    s.holes += !lfdprCovers;
-                }
-            } else if (!nearBoundary && lfdprCovers) {
-                ++s.extra;
-            }
-        }
-    return s;
-}
-
 class RendererComparisonTest : public GlTest {};
 
-// Both renderers clear to the same background (coverage masks are taken per image).
+// Both renderers clear to the same background (the one coverageMask looks for).
 void expectSameBackground(const Image& a, const Image& reference, const std::string& what)
 {
     EXPECT_TRUE(std::equal(a.pixels.begin(), a.pixels.begin() + 3, reference.pixels.begin()))
