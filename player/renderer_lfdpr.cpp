@@ -45,8 +45,14 @@ public:
     explicit LfdprRendererImpl(const LfdprOptions& options)
         : options_(options), views_(chooseInt64(options.atomics))
     {
-        pointCapacity_ = std::max<uint32_t>(options.initialPointCapacity, 1);
         pointBytes_ = uint32_t(define("LFDPR_POINT_BYTES"));
+        // The largest point buffer one SSBO binding can address, and the user's cap.
+        GLint64 maxBlockBytes = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
+        maxPointCapacity_ = uint32_t(std::min<uint64_t>(
+            std::max<uint32_t>(options.maxPointCapacity, 1),
+            std::max<uint64_t>(uint64_t(std::max<GLint64>(maxBlockBytes, 0)) / pointBytes_, 1)));
+        pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
         points_ = makeBuffer(size_t(pointCapacity_) * pointBytes_);
         counters_ = makeBuffer(size_t(define("LFDPR_COUNTER_BYTES")), GL_DYNAMIC_STORAGE_BIT);
         frameUbo_ = makeBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
@@ -209,7 +215,7 @@ private:
         info_.overflowed = c[0] > pointCapacity_;
         if (info_.overflowed) {
             ++info_.overflowFrames;
-            nextCapacity_ = uint32_t(std::min<double>(std::ceil(double(c[0]) * 1.25), 4294967295.0));
+            nextCapacity_ = uint32_t(std::min<double>(std::ceil(double(c[0]) * 1.25), double(maxPointCapacity_)));
         }
         info_.pointBufferBytes = uint64_t(pointCapacity_) * pointBytes_;
         info_.viewBufferBytes = views_.viewBufferBytes();
@@ -221,7 +227,7 @@ private:
     LfdprPointGeneration pointGeneration_;
     LfdprViewGeneration views_;
     unsigned points_ = 0, counters_ = 0, frameUbo_ = 0, records_ = 0, sampling_ = 0, viewInverse_ = 0;
-    uint32_t pointCapacity_ = 0, nextCapacity_ = 0, pointBytes_ = 0;
+    uint32_t pointCapacity_ = 0, nextCapacity_ = 0, pointBytes_ = 0, maxPointCapacity_ = 0;
     uint64_t recordCapacity_ = 0, trianglesCoarsened_ = 0;
     size_t viewInverseCapacity_ = 0;
 };

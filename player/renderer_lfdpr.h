@@ -35,6 +35,10 @@ struct LfdprOptions {
     enum class Atomics { Auto, Int64, TwoPass32 } atomics = Atomics::Auto;
     // Points the buffer holds initially; it grows (needed * 1.25) after an overflow.
     uint32_t initialPointCapacity = 1u << 20;
+    // Upper bound of that growth (also capped by GL_MAX_SHADER_STORAGE_BLOCK_SIZE): past
+    // it every frame stores what fits, is flagged as overflowed and renders partially,
+    // rather than asking the driver for an unbounded allocation. 2^26 points = 3 GiB.
+    uint32_t maxPointCapacity = 1u << 26;
 };
 
 // Introspection for tests and the benchmark (values of the most recent render()).

@@ -280,6 +280,30 @@ TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }
 
+TEST_F(LfdprRendererTest, PointBufferGrowthStopsAtItsCap)
+{
+    const Scene scene = cubeAndSphereScene();
+    const DisplayProfile profile = smallProfile(4, 96, 72);
+    auto renderer = player::createLfdprRenderer({.initialPointCapacity = 16, .maxPointCapacity = 64});
+    player::GpuScene gpu(scene);
+    const player::FrameSetup frame = player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds), 0.0, 0.0);
+    player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
+    player::GpuTimer timer;
+    // The scene needs thousands of points: every frame overflows, the buffer grows to the
+    // cap and no further, only what fits is stored and the frames still render.
+    for (uint32_t f = 1; f <= 3; ++f) {
+        renderer->render(gpu, frame, targets, timer);
+        const player::LfdprFrameInfo info = renderer->lastFrame();
+        EXPECT_TRUE(info.overflowed) << "frame " << f;
+        EXPECT_GT(info.points, 64u);
+        EXPECT_EQ(info.pointCapacity, f == 1 ? 16u : 64u) << "frame " << f;
+        EXPECT_EQ(info.pointsStored, info.pointCapacity);
+        EXPECT_EQ(info.overflowFrames, f);
+    }
+    timer.finish();
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 TEST_F(LfdprRendererTest, AblationSwitchesMoveThePointCount)
 {
     const DisplayProfile profile = smallProfile(4, 160, 120);
