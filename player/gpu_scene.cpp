@@ -164,4 +164,18 @@ unsigned GpuScene::texture(int32_t index) const
     return textures_[size_t(index)];
 }
 
+void GpuScene::bindMaterialTextures(int32_t material) const
+{
+    const Material* m = material == kNone ? nullptr : &scene_.materials[size_t(material)];
+    const GLuint units[5] = {m ? texture(m->baseColorTexture) : 0, m ? texture(m->metallicRoughnessTexture) : 0,
+                             m ? texture(m->normalTexture) : 0, m ? texture(m->occlusionTexture) : 0,
+                             m ? texture(m->emissiveTexture) : 0};
+    glBindTextures(bindings::kUnitBaseColor, 5, units);
+}
+
+uint32_t GpuScene::gpuMaterialIndex(int32_t material) const
+{
+    return material == kNone ? uint32_t(scene_.materials.size()) : uint32_t(material);
+}
+
 } // namespace lfd::player

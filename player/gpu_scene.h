@@ -36,6 +36,11 @@ public:
     unsigned vertexArray() const { return vao_; }
     unsigned indexBuffer() const { return ibo_; }
     unsigned texture(int32_t index) const; // 0 for kNone
+    // Binds the material's five textures to their units (LFD_UNIT_*; absent ones as 0, the
+    // shaders branch on the material flags). material = kNone: the default material.
+    void bindMaterialTextures(int32_t material) const;
+    // Index of `material` in the materials SSBO (kNone: the default material, stored last).
+    uint32_t gpuMaterialIndex(int32_t material) const;
     unsigned materialBuffer() const { return materialSsbo_; }
     unsigned triangleStatsBuffer() const { return statsSsbo_; }
     unsigned nodeTransformBuffer() const { return nodeSsbo_; }

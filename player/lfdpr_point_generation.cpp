@@ -146,22 +146,13 @@ void LfdprPointGeneration::run(const GpuScene& scene) const
     glBindVertexArray(scene.vertexArray());
     glProgramUniform1ui(program_, bindings::kLocStreams, scene.cpu().vertices.mask());
 
-    const Scene& cpu = scene.cpu();
-    const uint32_t defaultMaterial = uint32_t(cpu.materials.size());
     uint32_t recordBase = 0;
     for (const DrawItem& draw : scene.draws()) {
-        const Material* material = draw.material == kNone ? nullptr : &cpu.materials[size_t(draw.material)];
         glProgramUniform1ui(program_, bindings::kLocNode, draw.node);
-        glProgramUniform1ui(program_, bindings::kLocMaterial, material ? uint32_t(draw.material) : defaultMaterial);
+        glProgramUniform1ui(program_, bindings::kLocMaterial, scene.gpuMaterialIndex(draw.material));
         glProgramUniform1ui(program_, locRecordBase, recordBase);
         glProgramUniform1ui(program_, locFirstTriangle, draw.firstIndex / 3);
-        const GLuint textures[5] = {
-            material ? scene.texture(material->baseColorTexture) : 0,
-            material ? scene.texture(material->metallicRoughnessTexture) : 0,
-            material ? scene.texture(material->normalTexture) : 0,
-            material ? scene.texture(material->occlusionTexture) : 0,
-            material ? scene.texture(material->emissiveTexture) : 0};
-        glBindTextures(bindings::kUnitBaseColor, 5, textures);
+        scene.bindMaterialTextures(draw.material);
         glDrawElements(GL_TRIANGLES, GLsizei(draw.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(size_t(draw.firstIndex) * sizeof(uint32_t)));
         recordBase += draw.indexCount / 3;

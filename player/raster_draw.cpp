@@ -38,22 +38,12 @@ void RasterDraw::beginFrame(const GpuScene& scene, const FrameSetup& frame)
 void RasterDraw::drawScene(const GpuScene& scene, unsigned instances) const
 {
     const Scene& cpu = scene.cpu();
-    const uint32_t defaultMaterial = uint32_t(cpu.materials.size());
     for (const DrawItem& draw : scene.draws()) {
         const Material* material =
             draw.material == kNone ? nullptr : &cpu.materials[size_t(draw.material)];
         glProgramUniform1ui(program_, bindings::kLocNode, draw.node);
-        glProgramUniform1ui(program_, bindings::kLocMaterial,
-                            material ? uint32_t(draw.material) : defaultMaterial);
-
-        // Textures: absent ones stay unbound (0); the shader branches on the material flags.
-        const GLuint textures[5] = {
-            material ? scene.texture(material->baseColorTexture) : 0,
-            material ? scene.texture(material->metallicRoughnessTexture) : 0,
-            material ? scene.texture(material->normalTexture) : 0,
-            material ? scene.texture(material->occlusionTexture) : 0,
-            material ? scene.texture(material->emissiveTexture) : 0};
-        glBindTextures(bindings::kUnitBaseColor, 5, textures);
+        glProgramUniform1ui(program_, bindings::kLocMaterial, scene.gpuMaterialIndex(draw.material));
+        scene.bindMaterialTextures(draw.material);
 
         // Culling: glTF single-sided materials cull back faces, double-sided ones draw both
         // (the shader flips the normal). A mirroring node transform flips the winding.

@@ -81,4 +81,20 @@ CoverageStats compareCoverage(const player::Image& reference, const player::Imag
     return s;
 }
 
+player::Image boxDownsample(const player::Image& image, uint32_t factor)
+{
+    player::Image out{image.width / factor, image.height / factor, 4, {}};
+    out.pixels.resize(size_t(out.width) * out.height * 4);
+    for (uint32_t y = 0; y < out.height; ++y)
+        for (uint32_t x = 0; x < out.width; ++x)
+            for (uint32_t c = 0; c < 4; ++c) {
+                uint32_t sum = 0;
+                for (uint32_t dy = 0; dy < factor; ++dy)
+                    for (uint32_t dx = 0; dx < factor; ++dx)
+                        sum += image.pixels[((size_t(y * factor + dy) * image.width) + x * factor + dx) * 4 + c];
+                out.pixels[(size_t(y) * out.width + x) * 4 + c] = uint8_t((sum + factor * factor / 2) / (factor * factor));
+            }
+    return out;
+}
+
 } // namespace lfd::test

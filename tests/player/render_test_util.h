@@ -24,6 +24,9 @@ RenderedViews renderScene(const Scene& scene, const std::string& renderer,
 // The prototype profile with small views, for fast tests.
 DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height);
 
+// factor x factor box filter of RGBA8 bytes (downsamples a supersampled reference render).
+player::Image boxDownsample(const player::Image& image, uint32_t factor);
+
 // ---- Coverage of one renderer against a reference (lfdpr against mvr) ----------------
 
 // 1 where a pixel is covered: its colour differs from the renderers' clear colour
