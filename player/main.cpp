@@ -145,7 +145,8 @@ int main(int argc, char** argv)
     CLI::App app{"lfd-play: render a packed scene (.lfdpack) as light field views and the "
                  "panel's elemental image array (EIA)"};
     app.footer("Window keys: R renderer, C reconstruction, O output (EIA, quilt, single view, "
-               "simulated viewer), space pause/resume, Left/Right move the viewer, Esc quit.");
+               "simulated viewer), space pause/resume, Left/Right move the viewer, Esc quit. "
+               "Mouse: wheel moves the viewer, left click cycles the output.");
     std::string pack, viewSize, windowSize, renderers;
     for (const std::string& name : lfd::player::rendererNames())
         renderers += (renderers.empty() ? "" : "|") + name;

@@ -29,7 +29,7 @@ const char* shownName(Shown s)
     return "";
 }
 
-// Keyboard state shared with the GLFW callback.
+// Keyboard and mouse state shared with the GLFW callbacks.
 struct Input {
     bool nextRenderer = false, nextReconstruction = false, nextOutput = false;
     bool paused = false;
@@ -51,6 +51,22 @@ void onKey(GLFWwindow* window, int key, int, int action, int)
     case GLFW_KEY_RIGHT: ++input->viewerStep; break;
     default: break;
     }
+}
+
+// Mouse: the wheel (either axis) moves the simulated viewer like Left/Right; a left click
+// cycles the displayed output like O.
+void onScroll(GLFWwindow* window, double xoffset, double yoffset)
+{
+    auto* input = static_cast<Input*>(glfwGetWindowUserPointer(window));
+    const double step = std::abs(xoffset) > std::abs(yoffset) ? xoffset : yoffset;
+    input->viewerStep += step > 0.0 ? 1 : (step < 0.0 ? -1 : 0);
+}
+
+void onMouseButton(GLFWwindow* window, int button, int action, int)
+{
+    auto* input = static_cast<Input*>(glfwGetWindowUserPointer(window));
+    if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS)
+        input->nextOutput = true;
 }
 
 // A 2D RGBA8 texture plus a read framebuffer on it, (re)allocated on size changes.
@@ -136,6 +152,8 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
     Input input;
     glfwSetWindowUserPointer(window, &input);
     glfwSetKeyCallback(window, onKey);
+    glfwSetScrollCallback(window, onScroll);
+    glfwSetMouseButtonCallback(window, onMouseButton);
 
     BlitSource quilt, viewer;
     GLuint layerFbo = 0, eiaFbo = 0;

@@ -117,5 +117,94 @@ TEST(WindowSmoke, RendersEveryOutputAndSavesScreenshotsUnderXvfb)
     }
 }
 
+// Output of a shell command (stdout), trailing newline removed.
+std::string capture(const std::string& command)
+{
+    std::string out;
+    if (FILE* pipe = popen(command.c_str(), "r")) {
+        char buffer[512];
+        while (fgets(buffer, sizeof(buffer), pipe))
+            out += buffer;
+        pclose(pipe);
+    }
+    while (!out.empty() && (out.back() == '\n' || out.back() == '\r'))
+        out.pop_back();
+    return out;
+}
+
+// Interactive controls, driven through the X server with xdotool: the window title reports
+// renderer, reconstruction, displayed output, viewer position and pause state.
+TEST(WindowSmoke, KeysAndMouseSwitchRendererOutputViewerAndPause)
+{
+    const std::string xvfb = findXvfb();
+    if (xvfb.empty() || !fs::exists("/usr/bin/xdotool"))
+        GTEST_SKIP() << "Xvfb or xdotool not installed; interactive controls not tested";
+    const fs::path play = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
+    ASSERT_TRUE(fs::exists(play)) << play << " not built";
+    const fs::path dir = testOutputDir("window_controls");
+    writePack(dir / "scene.lfdpack", cubeAndSphereScene());
+    XvfbServer server(xvfb);
+    ASSERT_FALSE(server.display().empty()) << "could not start Xvfb";
+    const std::string env = "DISPLAY=" + server.display() + " ";
+
+    // Start lfd-play in the background (no --frames: it runs until Esc).
+    const std::string pidFile = (dir / "play.pid").string();
+    const std::string start = env + "'" + play.string() + "' '" + (dir / "scene.lfdpack").string() +
+                              "' --views 8 --view-size 64x48 --window-size 320x200 > '" +
+                              (dir / "play.log").string() + "' 2>&1 & echo $! > '" + pidFile + "'";
+    ASSERT_EQ(std::system(start.c_str()), 0);
+    pid_t pid = 0;
+    std::ifstream(pidFile) >> pid;
+    ASSERT_GT(pid, 0);
+
+    std::string window;
+    for (int i = 0; i < 200 && window.empty(); ++i) {
+        window = capture(env + "xdotool search --name '^lfd-play' 2>/dev/null | head -n 1");
+        if (window.empty())
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    ASSERT_FALSE(window.empty()) << "no lfd-play window appeared";
+    // Waits until the title contains `text` (the title is refreshed about twice a second).
+    auto titleContains = [&](const std::string& text) {
+        std::string title;
+        for (int i = 0; i < 150; ++i) {
+            title = capture(env + "xdotool getwindowname " + window);
+            if (title.find(text) != std::string::npos)
+                return title;
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        ADD_FAILURE() << "window title never contained \"" << text << "\"; last: " << title;
+        return title;
+    };
+    auto send = [&](const std::string& what) { std::system((env + "xdotool " + what + " >/dev/null 2>&1").c_str()); };
+
+    titleContains("- mvr - none - EIA");
+    send("key --window " + window + " o");
+    titleContains("- quilt");
+    send("key --window " + window + " r");
+    titleContains("- mvr-layered -");
+    send("click --window " + window + " 1"); // left click: next output (single view)
+    titleContains("single view (viewer 4.0)");
+    send("key --window " + window + " Right Right");
+    titleContains("(viewer 6.0)");
+    send("click --window " + window + " 5"); // wheel down: viewer one step left
+    titleContains("(viewer 5.0)");
+    send("key --window " + window + " space");
+    titleContains("- paused");
+    send("key --window " + window + " Escape");
+
+    // lfd-play was started by a shell that has exited, so it is not our child: poll it.
+    bool quit = false;
+    for (int i = 0; i < 100 && !quit; ++i) {
+        quit = kill(pid, 0) != 0;
+        if (!quit)
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    if (!quit) {
+        kill(pid, SIGTERM);
+        ADD_FAILURE() << "lfd-play did not quit on Escape";
+    }
+}
+
 } // namespace
 } // namespace lfd::test
