@@ -32,8 +32,8 @@ double secondsSince(Clock::time_point start)
 
 int inspect(const std::filesystem::path& path)
 {
-    const PackInfo info = verifyPack(path);
-    const Scene scene = readPack(path);
+    PackInfo info;
+    const Scene scene = readPack(path, &info); // one read: verified, decoded, section table
     printInspectReport(std::cout, path, info, scene);
     return 0;
 }

@@ -45,11 +45,17 @@ Scene readPackFromMemory(const uint8_t* data, size_t size, const std::string& na
     return pack::decodeScene(data, table, name, true);
 }
 
-Scene readPack(const std::filesystem::path& path)
+Scene readPack(const std::filesystem::path& path, PackInfo* info)
 {
     const std::string name = path.string();
     const std::vector<uint8_t> bytes = pack::loadFile(path, name);
-    return readPackFromMemory(bytes.data(), bytes.size(), name);
+    static const uint8_t kEmpty = 0;
+    const uint8_t* data = bytes.empty() ? &kEmpty : bytes.data();
+    pack::SectionTable table = pack::validateStructure(data, bytes.size(), name);
+    Scene scene = pack::decodeScene(data, table, name, true);
+    if (info)
+        *info = std::move(table.info);
+    return scene;
 }
 
 PackInfo verifyPack(const std::filesystem::path& path)

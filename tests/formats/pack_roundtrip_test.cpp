@@ -179,6 +179,17 @@ TEST(PackRoundTrip, VerifyPackReportsTheSectionTable)
     EXPECT_EQ(info.sections[7].count, scene.indices.size());
     EXPECT_EQ(info.sections[8].size, scene.triangleStats.size() * 24);
     EXPECT_EQ(info.sections[19].size, scene.textures[0].texels.size() + scene.textures[1].texels.size());
+
+    // readPack hands out the same table from its one read (lfd-bake --inspect uses it).
+    PackInfo fromRead;
+    expectSameScene(scene, readPack(path, &fromRead));
+    EXPECT_EQ(fromRead.fileSize, info.fileSize);
+    ASSERT_EQ(fromRead.sections.size(), info.sections.size());
+    for (size_t i = 0; i < info.sections.size(); ++i) {
+        EXPECT_EQ(fromRead.sections[i].tag, info.sections[i].tag);
+        EXPECT_EQ(fromRead.sections[i].offset, info.sections[i].offset);
+        EXPECT_EQ(fromRead.sections[i].checksum, info.sections[i].checksum);
+    }
     fs::remove_all(dir);
 }
 

@@ -51,7 +51,8 @@ void writePack(const std::filesystem::path& path, const Scene& scene,
                const TextureProducer& produce = {});
 
 // Reads and fully validates a pack. Throws PackError (one line: "<file>: <problem>").
-Scene readPack(const std::filesystem::path& path);
+// `info`, if given, receives the section table (what verifyPack returns) from the same read.
+Scene readPack(const std::filesystem::path& path, PackInfo* info = nullptr);
 
 // Validates without keeping the scene; returns the section table for reports.
 PackInfo verifyPack(const std::filesystem::path& path);
