@@ -2,6 +2,7 @@
 // real executable; output files, sizes, stats keys; bad input gives one stderr line,
 // a non-zero status and no output files.
 #include "gl_test_support.h"
+#include "render_test_util.h"
 #include "test_scenes.h"
 
 #include "image_output.h"
@@ -23,18 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kPlay = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
-
-// 384x216 panel built like the prototype at a tenth of the size, so EIAs stay small.
-const char* kSmallProfile = R"({
-    "format": "lfd-display-profile/1",
-    "name": "cli-small",
-    "panel_width": 384, "panel_height": 216,
-    "screen_width_mm": 34.54, "screen_height_mm": 19.43,
-    "subpixel_order": "RGB",
-    "lens_width_mm": 0.72, "lens_tilt_deg": -9.66,
-    "view_count": 8, "view_width": 48, "view_height": 36,
-    "view_cone_deg": 40.0, "viewing_distance_mm": 300.0
-})";
 
 std::string readText(const fs::path& path)
 {
@@ -95,7 +84,7 @@ protected:
         pack_ = dir_ / "scene.lfdpack";
         writePack(pack_, cubeAndSphereScene());
         profile_ = dir_ / "profile.json";
-        std::ofstream(profile_) << kSmallProfile;
+        std::ofstream(profile_) << tenthPrototypeProfileJson("cli-small");
     }
     fs::path dir_, pack_, profile_;
 };

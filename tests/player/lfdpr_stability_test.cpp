@@ -222,41 +222,15 @@ struct Agreement {
 Agreement regionAgreement(const Image& a, const Image& reference)
 {
     const std::vector<uint8_t> ma = coverageMask(a), mr = coverageMask(reference);
+    std::vector<uint8_t> both(ma.size()), either(ma.size());
     Agreement out;
-    double sum = 0.0;
-    int x0 = int(a.width), y0 = int(a.height), x1 = -1, y1 = -1;
     for (size_t i = 0; i < ma.size(); ++i) {
-        if (ma[i] && mr[i]) {
-            ++out.both;
-            for (size_t c = 0; c < 3; ++c) {
-                const double d = double(a.pixels[i * 4 + c]) - double(reference.pixels[i * 4 + c]);
-                sum += d * d;
-            }
-        }
-        if (ma[i] || mr[i]) {
-            const int x = int(i % a.width), y = int(i / a.width);
-            x0 = std::min(x0, x);
-            y0 = std::min(y0, y);
-            x1 = std::max(x1, x);
-            y1 = std::max(y1, y);
-        }
+        both[i] = ma[i] & mr[i];
+        either[i] = ma[i] | mr[i];
+        out.both += both[i];
     }
-    out.rmse = out.both ? std::sqrt(sum / double(3 * out.both)) : 0.0;
-    if (x1 < 0)
-        return out;
-    x0 = std::max(0, x0 - 5);
-    y0 = std::max(0, y0 - 5);
-    x1 = std::min(int(a.width) - 1, x1 + 5);
-    y1 = std::min(int(a.height) - 1, y1 + 5);
-    auto crop = [&](const Image& image) {
-        Image c{uint32_t(x1 - x0 + 1), uint32_t(y1 - y0 + 1), 4, {}};
-        for (int y = y0; y <= y1; ++y) {
-            const uint8_t* row = &image.pixels[(size_t(y) * image.width + size_t(x0)) * 4];
-            c.pixels.insert(c.pixels.end(), row, row + size_t(c.width) * 4);
-        }
-        return c;
-    };
-    out.ssim = player::ssimLuma(crop(a), crop(reference));
+    out.rmse = maskedRmse(a, reference, both);
+    out.ssim = ssimOverMaskBox(a, reference, either);
     return out;
 }
 

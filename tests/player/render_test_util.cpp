@@ -10,6 +10,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -41,6 +42,62 @@ RenderedViews renderScene(const Scene& scene, const std::string& rendererName,
 DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height)
 {
     return withViews(prototypeDisplayProfile(), views, width, height);
+}
+
+std::string tenthPrototypeProfileJson(const std::string& name)
+{
+    return R"({
+        "format": "lfd-display-profile/1",
+        "name": ")" + name + R"(",
+        "panel_width": 384, "panel_height": 216,
+        "screen_width_mm": 34.54, "screen_height_mm": 19.43,
+        "subpixel_order": "RGB",
+        "lens_width_mm": 0.72, "lens_tilt_deg": -9.66,
+        "view_count": 8, "view_width": 48, "view_height": 36,
+        "view_cone_deg": 40.0, "viewing_distance_mm": 300.0
+    })";
+}
+
+double maskedRmse(const player::Image& a, const player::Image& b, const std::vector<uint8_t>& mask)
+{
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < mask.size(); ++i)
+        if (mask[i])
+            for (int c = 0; c < 3; ++c) {
+                const double d = double(a.pixels[i * 4 + c]) - b.pixels[i * 4 + c];
+                sum += d * d;
+                ++n;
+            }
+    return n ? std::sqrt(sum / double(n)) : 0.0;
+}
+
+double ssimOverMaskBox(const player::Image& a, const player::Image& reference, const std::vector<uint8_t>& mask)
+{
+    int x0 = int(a.width), y0 = int(a.height), x1 = -1, y1 = -1;
+    for (size_t i = 0; i < mask.size(); ++i)
+        if (mask[i]) {
+            const int x = int(i % a.width), y = int(i / a.width);
+            x0 = std::min(x0, x);
+            y0 = std::min(y0, y);
+            x1 = std::max(x1, x);
+            y1 = std::max(y1, y);
+        }
+    if (x1 < 0)
+        return 1.0;
+    x0 = std::max(0, x0 - 5);
+    y0 = std::max(0, y0 - 5);
+    x1 = std::min(int(a.width) - 1, x1 + 5);
+    y1 = std::min(int(a.height) - 1, y1 + 5);
+    auto crop = [&](const player::Image& image) {
+        player::Image c{uint32_t(x1 - x0 + 1), uint32_t(y1 - y0 + 1), 4, {}};
+        for (int y = y0; y <= y1; ++y) {
+            const uint8_t* row = &image.pixels[(size_t(y) * image.width + size_t(x0)) * 4];
+            c.pixels.insert(c.pixels.end(), row, row + size_t(c.width) * 4);
+        }
+        return c;
+    };
+    return player::ssimLuma(crop(a), crop(reference));
 }
 
 std::vector<uint8_t> coverageMask(const player::Image& image)

@@ -24,6 +24,17 @@ RenderedViews renderScene(const Scene& scene, const std::string& renderer,
 // The prototype profile with small views, for fast tests.
 DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height);
 
+// JSON text of a 384x216 panel built like the prototype at a tenth of its size (0.72 mm
+// lenses at -9.66 deg, 8 views of 48x36: non-square 0.72 x 0.54 mm view pixels, as on the
+// prototype), named `name`; small enough that EIAs stay cheap on llvmpipe.
+std::string tenthPrototypeProfileJson(const std::string& name);
+
+// RMSE of the colour channels over the pixels where `mask` is set (0 for an empty mask).
+double maskedRmse(const player::Image& a, const player::Image& b, const std::vector<uint8_t>& mask);
+// SSIM (luma) over the bounding box of `mask`, grown by the 5-pixel SSIM window radius,
+// so a mostly empty background does not dilute differences; 1 for an empty mask.
+double ssimOverMaskBox(const player::Image& a, const player::Image& reference, const std::vector<uint8_t>& mask);
+
 // factor x factor box filter of RGBA8 bytes (downsamples a supersampled reference render).
 player::Image boxDownsample(const player::Image& image, uint32_t factor);
 

@@ -40,17 +40,8 @@ using player::Image;
 // (0.72 x 0.54 mm), which LFD-biased sampling exploits.
 DisplayProfile comparisonProfile(uint32_t views, uint32_t width, uint32_t height)
 {
-    const DisplayProfile base = parseDisplayProfile(R"({
-        "format": "lfd-display-profile/1",
-        "name": "comparison-small",
-        "panel_width": 384, "panel_height": 216,
-        "screen_width_mm": 34.54, "screen_height_mm": 19.43,
-        "subpixel_order": "RGB",
-        "lens_width_mm": 0.72, "lens_tilt_deg": -9.66,
-        "view_count": 8, "view_width": 48, "view_height": 36,
-        "view_cone_deg": 40.0, "viewing_distance_mm": 300.0
-    })",
-                                                    "comparison-small.json");
+    const DisplayProfile base =
+        parseDisplayProfile(tenthPrototypeProfileJson("comparison-small"), "comparison-small.json");
     return withViews(base, views, width, height);
 }
 
@@ -277,21 +268,6 @@ TEST_F(RendererComparisonTest, LfdprCoversWhatMvrCoversOnInstancedRotatedCubes)
     expectSameCoverage(instancedCubesScene(), "instanced cubes");
 }
 
-// RMSE over the pixels where `mask` is set (colour channels).
-double maskedRmse(const Image& a, const Image& b, const std::vector<uint8_t>& mask)
-{
-    double sum = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < mask.size(); ++i)
-        if (mask[i])
-            for (int c = 0; c < 3; ++c) {
-                const double d = double(a.pixels[i * 4 + c]) - b.pixels[i * 4 + c];
-                sum += d * d;
-                ++n;
-            }
-    return n ? std::sqrt(sum / double(n)) : 0.0;
-}
-
 // ---- Image agreement ------------------------------------------------------------------
 
 // The scenes cover a fifth of each view; over whole images the background would dilute
@@ -306,32 +282,9 @@ RegionMetrics regionMetrics(const Image& a, const Image& reference)
 {
     const std::vector<uint8_t> ma = coverageMask(a), mr = coverageMask(reference);
     std::vector<uint8_t> mask(ma.size());
-    int x0 = int(a.width), y0 = int(a.height), x1 = -1, y1 = -1;
-    for (size_t i = 0; i < mask.size(); ++i) {
+    for (size_t i = 0; i < mask.size(); ++i)
         mask[i] = ma[i] | mr[i];
-        if (mask[i]) {
-            const int x = int(i % a.width), y = int(i / a.width);
-            x0 = std::min(x0, x);
-            y0 = std::min(y0, y);
-            x1 = std::max(x1, x);
-            y1 = std::max(y1, y);
-        }
-    }
-    if (x1 < 0)
-        return {};
-    x0 = std::max(0, x0 - 5);
-    y0 = std::max(0, y0 - 5);
-    x1 = std::min(int(a.width) - 1, x1 + 5);
-    y1 = std::min(int(a.height) - 1, y1 + 5);
-    auto crop = [&](const Image& image) {
-        Image c{uint32_t(x1 - x0 + 1), uint32_t(y1 - y0 + 1), 4, {}};
-        for (int y = y0; y <= y1; ++y) {
-            const uint8_t* row = &image.pixels[(size_t(y) * image.width + size_t(x0)) * 4];
-            c.pixels.insert(c.pixels.end(), row, row + size_t(c.width) * 4);
-        }
-        return c;
-    };
-    return {maskedRmse(a, reference, mask), player::ssimLuma(crop(a), crop(reference))};
+    return {maskedRmse(a, reference, mask), ssimOverMaskBox(a, reference, mask)};
 }
 
 struct Agreement {
