@@ -84,8 +84,8 @@ int main(int argc, char** argv)
     app.add_option("PACK", pack, "packed scene from lfd-bake")->required();
     app.add_option("--renderers", renderers, "comma-separated renderers to time")->capture_default_str();
     app.add_flag("--lfdpr-variants", variants,
-                 "also time lfdpr with each innovation disabled (lfdpr-no-lfd-sampling, "
-                 "lfdpr-no-texture-splatting, lfdpr-no-mv-mipmapping)");
+                 "also time the paper's pipeline (lfdpr-paper) and lfdpr with each innovation "
+                 "disabled (lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting, lfdpr-no-mv-mipmapping)");
     app.add_option("--display", displayProfile, "display profile JSON (default: the paper's prototype)");
     auto* viewsOpt = app.add_option("--views", views, "number of views (overrides the profile)");
     auto* sizeOpt = app.add_option("--view-size", viewSize, "view size WxH (overrides the profile)");

@@ -23,16 +23,23 @@ namespace lfd::player {
 
 namespace {
 
-// lfdpr with one of the paper's three innovations switched off (ablation).
+// lfdpr variants: the paper's pipeline side by side with the default visibility pipeline,
+// and each of the paper's three innovations switched off (ablation; multiview mipmapping
+// exists in the paper's pipeline only).
 struct LfdprVariant {
     const char* name;
-    void (*disable)(LfdprOptions&);
+    void (*configure)(LfdprOptions&);
 };
 
 const LfdprVariant kLfdprVariants[] = {
+    {"lfdpr-paper", [](LfdprOptions& o) { o.pipeline = LfdprOptions::Pipeline::Paper; }},
     {"lfdpr-no-lfd-sampling", [](LfdprOptions& o) { o.lfdBiasedSampling = false; }},
     {"lfdpr-no-texture-splatting", [](LfdprOptions& o) { o.textureSplatting = false; }},
-    {"lfdpr-no-mv-mipmapping", [](LfdprOptions& o) { o.multiviewMipmapping = false; }},
+    {"lfdpr-no-mv-mipmapping",
+     [](LfdprOptions& o) {
+         o.pipeline = LfdprOptions::Pipeline::Paper;
+         o.multiviewMipmapping = false;
+     }},
 };
 
 // Everything one renderer run shares with the others: the uploaded scene, the view
@@ -139,7 +146,7 @@ std::unique_ptr<Renderer> createBenchRenderer(const std::string& name)
     for (const LfdprVariant& v : kLfdprVariants)
         if (name == v.name) {
             LfdprOptions options;
-            v.disable(options);
+            v.configure(options);
             return createLfdprRenderer(options);
         }
     const std::vector<std::string> known = benchRendererNames();

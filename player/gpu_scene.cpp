@@ -55,6 +55,7 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene)
             return;
         const GLuint vbo = makeBuffer(data, count * stride, 0, gpuBytes_);
         vbos_.push_back(vbo);
+        streamVbos_[location] = vbo;
         glVertexArrayVertexBuffer(vao_, location, vbo, 0, GLsizei(stride));
         glVertexArrayAttribFormat(vao_, location, components, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(vao_, location, location);

@@ -35,6 +35,8 @@ public:
     const std::vector<glm::mat4>& sceneFromNode() const { return sceneFromNode_; }
     unsigned vertexArray() const { return vao_; }
     unsigned indexBuffer() const { return ibo_; }
+    // The vertex buffer of stream `location` (LFD_ATTRIB_*), 0 when the pack has none.
+    unsigned streamBuffer(unsigned location) const { return location < 4 ? streamVbos_[location] : 0u; }
     unsigned texture(int32_t index) const; // 0 for kNone
     // Binds the material's five textures to their units (LFD_UNIT_*; absent ones as 0, the
     // shaders branch on the material flags). material = kNone: the default material.
@@ -51,6 +53,7 @@ private:
     std::vector<DrawItem> draws_;
     std::vector<glm::mat4> sceneFromNode_;
     std::vector<unsigned> vbos_, textures_;
+    unsigned streamVbos_[4] = {0, 0, 0, 0};
     unsigned vao_ = 0, ibo_ = 0, materialSsbo_ = 0, statsSsbo_ = 0, nodeSsbo_ = 0;
     size_t gpuBytes_ = 0;
 };

@@ -155,11 +155,15 @@ int main(int argc, char** argv)
     app.add_flag("--headless", options.headless, "render without a window (EGL)");
     app.add_option("--renderer", options.renderer, "renderer: " + renderers)->capture_default_str();
     bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false;
-    std::string atomics = "auto";
+    std::string atomics = "auto", pipeline = "visibility";
     app.add_flag("--no-lfd-sampling", noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
     app.add_flag("--no-texture-splatting", noTextureSplatting, "lfdpr: no density reduction by texture");
-    app.add_flag("--no-mv-mipmapping", noMvMipmapping, "lfdpr: texture values at LOD 0 (no multiview mipmapping)");
+    app.add_flag("--no-mv-mipmapping", noMvMipmapping,
+                 "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
     app.add_option("--atomics", atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
+    app.add_option("--lfdpr-pipeline", pipeline,
+                   "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
+        ->capture_default_str();
     app.add_option("--display", options.displayProfile, "display profile JSON (default: the paper's prototype)");
     auto* viewsOpt = app.add_option("--views", views, "number of views (overrides the profile)");
     auto* sizeOpt = app.add_option("--view-size", viewSize, "view size WxH (overrides the profile)");
@@ -223,6 +227,7 @@ int main(int argc, char** argv)
         options.lfdpr.multiviewMipmapping = !noMvMipmapping;
         try {
             options.lfdpr.atomics = lfd::player::parseLfdprAtomics(atomics);
+            options.lfdpr.pipeline = lfd::player::parseLfdprPipeline(pipeline);
         } catch (const std::exception& e) {
             throw UsageError(e.what());
         }

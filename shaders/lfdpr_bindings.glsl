@@ -87,6 +87,7 @@ struct TriangleSamplingGpu {
     uvec4 tangents; // xyz octahedral vertex tangents (scene), w bit i: tangent i has w < 0
 };
 
+#ifndef LFDPR_VISIBILITY_PIPELINE // the visibility pipeline has its own counters
 layout(std430, binding = LFDPR_SSBO_COUNTERS) coherent buffer LfdprCounters {
     uint pointCount;       // points generated (may exceed the capacity: overflow)
     uint triangleCount;    // triangles that emitted points
@@ -97,6 +98,7 @@ layout(std430, binding = LFDPR_SSBO_COUNTERS) coherent buffer LfdprCounters {
     uint dispatchZ;
     uint counterPad;
 } counters;
+#endif
 
 // Frame constants of point generation (std140, 208 bytes; C++: LfdprFrameGpu).
 layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
@@ -109,3 +111,90 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
     uvec4 counts;      // x view count, y point capacity, z options (LFDPR_OPTION_*), w 0
     vec4 viewSize;     // x view width, y view height (pixels), zw 0
 } u_lfd;
+
+// ---------------------------------------------------------------------------------------
+// The visibility pipeline (lfdpr's default; the paper's pipeline above stays selectable):
+// compute point generation (lfdpr_points.comp), visibility splatting of depth and point
+// index (lfdpr_visibility.comp), then shading once per visible view pixel
+// (lfdpr_shade.comp). A point is 8 bytes: its triangle record and its sampling cell.
+#define LFDPR_SSBO_RECORDS 11      // LfdprRecordGpu per emitting triangle
+#define LFDPR_SSBO_INDICES 12      // the scene's index buffer (uint)
+#define LFDPR_SSBO_POSITIONS 13    // the scene's position stream (float x 3 per vertex)
+#define LFDPR_SSBO_NORMALS 14      // normal stream (float x 3), or a dummy
+#define LFDPR_SSBO_TANGENTS 15     // tangent stream (vec4), or a dummy
+#define LFDPR_SSBO_UVS 16          // uv stream (vec2), or a dummy
+#define LFDPR_SSBO_DRAWS 17        // LfdprDrawGpu per draw
+#define LFDPR_SSBO_LARGE 18        // per draw segment: primitives sampled by a workgroup
+#define LFDPR_SSBO_LARGE_DISPATCH 19 // per draw: uvec4 indirect dispatch (x = triangles)
+#define LFDPR_SSBO_VIS_COUNTERS 20 // LfdprVisCounters
+#define LFDPR_SSBO_MATERIAL_IDS 22 // per view pixel: GPU material of the visible point
+#define LFDPR_UBO_CAMERA_LINE 2
+
+#define LFDPR_LOC_DRAW 7           // draw index (lfdpr_points.comp)
+#define LFDPR_LOC_TRIANGLES 8      // triangles in the draw
+#define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_shade.comp: the material whose textures are bound
+#define LFDPR_LOC_LARGE_BASE 10    // first LFDPR_SSBO_LARGE slot of the draw
+
+// Triangles whose sampling box exceeds this many pixels are sampled by one workgroup
+// (LFDPR_GROUP_SIZE threads striding over the box) instead of one invocation.
+#define LFDPR_LARGE_PIXELS 4096
+// LFDPR_SSBO_MATERIAL_IDS markers besides GPU material indices.
+#define LFDPR_PIXEL_SHADED 0xFFFFFFFFu // written (or background)
+#define LFDPR_PIXEL_REPAIR 0xFFFFFFFEu // index disagrees with the depth key: redone
+#define LFDPR_RECORD_BYTES 16
+#define LFDPR_COMPACT_POINT_BYTES 8
+#define LFDPR_VIS_COUNTER_BYTES 32
+
+// Word of view pixel (x, y) of `view` in the visibility pipeline's per-pixel buffers:
+// views interleaved per pixel, so the 48 splats of one point (same row, nearby columns:
+// camera-line coherence) touch a few cache lines instead of 48 separate images.
+uint lfdViewWord(uint view, uint x, uint y, uint width, uint viewCount)
+{
+    return (y * width + x) * viewCount + view;
+}
+
+// One emitting triangle (std430, 16 bytes): which triangle (the vertices, attributes,
+// node and material come from the scene) and its final sampling spacings.
+struct LfdprRecordGpu {
+    uint draw;       // LfdprDrawGpu index
+    uint primitive;  // triangle within the draw
+    vec2 spacing;    // along T_align's U and V (texture splatting, coarsening applied)
+};
+
+// One draw (std430, 16 bytes).
+struct LfdprDrawGpu {
+    uint node;
+    uint material;      // GPU material index
+    uint firstTriangle; // scene triangle index of the draw's first triangle
+    uint pad;
+};
+
+// Counters of the visibility pipeline (std430, 32 bytes; read back after point generation
+// to size the visibility dispatch and to redo the frame after an overflow).
+struct LfdprVisCountersGpu {
+    uint pointCount;     // points generated (may exceed the capacity: generation is redone)
+    uint recordCount;    // emitting triangles
+    uint oversizedCount; // larger than one sampling tile
+    uint coarsenedCount; // larger than LFDPR_MAX_TILES tiles (sampled coarser)
+    uint largeCount;     // sampled by a workgroup
+    uint repairCount;    // 32-bit path: view pixels whose point index lost a race
+    uint pad1;
+    uint pad2;
+};
+
+// Views the camera-line block holds offsets for (4 per vec4).
+#define LFDPR_MAX_VIEWS 256
+
+// Camera-line coherence (std140, 1104 bytes; C++: LfdprCameraLineGpu). Every view camera
+// lies on one line parallel to the screen and shares the screen rectangle, so clip y, z
+// and w rows are the same in every view and clip x is affine in the camera's offset e
+// along the line: x_clip(view) = dot(row0, p) + e(view) * dot(row0PerOffset, p).
+layout(std140, binding = LFDPR_UBO_CAMERA_LINE) uniform LfdprCameraLineBlock {
+    vec4 row0;          // clip x row of view 0 (scene space)
+    vec4 row0PerOffset; // its derivative with respect to the camera offset
+    vec4 row1;          // clip y row (every view)
+    vec4 row3;          // clip w row (every view)
+    vec4 wRange;        // x near w, y far w (the depth range every view clips to), zw 0
+    vec4 viewOffsets[LFDPR_MAX_VIEWS / 4]; // camera offset of view i from view 0 along the
+                                           // line: component i % 4 of element i / 4
+} u_line;

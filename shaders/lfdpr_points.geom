@@ -16,6 +16,7 @@
 #include "lfdpr_bindings.glsl"
 #define LFD_PRECISE precise
 #include "lfdpr_math.glsl"
+#include "lfdpr_triangle_setup.glsl"
 
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 64) out; // 4 * LFDPR_MAX_TILES
@@ -49,102 +50,22 @@ uint packOct(vec3 v)
 
 void main()
 {
-    // Step 1: cull triangles outside every view (all vertices outside one hull plane),
-    // degenerate ones, and single-sided ones that every view sees from behind (the
-    // cameras lie on a segment, so facing is decided by its two ends).
-    if ((v_outside[0] & v_outside[1] & v_outside[2]) != 0u)
-        return;
+    // Steps 1-7 (lfdpr_triangle_setup.glsl): cull, LFD-biased spacings, texture-based
+    // splatting, T_align / S_ortho, coarsening, the margin, multiview mipmapping.
     vec3 p0 = v_position[0], p1 = v_position[1], p2 = v_position[2];
-    vec3 faceCross = cross(p1 - p0, p2 - p0);
-    float faceCrossLength = length(faceCross);
-    if (!(faceCrossLength > 0.0))
+    LfdTriangleSetup s;
+    if (!lfdSetupTriangle(p0, p1, p2, v_outside[0], v_outside[1], v_outside[2], u_material, u_node,
+                          u_streams, u_firstTriangle + uint(gl_PrimitiveIDIn), s))
         return;
-    vec3 faceNormal = faceCross / faceCrossLength;
-    MaterialGpu material = materials[u_material];
-    bool doubleSided = (material.flags & LFD_MATERIAL_DOUBLE_SIDED) != 0u;
-    bool mirrored = determinant(mat3(nodes[u_node].sceneFromObject)) < 0.0;
-    vec3 frontNormal = mirrored ? -faceNormal : faceNormal;
-    uint viewCount = u_lfd.counts.x;
-    if (!doubleSided && dot(frontNormal, views[0].eyeScene.xyz - p0) <= 0.0 &&
-        dot(frontNormal, views[viewCount - 1u].eyeScene.xyz - p0) <= 0.0)
-        return;
-
-    // Step 2: the triangle's point closest to the viewing line (the horizontal line
-    // through the camera centres), where its pixel footprint is smallest.
-    vec3 displayX = u_lfd.displayX.xyz, displayY = u_lfd.displayY.xyz, displayZ = u_lfd.displayZ.xyz;
-    vec3 w = lfdClosestBarycentricToLine(p0, p1, p2, u_lfd.viewLine.xyz, displayY, displayZ);
-    vec3 closest = w.x * p0 + w.y * p1 + w.z * p2;
-
-    // Step 3: reverse-project one view pixel's horizontal and vertical edges onto the
-    // triangle plane there, in every view that sees the triangle: the finest edge per axis
-    // sets the spacings; the pixel's area per view gives size_xy^v for size_vpuv.
-    vec3 edgeH = displayX * u_lfd.displayX.w;
-    vec3 edgeV = displayY * u_lfd.displayY.w;
-    float finestH = 1e30, finestV = 1e30, pixelAreaMin = 1e30, pixelAreaMax = 0.0;
-    for (uint v = 0u; v < viewCount; ++v) {
-        vec3 eye = views[v].eyeScene.xyz;
-        if (!doubleSided && dot(frontNormal, eye - p0) <= 0.0)
-            continue;
-        vec3 eh = lfdReverseProjectEdge(closest, faceNormal, eye, u_lfd.screenCenter.xyz, displayZ, edgeH);
-        vec3 ev = lfdReverseProjectEdge(closest, faceNormal, eye, u_lfd.screenCenter.xyz, displayZ, edgeV);
-        float lh = length(eh), lv = length(ev);
-        if (lh >= 1e29 || lv >= 1e29)
-            continue; // grazing in this view
-        finestH = min(finestH, lh);
-        finestV = min(finestV, lv);
-        float pixelArea = length(cross(eh, ev));
-        pixelAreaMin = min(pixelAreaMin, pixelArea);
-        pixelAreaMax = max(pixelAreaMax, pixelArea);
-    }
-    if (finestH >= 1e29 || finestV >= 1e29)
-        return; // edge-on in every view that faces it
-
-    // Step 4: LFD-biased spacings (iVIR's isotropic spacing when switched off) and the
-    // world area of the pixel footprint, size_xy.
-    uint options = u_lfd.counts.z;
-    vec2 spacing = lfdSamplingSpacing(finestH, finestV, (options & LFDPR_OPTION_LFD_SAMPLING) != 0u);
-    float sizeXy = spacing.x * spacing.y;
-
-    // Step 5: texture-based splatting (eq. lfd_texelSplatDensity). The baker's statistics
-    // are in object space; the ratio of the triangle's scene and object areas scales them.
-    TriangleStatsGpu stats = triangleStats[u_firstTriangle + uint(gl_PrimitiveIDIn)];
-    float areaScale = stats.areaWorld > 0.0 ? 0.5 * faceCrossLength / stats.areaWorld : 0.0;
-    bool textured = (u_streams & LFD_STREAM_UV) != 0u && areaScale > 0.0;
-    float sizeUv = textured ? stats.sizeUv * areaScale : 0.0;
-    float texPerWorld = textured ? stats.texPerWorld / areaScale : 0.0;
-    if ((options & LFDPR_OPTION_TEXTURE_SPLATTING) != 0u)
-        spacing /= lfdTexelSplatDensityScale(sizeXy, sizeUv);
-
-    // Step 6: T_align and S_ortho: sampling coordinates of the vertices (p0 at the origin);
-    // oversized triangles are tiled, and beyond LFDPR_MAX_TILES sampled coarser.
-    LfdFrame frame = lfdAlignFrame(faceNormal, displayX, displayY, displayZ);
-    vec2 q0 = lfdSamplingFromScene(p0, p0, frame, spacing);
-    vec2 q1 = lfdSamplingFromScene(p1, p0, frame, spacing);
-    vec2 q2 = lfdSamplingFromScene(p2, p0, frame, spacing);
-    vec2 lo = min(min(q0, q1), q2), hi = max(max(q0, q1), q2);
-    float coarsening = lfdCoarsening(hi - lo, float(LFDPR_TILE_SIZE), float(LFDPR_MAX_TILES));
-    if (coarsening > 1.0) {
-        spacing *= coarsening;
-        q0 /= coarsening;
-        q1 /= coarsening;
-        q2 /= coarsening;
-        lo /= coarsening;
-        hi /= coarsening;
+    if (s.coarsened)
         atomicAdd(counters.coarsenedCount, 1u);
-    }
-    // One pixel of margin on each side for the conservative pixels.
-    vec2 shift = vec2(1.0) - lo;
-    q0 += shift;
-    q1 += shift;
-    q2 += shift;
-    vec2 extent = ceil(hi - lo + vec2(2.0));
-    if (lfdTileCount(extent, float(LFDPR_TILE_SIZE)) > 1.0)
+    if (lfdTileCount(s.extent, float(LFDPR_TILE_SIZE)) > 1.0)
         atomicAdd(counters.oversizedCount, 1u);
-    vec3 origin = lfdSceneFromSampling(-shift, p0, frame, spacing);
-
-    // Step 7: multiview mipmapping setup (eqs. minVPUVSize, maxVPUVSize).
-    float vpuvMin = lfdVpuvSize(pixelAreaMin, texPerWorld);
-    float vpuvMax = lfdVpuvSize(pixelAreaMax, texPerWorld);
+    bool doubleSided = s.doubleSided, mirrored = s.mirrored;
+    vec2 q0 = s.q0, q1 = s.q1, q2 = s.q2, extent = s.extent, spacing = s.spacing;
+    LfdFrame frame = s.frame;
+    vec3 origin = s.origin;
+    float texPerWorld = s.texPerWorld, vpuvMin = s.vpuvMin, vpuvMax = s.vpuvMax;
 
     // Step 8: the triangle's records (read by the point FS and by view generation).
     uint record = u_recordBase + uint(gl_PrimitiveIDIn);

@@ -5,6 +5,8 @@
 // vertices are all outside the same plane, i.e. a triangle outside every view).
 #include "scene_bindings.glsl"
 #include "lfdpr_bindings.glsl"
+#include "lfdpr_math.glsl"
+#include "lfdpr_triangle_setup.glsl"
 
 layout(location = LFD_ATTRIB_POSITION) in vec3 a_position;
 layout(location = LFD_ATTRIB_NORMAL) in vec3 a_normal;
@@ -27,10 +29,6 @@ void main()
     v_normal = mat3(node.normalFromObject) * a_normal;
     v_tangent = vec4(mat3(node.sceneFromObject) * a_tangent.xyz, a_tangent.w);
     v_uv = a_uv;
-    uint outside = 0u;
-    for (int k = 0; k < 6; ++k)
-        if (dot(u_lfd.planes[k], vec4(v_position, 1.0)) < 0.0)
-            outside |= 1u << uint(k);
-    v_outside = outside;
+    v_outside = lfdOutsideHullBits(v_position);
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0); // the geometry shader places the triangle
 }

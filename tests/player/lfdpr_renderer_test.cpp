@@ -162,26 +162,33 @@ TEST_F(LfdprRendererTest, AgreesWithMvr)
 
 TEST_F(LfdprRendererTest, ReportsStagesAndTheAtomicsPathInUse)
 {
-    auto renderer = player::createLfdprRenderer();
-    const Rendered r = renderFrames(*renderer, cubeAndSphereScene(), smallProfile(4, 96, 72));
-    for (const char* stage : {"point_generation", "view_generation", "resolve"})
-        EXPECT_NE(std::find(r.stages.begin(), r.stages.end(), stage), r.stages.end()) << stage;
-    const player::LfdprFrameInfo& info = renderer->lastFrame();
-    EXPECT_EQ(info.int64Atomics, caps().int64Atomics) << "Auto picks 64-bit exactly where it exists";
-    EXPECT_GT(info.points, 1000u);
-    EXPECT_FALSE(info.overflowed);
-    EXPECT_EQ(info.bytesPerPoint, 48u);
-    EXPECT_EQ(info.viewBufferBytes, 4u * 96u * 72u * 8u);
-    std::map<std::string, double> stats;
-    for (const auto& [key, value] : renderer->extraStats())
-        stats[key] = value;
-    for (const char* key : {"points", "bytes_per_point", "point_buffer_bytes", "view_buffer_bytes",
-                            "point_capacity", "overflow_frames", "atomics", "triangles_oversized"})
-        EXPECT_TRUE(stats.count(key)) << key;
-    EXPECT_EQ(stats["points"], double(info.points));
-    EXPECT_EQ(stats["atomics"], caps().int64Atomics ? 1.0 : 0.0);
-    if (!caps().int64Atomics) {
-        EXPECT_THROW(player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::Int64}), gl::GlError);
+    // Both pipelines: the visibility pipeline's 8-byte points and 12 bytes per view pixel
+    // (depth, point index, material id), the paper pipeline's 48-byte points and 8 bytes.
+    for (const auto pipeline : {LfdprOptions::Pipeline::Visibility, LfdprOptions::Pipeline::Paper}) {
+        const bool paper = pipeline == LfdprOptions::Pipeline::Paper;
+        auto renderer = player::createLfdprRenderer({.pipeline = pipeline});
+        const Rendered r = renderFrames(*renderer, cubeAndSphereScene(), smallProfile(4, 96, 72));
+        for (const char* stage : {"point_generation", "view_generation", "resolve"})
+            EXPECT_NE(std::find(r.stages.begin(), r.stages.end(), stage), r.stages.end()) << stage;
+        const player::LfdprFrameInfo& info = renderer->lastFrame();
+        EXPECT_EQ(info.int64Atomics, caps().int64Atomics) << "Auto picks 64-bit exactly where it exists";
+        EXPECT_GT(info.points, 1000u);
+        EXPECT_FALSE(info.overflowed);
+        EXPECT_EQ(info.bytesPerPoint, paper ? 48u : 8u);
+        EXPECT_EQ(info.viewBufferBytes, 4u * 96u * 72u * (paper ? 8u : 12u));
+        std::map<std::string, double> stats;
+        for (const auto& [key, value] : renderer->extraStats())
+            stats[key] = value;
+        for (const char* key : {"points", "bytes_per_point", "point_buffer_bytes", "view_buffer_bytes",
+                                "point_capacity", "overflow_frames", "atomics", "triangles_oversized"})
+            EXPECT_TRUE(stats.count(key)) << key;
+        EXPECT_EQ(stats["points"], double(info.points));
+        EXPECT_EQ(stats["atomics"], caps().int64Atomics ? 1.0 : 0.0);
+        EXPECT_EQ(stats["pipeline_paper"], paper ? 1.0 : 0.0);
+        if (!caps().int64Atomics) {
+            EXPECT_THROW(player::createLfdprRenderer({.pipeline = pipeline, .atomics = LfdprOptions::Atomics::Int64}),
+                         gl::GlError);
+        }
     }
 }
 
@@ -242,13 +249,16 @@ TEST_F(LfdprRendererTest, SubPixelTriangleStillMakesAPointAndAPixel)
 
 TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
 {
+    // The paper pipeline renders an overflowing frame partially and grows for the next one
+    // (the visibility pipeline redoes the frame: lfdpr_visibility_test.cpp).
     const Scene scene = cubeAndSphereScene();
     const DisplayProfile profile = smallProfile(4, 96, 72);
-    auto reference = player::createLfdprRenderer();
+    const LfdprOptions::Pipeline paper = LfdprOptions::Pipeline::Paper;
+    auto reference = player::createLfdprRenderer({.pipeline = paper});
     const Rendered expected = renderFrames(*reference, scene, profile);
     const uint64_t needed = reference->lastFrame().points;
 
-    auto renderer = player::createLfdprRenderer({.initialPointCapacity = 16});
+    auto renderer = player::createLfdprRenderer({.pipeline = paper, .initialPointCapacity = 16});
     player::GpuScene gpu(scene);
     const Framing framing = fitSceneToDisplay(profile, scene.bounds);
     const player::FrameSetup frame = player::makeFrameSetup(profile, framing, 0.0, 0.0);
@@ -284,7 +294,8 @@ TEST_F(LfdprRendererTest, PointBufferGrowthStopsAtItsCap)
 {
     const Scene scene = cubeAndSphereScene();
     const DisplayProfile profile = smallProfile(4, 96, 72);
-    auto renderer = player::createLfdprRenderer({.initialPointCapacity = 16, .maxPointCapacity = 64});
+    auto renderer = player::createLfdprRenderer(
+        {.pipeline = LfdprOptions::Pipeline::Paper, .initialPointCapacity = 16, .maxPointCapacity = 64});
     player::GpuScene gpu(scene);
     const player::FrameSetup frame = player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds), 0.0, 0.0);
     player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);

@@ -686,7 +686,11 @@ TEST_F(LfdprStabilityTest, ManyViewsAgreeWithMvrInOrder)
         EXPECT_LT(c.worstRmse, 45.0);
         EXPECT_LT(c.coverage.holeRate(), 0.01) << "small views: a larger share of pixels is near a silhouette";
         EXPECT_EQ(c.implausible, 0u);
-        const double expectedBytes = double(viewCount) * 64.0 * 48.0 * 8.0;
+        // Bytes per view pixel: 12 (visibility pipeline: depth, point index, material id),
+        // 8 (paper pipeline: depth and colour).
+        const double bytesPerPixel =
+            lfdprRenderer->options().pipeline == player::LfdprOptions::Pipeline::Paper ? 8.0 : 12.0;
+        const double expectedBytes = double(viewCount) * 64.0 * 48.0 * bytesPerPixel;
         EXPECT_EQ(lfdpr.stats.at("view_buffer_bytes"), expectedBytes);
         EXPECT_EQ(double(lfdprRenderer->lastFrame().viewBufferBytes), expectedBytes);
 

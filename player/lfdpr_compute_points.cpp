@@ -1,0 +1,78 @@
+#include "lfdpr_compute_points.h"
+
+#include "gpu_scene.h"
+#include "lfdpr_constants.h"
+#include "scene_bindings.h"
+#include "shader_library.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+
+namespace lfd::player {
+
+LfdprComputePointGeneration::LfdprComputePointGeneration()
+{
+    program_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}});
+    try {
+        largeProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, {"LFDPR_LARGE_PASS 1"});
+    } catch (...) {
+        glDeleteProgram(program_);
+        throw;
+    }
+}
+
+LfdprComputePointGeneration::~LfdprComputePointGeneration()
+{
+    glDeleteProgram(program_);
+    glDeleteProgram(largeProgram_);
+}
+
+void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<uint32_t>& largeBase,
+                                      unsigned largeDispatch) const
+{
+    const LfdprConstants& k = LfdprConstants::get();
+    const uint32_t streams = scene.cpu().vertices.mask();
+    auto setDrawUniforms = [&](unsigned program, const DrawItem& draw, uint32_t index) {
+        glProgramUniform1ui(program, bindings::kLocNode, draw.node);
+        glProgramUniform1ui(program, bindings::kLocMaterial, scene.gpuMaterialIndex(draw.material));
+        glProgramUniform1ui(program, bindings::kLocStreams, streams);
+        glProgramUniform1ui(program, k.locDraw, index);
+        glProgramUniform1ui(program, k.locTriangles, draw.indexCount / 3);
+        glProgramUniform1ui(program, k.locLargeBase, largeBase[index]);
+    };
+
+    // Step 1: one invocation per triangle, draw by draw (each with its material's
+    // textures, for the alpha test of masked materials). Groups beyond the guaranteed
+    // 65535 in x spill into y.
+    glUseProgram(program_);
+    const std::vector<DrawItem>& draws = scene.draws();
+    for (uint32_t d = 0; d < draws.size(); ++d) {
+        const uint32_t triangles = draws[d].indexCount / 3;
+        if (triangles == 0)
+            continue;
+        setDrawUniforms(program_, draws[d], d);
+        scene.bindMaterialTextures(draws[d].material);
+        const uint32_t groups = (triangles + k.groupSize - 1) / k.groupSize;
+        const uint32_t x = std::min<uint32_t>(groups, 65535u);
+        glDispatchCompute(x, (groups + x - 1) / x, 1);
+    }
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+
+    // Step 2: the large triangles each draw queued, one workgroup each (indirect: the
+    // counts stay on the GPU).
+    glUseProgram(largeProgram_);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, largeDispatch);
+    for (uint32_t d = 0; d < draws.size(); ++d) {
+        if (draws[d].indexCount < 3)
+            continue;
+        setDrawUniforms(largeProgram_, draws[d], d);
+        scene.bindMaterialTextures(draws[d].material);
+        glDispatchComputeIndirect(GLintptr(d) * 4 * sizeof(GLuint));
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+} // namespace lfd::player

@@ -1,0 +1,30 @@
+// LFDPR point generation in compute (the visibility pipeline; shaders/lfdpr_points.comp):
+// one invocation per triangle of each draw, then one workgroup per large triangle of each
+// draw. The caller binds the scene, the LFDPR buffers (points, records, the large-triangle
+// list and its per-draw dispatch words, counters) and the frame constants.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace lfd::player {
+
+class GpuScene;
+
+class LfdprComputePointGeneration {
+public:
+    LfdprComputePointGeneration(); // builds both programs
+    ~LfdprComputePointGeneration();
+    LfdprComputePointGeneration(const LfdprComputePointGeneration&) = delete;
+    LfdprComputePointGeneration& operator=(const LfdprComputePointGeneration&) = delete;
+
+    // largeBase[d]: first slot of draw d in the large-triangle list (its triangles before
+    // it); largeDispatch: the per-draw indirect dispatch words (uvec4 each, cleared to
+    // (0, 1, 1, 0) by the caller).
+    void run(const GpuScene& scene, const std::vector<uint32_t>& largeBase, unsigned largeDispatch) const;
+
+private:
+    unsigned program_ = 0, largeProgram_ = 0;
+};
+
+} // namespace lfd::player

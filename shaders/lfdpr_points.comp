@@ -1,0 +1,213 @@
+#version 450 core
+// LFDPR point generation in compute (the visibility pipeline; paper section 3.1). The
+// geometry shader of the paper's pipeline is its bottleneck on every driver we measured,
+// so here one invocation samples one triangle: the same setup (lfdpr_triangle_setup.glsl:
+// culling, LFD-biased densities, texture-based splatting, T_align / S_ortho, coarsening)
+// and the same conservative sampling rule as the geometry + fragment shaders, so the
+// point set is the same (up to order). A point is 8 bytes: its triangle record and the
+// sampling cell (x | y << 16); the record holds the triangle and its final spacings.
+//
+// Default pass: one invocation per triangle of one draw. A triangle whose sampling box
+// exceeds LFDPR_LARGE_PIXELS is queued for the large pass instead, so no invocation
+// loops over a huge box while its neighbours idle.
+// LFDPR_LARGE_PASS: one workgroup per queued triangle of the draw; its threads stride over
+// the box, count, reserve one range of the point buffer, and write.
+//
+// Alpha-masked materials (glTF MASK): a cell whose base-colour alpha at the finest LOD
+// any view needs (eq. minLOD) is below the cutoff emits no point, so the visibility pass
+// never needs the material's textures.
+#include "scene_bindings.glsl"
+#define LFDPR_VISIBILITY_PIPELINE
+#include "lfdpr_bindings.glsl"
+#define LFD_PRECISE precise
+#include "lfdpr_math.glsl"
+#include "lfdpr_triangle_setup.glsl"
+#include "lfdpr_scene_access.glsl"
+
+layout(local_size_x = LFDPR_GROUP_SIZE) in;
+
+layout(location = LFD_LOC_NODE) uniform uint u_node;
+layout(location = LFD_LOC_MATERIAL) uniform uint u_material;
+layout(location = LFD_LOC_STREAMS) uniform uint u_streams;
+layout(location = LFDPR_LOC_DRAW) uniform uint u_draw;
+layout(location = LFDPR_LOC_TRIANGLES) uniform uint u_triangles;
+layout(location = LFDPR_LOC_LARGE_BASE) uniform uint u_largeBase;
+
+layout(binding = LFD_UNIT_BASE_COLOR) uniform sampler2D t_baseColor;
+
+layout(std430, binding = LFDPR_SSBO_UVS) readonly buffer SceneUvs {
+    vec2 sceneUvs[];
+};
+layout(std430, binding = LFDPR_SSBO_POINTS) writeonly buffer Points {
+    uvec2 points[];
+};
+layout(std430, binding = LFDPR_SSBO_RECORDS) writeonly buffer Records {
+    LfdprRecordGpu records[];
+};
+layout(std430, binding = LFDPR_SSBO_LARGE) buffer Large {
+    uint largeTriangles[];
+};
+layout(std430, binding = LFDPR_SSBO_LARGE_DISPATCH) buffer LargeDispatch {
+    uvec4 largeDispatch[];
+};
+layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) coherent buffer VisCounters {
+    LfdprVisCountersGpu vis;
+};
+
+// The triangle being sampled: setup plus what the alpha test needs.
+struct Sampled {
+    LfdTriangleSetup s;
+    bool alphaTest;
+    float cutoff;
+    float alphaLod;
+    vec4 baseFactor;
+    vec2 uv0, uv1, uv2;
+};
+
+bool setUp(uint primitive, out Sampled t)
+{
+    LfdprDrawGpu draw = draws[u_draw];
+    uvec3 vertices = lfdTriangleVertices(draw, primitive);
+    vec3 p0, p1, p2;
+    lfdTrianglePositions(draw, vertices, p0, p1, p2);
+    if (!lfdSetupTriangle(p0, p1, p2, lfdOutsideHullBits(p0), lfdOutsideHullBits(p1), lfdOutsideHullBits(p2),
+                          u_material, u_node, u_streams, draw.firstTriangle + primitive, t.s))
+        return false;
+    MaterialGpu m = materials[u_material];
+    t.cutoff = m.emissiveCutoff.w;
+    t.baseFactor = m.baseColorFactor;
+    t.alphaTest = m.alphaMode == LFD_ALPHA_MASK;
+    bool textured = (u_streams & LFD_STREAM_UV) != 0u && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE) != 0u;
+    t.uv0 = textured ? sceneUvs[vertices.x] : vec2(0.0);
+    t.uv1 = textured ? sceneUvs[vertices.y] : vec2(0.0);
+    t.uv2 = textured ? sceneUvs[vertices.z] : vec2(0.0);
+    t.alphaLod = -1.0; // < 0: untextured, the factor alone decides
+    if (textured) {
+        ivec2 size = textureSize(t_baseColor, 0);
+        t.alphaLod = lfdLod(t.s.vpuvMin, float(size.x) * float(size.y));
+    }
+    return true;
+}
+
+// The conservative sampling rule of lfdpr_points.frag (step 1) plus the alpha test.
+bool emits(Sampled t, vec2 q)
+{
+    if (!lfdPixelOverlapsTriangle(q, t.s.q0, t.s.q1, t.s.q2))
+        return false;
+    if (!t.alphaTest)
+        return true;
+    float alpha = t.baseFactor.a;
+    if (t.alphaLod >= 0.0) {
+        vec3 w = lfdClampedBarycentric(t.s.q0, t.s.q1, t.s.q2, q);
+        vec2 uv = w.x * t.uv0 + w.y * t.uv1 + w.z * t.uv2;
+        alpha *= textureLod(t_baseColor, uv, t.alphaLod).a;
+    }
+    return alpha >= t.cutoff;
+}
+
+uint writeRecord(uint primitive, Sampled t)
+{
+    uint record = atomicAdd(vis.recordCount, 1u);
+    records[record] = LfdprRecordGpu(u_draw, primitive, t.s.spacing);
+    return record;
+}
+
+void countShape(Sampled t)
+{
+    if (t.s.coarsened)
+        atomicAdd(vis.coarsenedCount, 1u);
+    if (lfdTileCount(t.s.extent, float(LFDPR_TILE_SIZE)) > 1.0)
+        atomicAdd(vis.oversizedCount, 1u);
+}
+
+#ifndef LFDPR_LARGE_PASS
+
+void main()
+{
+    uint primitive = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * uint(LFDPR_GROUP_SIZE) +
+                     gl_LocalInvocationIndex;
+    if (primitive >= u_triangles)
+        return;
+    Sampled t;
+    if (!setUp(primitive, t))
+        return;
+    uint ex = uint(t.s.extent.x), ey = uint(t.s.extent.y);
+    if (ex * ey > uint(LFDPR_LARGE_PIXELS) || ex > 0xFFFFu || ey > 0xFFFFu) {
+        // Step 1 (large): queue for a workgroup.
+        uint slot = atomicAdd(largeDispatch[u_draw].x, 1u);
+        largeTriangles[u_largeBase + slot] = primitive;
+        atomicAdd(vis.largeCount, 1u);
+        return;
+    }
+    countShape(t);
+
+    // Step 2: count the cells, reserve them, write them (the capacity is never exceeded;
+    // the count still grows so the renderer sees an overflow and redoes the frame).
+    uint count = 0u;
+    for (uint y = 0u; y < ey; ++y)
+        for (uint x = 0u; x < ex; ++x)
+            if (emits(t, vec2(x, y) + 0.5))
+                ++count;
+    if (count == 0u)
+        return;
+    uint record = writeRecord(primitive, t);
+    uint first = atomicAdd(vis.pointCount, count);
+    uint capacity = u_lfd.counts.y;
+    for (uint y = 0u; y < ey; ++y)
+        for (uint x = 0u; x < ex; ++x)
+            if (emits(t, vec2(x, y) + 0.5)) {
+                if (first < capacity)
+                    points[first] = uvec2(record, x | (y << 16));
+                ++first;
+            }
+}
+
+#else
+
+shared uint s_count;
+shared uint s_first;
+shared uint s_record;
+
+void main()
+{
+    uint primitive = largeTriangles[u_largeBase + gl_WorkGroupID.x];
+    Sampled t;
+    bool emitting = setUp(primitive, t); // same inputs as the default pass: true
+    uint ex = emitting ? uint(t.s.extent.x) : 0u, ey = emitting ? uint(t.s.extent.y) : 0u;
+    uint cells = ex * ey;
+    if (gl_LocalInvocationIndex == 0u) {
+        s_count = 0u;
+        if (emitting)
+            countShape(t);
+    }
+    barrier();
+
+    // Step 1: each thread counts its cells (cells i, i + group, i + 2 group, ...).
+    uint mine = 0u;
+    for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))
+        if (emits(t, vec2(c % ex, c / ex) + 0.5))
+            ++mine;
+    uint offset = atomicAdd(s_count, mine);
+    barrier();
+
+    // Step 2: one thread reserves the range and writes the record.
+    if (gl_LocalInvocationIndex == 0u && s_count > 0u) {
+        s_record = writeRecord(primitive, t);
+        s_first = atomicAdd(vis.pointCount, s_count);
+    }
+    barrier();
+    if (s_count == 0u)
+        return;
+
+    // Step 3: write.
+    uint index = s_first + offset;
+    uint capacity = u_lfd.counts.y;
+    for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))
+        if (emits(t, vec2(c % ex, c / ex) + 0.5)) {
+            if (index < capacity)
+                points[index] = uvec2(s_record, (c % ex) | ((c / ex) << 16));
+            ++index;
+        }
+}
+
+#endif

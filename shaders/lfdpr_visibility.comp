@@ -1,0 +1,160 @@
+#version 450 core
+// LFDPR visibility splatting (the visibility pipeline; paper section 3.2 without the
+// per-splat shading): one invocation per point splats it into every view, writing only
+// depth and the point index; lfdpr_shade.comp then shades each visible pixel once.
+//
+// The splat is the point's sampling cell - a rectangle of the two spacings in the
+// triangle plane - projected to a quadrilateral; of the pixels in its bounding box only
+// those whose centre lies inside the quad AND inside the point's own triangle (EPR's
+// inside-triangle test, with the canonical-edge tie rule so triangles sharing an edge
+// neither overlap nor crack) are written. Depth is the triangle plane's along each pixel's
+// own ray: 1 / w interpolated with the pixel's screen barycentrics (exact for planes).
+//
+// Camera-line coherence: the triangle's vertices and the cell's corners are projected
+// once per point (lfdpr_camera_line.glsl); per view only their window x moves, by one
+// multiply-add each. Facing, coverage and depth are then evaluated per view as usual.
+//
+// Depth key: lfdPlaneDepthKey (smaller = nearer; 0xFFFFFFFF = empty).
+// LFDPR_INT64: atomicMin on (key << 32 | point index) (GL_NV_shader_atomic_int64).
+// Otherwise 32-bit words, u_pass 0: atomicMin on the key, and the invocation that lowered
+// it stores its point index with a plain store. A nearer point racing a farther one can
+// leave the farther one's index behind; lfdpr_shade.comp checks every pixel's index
+// against its key and flags the few that disagree, and only then u_pass 1 runs: where the
+// key equals the minimum, atomicMin on the point index. The image is the same either way:
+// a pixel's winner is a point of the nearest triangle there.
+#ifdef LFDPR_INT64
+#extension GL_ARB_gpu_shader_int64 : require
+#extension GL_NV_shader_atomic_int64 : require
+#endif
+#include "scene_bindings.glsl"
+#define LFDPR_VISIBILITY_PIPELINE
+#include "lfdpr_bindings.glsl"
+#define LFD_PRECISE precise
+#include "lfdpr_math.glsl"
+#include "lfdpr_scene_access.glsl"
+#include "lfdpr_camera_line.glsl"
+
+layout(local_size_x = LFDPR_GROUP_SIZE) in;
+
+layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
+    uvec2 points[];
+};
+layout(std430, binding = LFDPR_SSBO_RECORDS) readonly buffer Records {
+    LfdprRecordGpu records[];
+};
+layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) readonly buffer VisCounters {
+    LfdprVisCountersGpu vis;
+};
+#ifdef LFDPR_INT64
+layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewWords {
+    uint64_t viewWords[];
+};
+#else
+layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewDepth {
+    uint viewDepth[];
+};
+layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
+    uint viewIndex[];
+};
+layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
+#endif
+
+// Convex quad (either winding) contains p, edges inclusive (splats overlap slightly).
+bool insideQuad(vec2 a, vec2 b, vec2 c, vec2 d, vec2 p)
+{
+    float e0 = lfdEdge(a, b, p), e1 = lfdEdge(b, c, p), e2 = lfdEdge(c, d, p), e3 = lfdEdge(d, a, p);
+    return (e0 >= 0.0 && e1 >= 0.0 && e2 >= 0.0 && e3 >= 0.0) ||
+           (e0 <= 0.0 && e1 <= 0.0 && e2 <= 0.0 && e3 <= 0.0);
+}
+
+void main()
+{
+    uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * uint(LFDPR_GROUP_SIZE) +
+                 gl_LocalInvocationIndex;
+    if (index >= min(vis.pointCount, u_lfd.counts.y))
+        return;
+
+    // Step 1: the point, its triangle and the cell's corners in the triangle plane.
+    uvec2 point = points[index];
+    LfdprRecordGpu r = records[point.x];
+    LfdprDrawGpu draw = draws[r.draw];
+    vec3 p0, p1, p2;
+    lfdTrianglePositions(draw, lfdTriangleVertices(draw, r.primitive), p0, p1, p2);
+    LfdSamplingFrame f = lfdRecordFrame(p0, p1, p2, r.spacing);
+    vec3 centre = lfdSceneFromSampling(lfdPointCell(point), f.origin, f.frame, f.spacing);
+    vec3 halfU = f.frame.u * (0.5 * f.spacing.x * LFDPR_SPLAT_OVERLAP);
+    vec3 halfV = f.frame.v * (0.5 * f.spacing.y * LFDPR_SPLAT_OVERLAP);
+    bool doubleSided = (materials[draw.material].flags & LFD_MATERIAL_DOUBLE_SIDED) != 0u;
+    bool mirrored = determinant(mat3(nodes[draw.node].sceneFromObject)) < 0.0;
+
+    // Step 2: project once (camera-line coherence). Geometry outside the shared depth
+    // range is clipped in every view alike.
+    vec2 viewSize = u_lfd.viewSize.xy;
+    LfdLinePoint v0 = lfdProjectOnLine(p0, viewSize), v1 = lfdProjectOnLine(p1, viewSize);
+    LfdLinePoint v2 = lfdProjectOnLine(p2, viewSize);
+    LfdLinePoint ca = lfdProjectOnLine(centre - halfU - halfV, viewSize);
+    LfdLinePoint cb = lfdProjectOnLine(centre + halfU - halfV, viewSize);
+    LfdLinePoint cc = lfdProjectOnLine(centre + halfU + halfV, viewSize);
+    LfdLinePoint cd = lfdProjectOnLine(centre - halfU + halfV, viewSize);
+    if (!(v0.invW > 0.0 && v1.invW > 0.0 && v2.invW > 0.0 && ca.invW > 0.0 && cb.invW > 0.0 &&
+          cc.invW > 0.0 && cd.invW > 0.0))
+        return; // behind a camera plane (the near plane clips such triangles)
+
+    // Step 3: the rows the splat covers are the same in every view.
+    float yLo = max(min(min(ca.y, cb.y), min(cc.y, cd.y)), min(min(v0.y, v1.y), v2.y));
+    float yHi = min(max(max(ca.y, cb.y), max(cc.y, cd.y)), max(max(v0.y, v1.y), v2.y));
+    ivec2 viewPixels = ivec2(viewSize);
+    int rowLo = max(int(ceil(yLo - 0.5)), 0), rowHi = min(int(floor(yHi - 0.5)), viewPixels.y - 1);
+    if (rowLo > rowHi)
+        return;
+    uint nearKey = lfdDepthKey(1.0 / u_line.wRange.x), farKey = lfdDepthKey(1.0 / u_line.wRange.y);
+    vec3 invW = vec3(v0.invW, v1.invW, v2.invW);
+
+    uint viewCount = u_lfd.counts.x;
+    for (uint view = 0u; view < viewCount; ++view) {
+        // Step 4: this view's window positions of the cell; the columns it covers.
+        float e = lfdViewOffset(view);
+        vec2 a = lfdWindowInView(ca, e), b = lfdWindowInView(cb, e);
+        vec2 c = lfdWindowInView(cc, e), d = lfdWindowInView(cd, e);
+        vec2 s0 = lfdWindowInView(v0, e), s1 = lfdWindowInView(v1, e), s2 = lfdWindowInView(v2, e);
+        float xLo = max(min(min(a.x, b.x), min(c.x, d.x)), min(min(s0.x, s1.x), s2.x));
+        float xHi = min(max(max(a.x, b.x), max(c.x, d.x)), max(max(s0.x, s1.x), s2.x));
+        int colLo = max(int(ceil(xLo - 0.5)), 0), colHi = min(int(floor(xHi - 0.5)), viewPixels.x - 1);
+        if (colLo > colHi)
+            continue;
+
+        // Step 5: facing as the rasteriser decides it.
+        LfdViewTriangle t = lfdViewTriangle(s0, s1, s2, invW);
+        if (t.orientation == 0.0)
+            continue;
+        bool front = (t.orientation > 0.0) != mirrored;
+        if (!front && !doubleSided)
+            continue;
+
+        // Step 6: covered pixels, their plane depth, the atomic depth test.
+        for (int y = rowLo; y <= rowHi; ++y) {
+            for (int x = colLo; x <= colHi; ++x) {
+                vec2 p = vec2(x, y) + 0.5;
+                if (!insideQuad(a, b, c, d, p))
+                    continue;
+                vec3 edges = lfdEdgeValues(t, p);
+                if (!lfdOwnsSample(t, edges))
+                    continue;
+                uint key = lfdPlaneDepthKey(t, edges);
+                if (key < nearKey || key > farKey)
+                    continue; // clipped by the near or far plane
+                uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewPixels.x), viewCount);
+#ifdef LFDPR_INT64
+                atomicMin(viewWords[pixel], (uint64_t(key) << 32) | uint64_t(index));
+#else
+                if (u_pass == 0u) {
+                    if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
+                        viewIndex[pixel] = index;
+                } else if (viewDepth[pixel] == key) {
+                    atomicMin(viewIndex[pixel], index);
+                }
+#endif
+            }
+        }
+    }
+}

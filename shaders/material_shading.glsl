@@ -1,0 +1,80 @@
+// The glTF metallic-roughness material at one surface point, shaded for one view's eye:
+// one function shared by mvr.frag (per fragment) and lfdpr_shade.comp (per visible view
+// pixel of the visibility pipeline), so both evaluate the same material the same way.
+// The includer defines LFD_SAMPLE(sampler, uv): texture() with the rasteriser's implicit
+// derivatives in a fragment shader, textureGrad() with analytic gradients in compute.
+// Needs scene_bindings.glsl and pbr_shading.glsl first.
+
+layout(binding = LFD_UNIT_BASE_COLOR) uniform sampler2D t_baseColor;
+layout(binding = LFD_UNIT_METALLIC_ROUGHNESS) uniform sampler2D t_metallicRoughness;
+layout(binding = LFD_UNIT_NORMAL) uniform sampler2D t_normal;
+layout(binding = LFD_UNIT_OCCLUSION) uniform sampler2D t_occlusion;
+layout(binding = LFD_UNIT_EMISSIVE) uniform sampler2D t_emissive;
+
+struct LfdSurfacePoint {
+    vec3 position;     // scene space
+    vec3 normal;       // interpolated vertex normal (any length); or, without a normal
+                       // stream, the geometric normal facing the eye
+    bool vertexNormal; // the normal comes from the normal stream
+    bool frontFacing;  // as the rasteriser decides it (double-sided back faces flip)
+    vec4 tangent;      // xyz scene space, w handedness
+    vec2 uv;
+};
+
+// False when an alpha-masked material discards the point.
+bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, out vec3 color)
+{
+    color = vec3(0.0);
+    // note: flags and streams are uniform per draw in mvr, so texture() stays in uniform
+    // control flow and hardware mip selection (derivatives) is well defined.
+    bool useTextures = (streams & LFD_STREAM_UV) != 0u;
+
+    // Base colour and alpha (texture is GL_SRGB8_ALPHA8: the fetch returns linear values).
+    vec4 baseColor = m.baseColorFactor;
+    if (useTextures && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE) != 0u)
+        baseColor *= LFD_SAMPLE(t_baseColor, p.uv);
+    // note: BLEND is drawn as opaque (no sorting of transparent surfaces).
+    if (m.alphaMode == LFD_ALPHA_MASK && baseColor.a < m.emissiveCutoff.w)
+        return false;
+
+    // Geometric normal: interpolated vertex normal (flipped on double-sided back faces),
+    // or the face normal that always faces the eye.
+    vec3 n = normalize(p.normal);
+    if (p.vertexNormal && !p.frontFacing)
+        n = -n;
+
+    // Normal map (tangent space, glTF convention: B = cross(N, T) * w).
+    if (useTextures && (m.flags & LFD_MATERIAL_NORMAL_TEXTURE) != 0u &&
+        (streams & LFD_STREAM_TANGENT) != 0u) {
+        vec3 t = p.tangent.xyz - n * dot(n, p.tangent.xyz);
+        if (dot(t, t) > 1e-12) {
+            t = normalize(t);
+            vec3 b = cross(n, t) * (p.tangent.w < 0.0 ? -1.0 : 1.0);
+            vec3 tn = LFD_SAMPLE(t_normal, p.uv).xyz * 2.0 - 1.0;
+            tn.xy *= m.params.z;
+            n = normalize(mat3(t, b, n) * tn);
+        }
+    }
+
+    SurfacePbr s;
+    s.baseColor = baseColor.rgb;
+    s.metallic = m.params.x;
+    s.roughness = m.params.y;
+    if (useTextures && (m.flags & LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE) != 0u) {
+        vec4 mr = LFD_SAMPLE(t_metallicRoughness, p.uv);
+        s.roughness *= mr.g;
+        s.metallic *= mr.b;
+    }
+    s.roughness = clamp(s.roughness, 0.0, 1.0);
+    s.metallic = clamp(s.metallic, 0.0, 1.0);
+    s.occlusion = 1.0;
+    if (useTextures && (m.flags & LFD_MATERIAL_OCCLUSION_TEXTURE) != 0u)
+        s.occlusion = 1.0 + m.params.w * (LFD_SAMPLE(t_occlusion, p.uv).r - 1.0);
+    s.emissive = m.emissiveCutoff.rgb;
+    if (useTextures && (m.flags & LFD_MATERIAL_EMISSIVE_TEXTURE) != 0u)
+        s.emissive *= LFD_SAMPLE(t_emissive, p.uv).rgb;
+    s.normal = n;
+
+    color = linearToSrgb(shadePbr(s, p.position, eye));
+    return true;
+}
