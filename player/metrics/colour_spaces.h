@@ -1,5 +1,5 @@
-// The colour transforms LDR FLIP needs (Andersson et al. 2020, section 3 and its
-// supplement): sRGB transfer function, linear sRGB <-> CIE XYZ (D65), XYZ <-> YCxCz (the
+// The colour transforms LDR FLIP needs (Andersson et al. 2020, the colour
+// pipeline): sRGB transfer function, linear sRGB <-> CIE XYZ (D65), XYZ <-> YCxCz (the
 // opponent space FLIP filters in), XYZ -> CIELAB, the Hunt adjustment and the HyAB distance.
 // Internal to lfd_image_metrics.
 #pragma once
@@ -20,7 +20,7 @@ Vec3 linearRgbToXyz(const Vec3& rgb);
 Vec3 xyzToLinearRgb(const Vec3& xyz);
 const Vec3& whitePointXyz();
 
-// YCxCz (Johnson & Fairchild's linearised CIELAB, used by FLIP):
+// YCxCz, the linearised CIELAB opponent space FLIP filters in:
 // Y = 116 Y/Yn - 16, Cx = 500 (X/Xn - Y/Yn), Cz = 200 (Y/Yn - Z/Zn).
 Vec3 xyzToYcxcz(const Vec3& xyz);
 Vec3 ycxczToXyz(const Vec3& ycxcz);
@@ -28,7 +28,7 @@ Vec3 ycxczToXyz(const Vec3& ycxcz);
 // CIE 1976 L*a*b* relative to whitePointXyz().
 Vec3 xyzToLab(const Vec3& xyz);
 
-// Hunt effect (FLIP section 3.2): chroma scaled by luminance, a* and b* times 0.01 L*.
+// Hunt effect, as FLIP models it: chroma scaled by luminance, a* and b* times 0.01 L*.
 Vec3 huntAdjust(const Vec3& lab);
 
 // HyAB distance (Abasi et al. 2020, used by FLIP): |dL| + sqrt(da^2 + db^2).

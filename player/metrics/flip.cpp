@@ -20,22 +20,20 @@ namespace {
 using detail::Plane;
 using detail::Vec3;
 
-// Colour-pipeline constants (paper section 3.2): error compression exponent qc, and the
-// mapping of the compressed error to [0, 1]: errors below pc * cmax take [0, pt], the rest
-// (pt, 1].
+// Colour-pipeline constants: the error compression exponent qc, and the mapping of the
+// compressed error to [0, 1]: errors below pc * cmax take [0, pt], the rest (pt, 1].
 constexpr double kQc = 0.7;
 constexpr double kPc = 0.4;
 constexpr double kPt = 0.95;
-// Feature-pipeline constants (section 3.3): the detectors' Gaussian has a standard
-// deviation of 0.5 * w degrees with w = 0.082 degrees, and the feature difference is
-// raised to qf = 0.5.
+// Feature-pipeline constants: the detectors' Gaussian has a standard deviation of 0.5 * w
+// degrees with w = 0.082 degrees, and the feature difference is raised to qf = 0.5.
 constexpr double kFeatureWidthDegrees = 0.082;
 constexpr double kQf = 0.5;
 constexpr double kMaxPpd = 10000.0; // beyond any display; keeps the kernels finite
 
-// Contrast sensitivity functions as spatial filters (section 3.1, eq. 2 and Table 1): per
-// YCxCz channel a sum of two Gaussians S(x) = sum_i a_i sqrt(pi / b_i) exp(-pi^2 x^2 / b_i),
-// x in degrees of visual angle.
+// Contrast sensitivity functions as spatial filters: per YCxCz channel a sum of two
+// Gaussians S(x) = sum_i a_i sqrt(pi / b_i) exp(-pi^2 x^2 / b_i), x in degrees of visual
+// angle.
 struct CsfTerm {
     double a, b;
 };
@@ -95,8 +93,8 @@ std::vector<CsfComponent> csfComponents(const std::array<CsfTerm, 2>& terms, dou
     return components;
 }
 
-// Edge and point detectors (section 3.3): first and second derivatives of a Gaussian with
-// sigma = 0.5 w ppd pixels, radius ceil(3 sigma). The 2D detector along x is d(x) g(y);
+// Edge and point detectors: first and second derivatives of a Gaussian with sigma =
+// 0.5 w ppd pixels, radius ceil(3 sigma). The 2D detector along x is d(x) g(y);
 // its positive weights are normalised to sum 1 and its negative weights to sum -1. That
 // normalisation factors into d with the same rule and g normalised to sum 1, so the
 // detectors are applied separably. Along y the roles swap.
@@ -176,7 +174,13 @@ void featureMagnitude(const Plane& luminance, const std::vector<float>& derivati
                                   alongY.values[i] * alongY.values[i]);
 }
 
-Preprocessed preprocess(const RgbImage& image, double ppd, const FeatureKernels& features)
+// Planes reused by both images' filter passes (panel-size planes are 33 MB each).
+struct Workspace {
+    Plane luminance, scratch, first, second;
+};
+
+Preprocessed preprocess(const RgbImage& image, double ppd, const FeatureKernels& features,
+                        Workspace& work)
 {
     const int w = image.width, h = image.height;
     const size_t n = image.pixelCount();
@@ -197,13 +201,17 @@ Preprocessed preprocess(const RgbImage& image, double ppd, const FeatureKernels&
 
     // Step 2 (feature pipeline): edges and points on the unfiltered luminance Y/Yn, which
     // is (Y + 16) / 116 of YCxCz and lies in [0, 1].
-    Plane luminance{w, h, std::vector<float>(n)};
+    Plane& luminance = work.luminance;
+    Plane& scratch = work.scratch;
+    Plane& first = work.first;
+    Plane& second = work.second;
+    luminance.width = w;
+    luminance.height = h;
+    luminance.values.resize(n);
     for (size_t i = 0; i < n; ++i)
         luminance.values[i] = (ycxcz[0].values[i] + 16.0f) / 116.0f;
-    Plane scratch, first, second; // reused by every filter pass below
     featureMagnitude(luminance, features.edge, features.gaussian, scratch, first, second, out.edges);
     featureMagnitude(luminance, features.point, features.gaussian, scratch, first, second, out.points);
-    luminance = Plane{};
 
     // Step 3 (colour pipeline): CSF filtering of each opponent channel; a channel whose
     // filter has two Gaussian terms is the weighted sum of the two filtered copies.
@@ -243,7 +251,7 @@ Vec3 huntLabOfLinearRgb(const Vec3& rgb)
     return detail::huntAdjust(detail::xyzToLab(detail::linearRgbToXyz(rgb)));
 }
 
-// Maps a HyAB distance to the colour error in [0, 1] (section 3.2): compress with qc, then
+// Maps a HyAB distance to the colour error in [0, 1]: compress with qc, then
 // map [0, pc cmax) linearly onto [0, pt) and [pc cmax, cmax] onto [pt, 1], where cmax is
 // the compressed distance between Hunt-adjusted pure green and pure blue, the largest in
 // the gamut.
@@ -276,8 +284,10 @@ std::vector<float> flipErrorMap(const RgbImage& reference, const RgbImage& test,
                                     std::to_string(int(kMaxPpd)) + "], got " +
                                     std::to_string(ppd));
     const FeatureKernels features = featureKernels(ppd);
-    const Preprocessed ref = preprocess(reference, ppd, features);
-    const Preprocessed tst = preprocess(test, ppd, features);
+    Workspace work;
+    const Preprocessed ref = preprocess(reference, ppd, features, work);
+    const Preprocessed tst = preprocess(test, ppd, features, work);
+    work = Workspace{};
 
     std::vector<float> error(reference.pixelCount());
     for (size_t i = 0; i < error.size(); ++i) {

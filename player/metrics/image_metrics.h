@@ -89,7 +89,7 @@ double ssim(const RgbImage& reference, const RgbImage& test, std::span<const uin
 // Per-pixel perceived difference in 0..1 (0 = identical) for images viewed at `ppd` pixels
 // per degree of visual angle. Inputs are sRGB-encoded; values are clamped to 0..255 first.
 // Colour pipeline: sRGB -> linear RGB -> XYZ (D65) -> YCxCz; each channel filtered with the
-// paper's contrast sensitivity functions (sums of Gaussians, eq. 2 and Table 1); back to
+// paper's contrast sensitivity functions (sums of Gaussians, constants in flip.cpp); back to
 // linear RGB, clamped to [0,1], -> CIELAB with the Hunt adjustment (a*, b* scaled by
 // 0.01 L*); HyAB distance; raised to qc = 0.7 and mapped to [0,1] with pc = 0.4, pt = 0.95
 // relative to the HyAB^qc distance between Hunt-adjusted green and blue.

@@ -12,7 +12,7 @@ namespace lfd::metrics {
 
 namespace {
 
-// The paper's parameters (section III-C): 11x11 Gaussian window, sigma 1.5, K1 = 0.01,
+// The paper's parameters: 11x11 Gaussian window, sigma 1.5, K1 = 0.01,
 // K2 = 0.03, dynamic range L = 255 for 8-bit images.
 constexpr int kWindowSize = 11;
 constexpr double kWindowSigma = 1.5;
