@@ -73,9 +73,10 @@ double psnr(const RgbImage& reference, const RgbImage& test);
 // with an 11x11 circular-symmetric Gaussian weighting window of sigma 1.5 (normalised to
 // sum 1), C1 = (K1 L)^2, C2 = (K2 L)^2, K1 = 0.01, K2 = 0.03, L = 255, as in the paper.
 // Colour: computed on Rec. 601 luma Y' = 0.299 R + 0.587 G + 0.114 B of the stored values.
-// Why luma and not an average over R, G, B: the paper defines SSIM for greyscale images
-// and its reference implementation converts colour with exactly this luma (rgb2gray);
-// luma also keeps these numbers identical to the SSIM lfd-bench has reported all along.
+// Why luma and not an average over R, G, B: the paper defines and evaluates SSIM on
+// greyscale images, and colour images are usually reduced to exactly this luma (MATLAB's
+// rgb2gray) before applying it; luma also keeps these numbers the same as the SSIM
+// lfd-bench has reported all along, and weights channels as the eye does.
 // Windows: only positions where the whole window lies inside the image (no padding, as the
 // paper's reference code), and no automatic downsampling; images smaller than 11 pixels
 // use the largest odd window that fits (same sigma, renormalised).
