@@ -6,16 +6,21 @@
 // bilinear scheme evaluates too), so a point with Bfr coordinates (u, v) lies at
 // barycentric weights (1 - u - v, u, v) of the face's corners.
 //
-// Candidates:
+// First, the boundary polygon triangulated without interior points: any triangulation of
+// V boundary points with I interior points has V - 2 + 2I triangles, so if this one
+// meets the bound nothing beats it (rates 2, 1, 1: 2 triangles, where Bfr, which always
+// adds an interior point for unequal rates, fans 4). Most oversized triangles of the
+// samples end here. Otherwise candidates, each bisected where edges exceed the bound,
+// both as they are and relaxed (edge flips and smoothing of interior points) first:
 // - OpenSubdiv's Bfr::Tessellation for the face's edge rates, with inner rate 1 to 3 (one
-//   interior point) and with the smallest inner rate whose interior grid meets the bound.
-//   Bfr's transition strip between a boundary and a grid of different rates can still
-//   exceed the bound on a long thin face; those edges are then bisected (below).
-// - For faces with few boundary points, the boundary polygon triangulated without
-//   interior points, then bisected. For unequal edge rates Bfr always adds an interior
-//   point and fans the boundary around it (rates 2, 1, 1: 4 triangles), while a triangle
-//   with one edge cut in two needs only 2 (its median is shorter than its longer other
-//   edge). Measured on the samples, this candidate wins on most small faces.
+//   interior point) and with the smallest inner rate whose interior grid meets the bound
+//   (Bfr's transition strip between boundary and grid can still exceed it on a long thin
+//   face);
+// - for faces with few boundary points, the boundary-only triangulations.
+// Measured on the gallery sample's faces that need interior points (bounds 100, 40, 20,
+// 10 px): Bfr's fan relaxed and bisected wins about half, Bfr's grid (as is or relaxed)
+// most of the rest, the boundary-only triangulation bisected the remainder (at 10 px:
+// 32, 28 and 16 faces).
 // Every candidate has the same boundary points, so the choice changes nothing at shared
 // edges.
 //
@@ -49,6 +54,7 @@ namespace Bfr = OpenSubdiv::Bfr;
 // faces with more, the long diagonals it starts from bisect into more triangles than
 // Bfr's grid needs (measured on the gallery sample at 10 px: 30% more).
 constexpr size_t kMaxBoundaryOnlyPoints = 24;
+constexpr int kRelaxRounds = 4;
 
 double distance(const glm::vec3& a, const glm::vec3& b) { return glm::length(glm::dvec3(b) - glm::dvec3(a)); }
 
@@ -162,6 +168,100 @@ bool bisectLongEdges(const std::array<glm::vec3, 3>& corners, LocalMesh& mesh, d
         }
     }
     return true;
+}
+
+// Twice the signed area of triangle (a, b, c) in the face's parameter plane (barycentric
+// weights 1 and 2); positive for the face's winding. The plane maps affinely onto the
+// face, so a triangle keeps its winding on the face exactly when it does here.
+double parametricArea(const LocalMesh& mesh, size_t a, size_t b, size_t c)
+{
+    const glm::dvec2 pa(mesh.weights[a].y, mesh.weights[a].z), pb(mesh.weights[b].y, mesh.weights[b].z),
+        pc(mesh.weights[c].y, mesh.weights[c].z);
+    return (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
+}
+
+// Shortens edges without adding points, so that fewer of them need bisecting: flips the
+// diagonal of two triangles to the shorter one where both stay properly wound (each flip
+// shortens the total edge length, so this ends), then moves every interior point to the
+// centroid of its neighbours where none of its triangles flips over. Interior points
+// only: the boundary, which neighbouring faces share, never moves.
+void relax(const std::array<glm::vec3, 3>& corners, LocalMesh& mesh, size_t boundaryCount, int rounds)
+{
+    constexpr double kMinArea = 1e-12;
+    auto key = [](size_t a, size_t b) { return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b)); };
+    for (int round = 0; round < rounds; ++round) {
+        // Flip passes until none applies, at most 8 per round (more changed no triangle
+        // count on the samples; the rounds repeat them anyway).
+        for (int pass = 0; pass < 8; ++pass) {
+            std::unordered_map<uint64_t, std::array<size_t, 2>> trianglesOf;
+            for (size_t t = 0; t < mesh.triangles.size(); ++t)
+                for (size_t e = 0; e < 3; ++e) {
+                    auto [it, inserted] = trianglesOf.try_emplace(
+                        key(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3]), std::array<size_t, 2>{t, t});
+                    if (!inserted)
+                        it->second[1] = t;
+                }
+            std::vector<bool> touched(mesh.triangles.size(), false);
+            bool flipped = false;
+            for (const auto& [edgeKey, beside] : trianglesOf) {
+                const size_t t0 = beside[0], t1 = beside[1];
+                if (t0 == t1 || touched[t0] || touched[t1])
+                    continue;
+                const size_t a = size_t(edgeKey >> 32), b = size_t(edgeKey & 0xffffffffu);
+                // t0 = (a, b, c) and t1 = (b, a, d) in winding order, whichever holds a -> b.
+                auto opposite = [&](size_t t) {
+                    for (size_t e = 0; e < 3; ++e)
+                        if (mesh.triangles[t][e] != a && mesh.triangles[t][e] != b)
+                            return e;
+                    return size_t(0);
+                };
+                const std::array<size_t, 3>& tri0 = mesh.triangles[t0];
+                const size_t e0 = opposite(t0);
+                const bool forward = tri0[(e0 + 1) % 3] == a; // (c, a, b): t0 holds a -> b
+                const size_t from = forward ? a : b, to = forward ? b : a;
+                const size_t c = tri0[e0], d = mesh.triangles[t1][opposite(t1)];
+                if (distance(mesh.points[c], mesh.points[d]) >= distance(mesh.points[a], mesh.points[b]))
+                    continue;
+                // New triangles (from, d, c) and (d, to, c): the quad from, d, to, c.
+                if (parametricArea(mesh, from, d, c) <= kMinArea || parametricArea(mesh, d, to, c) <= kMinArea)
+                    continue;
+                mesh.triangles[t0] = {from, d, c};
+                mesh.triangles[t1] = {d, to, c};
+                touched[t0] = touched[t1] = true;
+                flipped = true;
+            }
+            if (!flipped)
+                break;
+        }
+        // Smoothing.
+        std::vector<std::vector<size_t>> around(mesh.points.size());
+        for (size_t t = 0; t < mesh.triangles.size(); ++t)
+            for (size_t v : mesh.triangles[t])
+                if (v >= boundaryCount)
+                    around[v].push_back(t);
+        for (size_t v = boundaryCount; v < mesh.points.size(); ++v) {
+            glm::dvec3 sum(0.0);
+            size_t count = 0;
+            for (size_t t : around[v])
+                for (size_t u : mesh.triangles[t])
+                    if (u != v) {
+                        sum += mesh.weights[u];
+                        ++count;
+                    }
+            if (count == 0)
+                continue;
+            const glm::dvec3 previous = mesh.weights[v];
+            mesh.weights[v] = sum / double(count);
+            bool wound = true;
+            for (size_t t : around[v])
+                wound = wound && parametricArea(mesh, mesh.triangles[t][0], mesh.triangles[t][1],
+                                                mesh.triangles[t][2]) > kMinArea;
+            if (wound)
+                mesh.points[v] = interiorPosition(corners, mesh.weights[v]);
+            else
+                mesh.weights[v] = previous;
+        }
+    }
 }
 
 FacePattern toPattern(const LocalMesh& mesh, size_t boundaryCount)
@@ -324,16 +424,35 @@ FacePattern facePattern(const std::array<glm::vec3, 3>& corners, const std::arra
     if (boundary.size() != boundaryPointCount(rates))
         throw BakeError("tessellation: boundary point count does not match the edge rates");
 
+    // Any triangulation of V boundary points with I interior points has V - 2 + 2I
+    // triangles: one without interior points that meets the bound cannot be beaten (and
+    // is what most oversized triangles of real scenes get, cheaply).
+    if (boundary.size() <= kMaxBoundaryOnlyPoints)
+        if (std::optional<LocalMesh> mesh = boundaryOnlyMesh(rates, boundary, Shape::ShortestLongestEdge)) {
+            FacePattern fewest = toPattern(*mesh, boundary.size());
+            if (fewest.longestEdge <= bound)
+                return fewest;
+        }
+
     std::optional<FacePattern> best;
     auto consider = [&](LocalMesh mesh) {
         // Generous: a face needs about area / (0.43 bound^2) triangles; far more than its
         // pattern's own count means bisection is chasing float rounding.
         const size_t maxTriangles = 4 * (mesh.triangles.size() + boundary.size() * boundary.size());
-        if (!bisectLongEdges(corners, mesh, bound, maxTriangles))
-            return;
-        FacePattern candidate = toPattern(mesh, boundary.size());
-        if (!best || better(candidate, *best, bound))
-            best = std::move(candidate);
+        LocalMesh relaxed = mesh;
+        if (bisectLongEdges(corners, mesh, bound, maxTriangles)) {
+            FacePattern candidate = toPattern(mesh, boundary.size());
+            if (!best || better(candidate, *best, bound))
+                best = std::move(candidate);
+        }
+        // The same, relaxed before and after bisection.
+        relax(corners, relaxed, boundary.size(), kRelaxRounds);
+        if (bisectLongEdges(corners, relaxed, bound, maxTriangles)) {
+            relax(corners, relaxed, boundary.size(), kRelaxRounds);
+            FacePattern candidate = toPattern(relaxed, boundary.size());
+            if (!best || better(candidate, *best, bound))
+                best = std::move(candidate);
+        }
     };
 
     // Inner rates 1 to 3 give the patterns with one interior point (a fan around it, or,
