@@ -189,23 +189,26 @@ void relax(const std::array<glm::vec3, 3>& corners, LocalMesh& mesh, size_t boun
 {
     constexpr double kMinArea = 1e-12;
     auto key = [](size_t a, size_t b) { return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b)); };
+    std::vector<std::pair<uint64_t, size_t>> edges;
     for (int round = 0; round < rounds; ++round) {
         // Flip passes until none applies, at most 8 per round (more changed no triangle
         // count on the samples; the rounds repeat them anyway).
         for (int pass = 0; pass < 8; ++pass) {
-            std::unordered_map<uint64_t, std::array<size_t, 2>> trianglesOf;
+            // Edges as (key, triangle), sorted: an interior edge is two equal keys in a row.
+            edges.clear();
             for (size_t t = 0; t < mesh.triangles.size(); ++t)
-                for (size_t e = 0; e < 3; ++e) {
-                    auto [it, inserted] = trianglesOf.try_emplace(
-                        key(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3]), std::array<size_t, 2>{t, t});
-                    if (!inserted)
-                        it->second[1] = t;
-                }
+                for (size_t e = 0; e < 3; ++e)
+                    edges.emplace_back(key(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3]), t);
+            std::sort(edges.begin(), edges.end());
             std::vector<bool> touched(mesh.triangles.size(), false);
             bool flipped = false;
-            for (const auto& [edgeKey, beside] : trianglesOf) {
-                const size_t t0 = beside[0], t1 = beside[1];
-                if (t0 == t1 || touched[t0] || touched[t1])
+            for (size_t i = 0; i + 1 < edges.size(); ++i) {
+                if (edges[i].first != edges[i + 1].first)
+                    continue;
+                const uint64_t edgeKey = edges[i].first;
+                const size_t t0 = edges[i].second, t1 = edges[i + 1].second;
+                ++i;
+                if (touched[t0] || touched[t1])
                     continue;
                 const size_t a = size_t(edgeKey >> 32), b = size_t(edgeKey & 0xffffffffu);
                 // t0 = (a, b, c) and t1 = (b, a, d) in winding order, whichever holds a -> b.
@@ -455,10 +458,11 @@ FacePattern facePattern(const std::array<glm::vec3, 3>& corners, const std::arra
         }
     };
 
-    // Inner rates 1 to 3 give the patterns with one interior point (a fan around it, or,
-    // for equal rates <= 3, the uniform pattern).
-    for (int inner = 1; inner <= 3; ++inner)
-        consider(openSubdivMesh(corners, rates, boundary, inner));
+    // Inner rate 1 gives the fan around one interior point; equal edge rates n <= 3 with
+    // inner rate n give the uniform pattern (inner rates 2 and 3 otherwise repeat the fan).
+    consider(openSubdivMesh(corners, rates, boundary, 1));
+    if (rates[0] == rates[1] && rates[1] == rates[2] && rates[0] >= 2 && rates[0] <= 3)
+        consider(openSubdivMesh(corners, rates, boundary, rates[0]));
     // From inner rate 4 on, interior points lie on a grid of spacing 1/m in barycentric
     // coordinates, so its edges along face edge i measure |edge i| / m: below the largest
     // edge rate (ceil(|edge| / bound)) the grid itself exceeds the bound, and larger
