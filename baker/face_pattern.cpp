@@ -12,15 +12,15 @@
 // adds an interior point for unequal rates, fans 4). Most oversized triangles of the
 // samples end here. Otherwise candidates, each bisected where edges exceed the bound,
 // both as they are and relaxed (edge flips and smoothing of interior points) first:
-// - OpenSubdiv's Bfr::Tessellation for the face's edge rates, with inner rate 1 to 3 (one
-//   interior point) and with the smallest inner rate whose interior grid meets the bound
-//   (Bfr's transition strip between boundary and grid can still exceed it on a long thin
-//   face);
+// - OpenSubdiv's Bfr::Tessellation for the face's edge rates: inner rate 1 (a fan around
+//   one interior point), the uniform pattern for equal rates up to 3, and the smallest
+//   inner rate whose interior grid meets the bound (Bfr's transition strip between
+//   boundary and grid can still exceed it on a long thin face);
 // - for faces with few boundary points, the boundary-only triangulations.
 // Measured on the gallery sample's faces that need interior points (bounds 100, 40, 20,
-// 10 px): Bfr's fan relaxed and bisected wins about half, Bfr's grid (as is or relaxed)
-// most of the rest, the boundary-only triangulation bisected the remainder (at 10 px:
-// 32, 28 and 16 faces).
+// 10 px), each kind wins on some: Bfr's fan relaxed and bisected on about half, Bfr's
+// grid (as is or relaxed) on most of the rest, a boundary-only triangulation bisected on
+// the remainder.
 // Every candidate has the same boundary points, so the choice changes nothing at shared
 // edges.
 //
