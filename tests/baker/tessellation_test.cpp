@@ -292,7 +292,7 @@ TEST(Tessellation, InterpolatesAttributes)
         EXPECT_NEAR(glm::length(scene.vertices.normals[i] - glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
         EXPECT_EQ(scene.vertices.tangents[i], glm::vec4(1, 0, 0, -1));
     }
-    // Midpoints are shared: no two vertices of this seamless quad sit at one position.
+    // Edge points are shared: no two vertices of this seamless quad sit at one position.
     std::set<std::tuple<float, float, float>> unique;
     for (const glm::vec3& p : scene.vertices.positions)
         unique.insert({p.x, p.y, p.z});
@@ -301,7 +301,7 @@ TEST(Tessellation, InterpolatesAttributes)
 
 TEST(Tessellation, RenormalisesInterpolatedNormals)
 {
-    // A bent strip: two corners lean left, two lean right; midpoints must be unit length.
+    // A bent strip: two corners lean left, two lean right; new normals must be unit length.
     Scene scene;
     std::vector<Vertex> v = quadVertices({0, 0}, 4.0f);
     v[0].normal = v[3].normal = glm::normalize(glm::vec3(-1, 0, 1));
