@@ -80,14 +80,21 @@ struct TessellationStats {
     size_t trianglesSplit = 0;        // input triangles that were oversized
     double maxEdgeWorldBefore = 0.0;  // longest edge in scene units (after instance scale)
     double maxEdgeWorldAfter = 0.0;
+    // Mean edge length after, scene units: over every output triangle's edges, and over
+    // the edges of the pieces of split triangles only (how close to the bound cuts land).
+    double meanEdgeWorldAfter = 0.0;
+    double meanPieceEdgeWorld = 0.0;
 };
 
-// Splits every triangle whose longest scene-space edge exceeds maxEdgeWorld (edges are
-// scaled per mesh by meshMaxWorldScale). Edges are split at their midpoints by a rule
-// that depends only on the (position-welded) edge itself, so neighbouring triangles -
-// including across UV/normal seams - split shared edges identically: no T-junctions.
-// Attributes are interpolated per corner; normals/tangents re-normalised. Triangles
-// within the bound are left untouched. Updates primitives' index ranges.
+// Cuts every triangle with a scene-space edge longer than maxEdgeWorld (edges are scaled
+// per mesh by meshMaxWorldScale). Each edge is cut into ceil(length / bound) equal pieces
+// by a rule that depends only on the (position-welded) edge itself, so neighbouring
+// triangles - including across UV/normal seams - cut shared edges identically: no
+// T-junctions. Oversized faces are filled by OpenSubdiv's Bfr::Tessellation for their
+// edge rates, checked to keep every output edge within the bound (face_pattern.h).
+// Attributes are interpolated from each face's own corners; normals/tangents
+// re-normalised. Triangles within the bound are left untouched. Updates primitives'
+// index ranges.
 TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& log);
 
 // ---- triangle_stats.cpp ----------------------------------------------------------

@@ -50,6 +50,8 @@ void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const
     out << "  triangles: " << r.trianglesIn << " in, " << r.trianglesOut << " out ("
         << r.tessellation.trianglesSplit << " oversized split), " << r.vertices << " vertices\n";
     out << "  max edge: " << r.maxEdgePxBefore << " view px before, " << r.maxEdgePxAfter << " after\n";
+    out << "  mean edge after: " << r.meanEdgePxAfter << " view px (" << r.meanPieceEdgePx
+        << " over the pieces of split triangles)\n";
     for (const TextureReport& t : r.textures) {
         out << "  texture " << t.name << (t.srgb ? " (sRGB)" : " (linear)") << ": " << t.source.x << "x"
             << t.source.y;

@@ -21,6 +21,7 @@ struct TextureReport {
 struct BakeReport {
     size_t trianglesIn = 0, trianglesOut = 0, vertices = 0, warnings = 0;
     double maxEdgePxBefore = 0.0, maxEdgePxAfter = 0.0;
+    double meanEdgePxAfter = 0.0, meanPieceEdgePx = 0.0;
     TessellationStats tessellation;
     std::vector<TextureReport> textures;
     std::vector<std::pair<std::string, double>> stageSeconds;

@@ -119,6 +119,8 @@ int bakeScene(const Options& o)
     report.vertices = scene.vertices.size();
     report.maxEdgePxBefore = report.tessellation.maxEdgeWorldBefore / viewPixelWorld;
     report.maxEdgePxAfter = report.tessellation.maxEdgeWorldAfter / viewPixelWorld;
+    report.meanEdgePxAfter = report.tessellation.meanEdgeWorldAfter / viewPixelWorld;
+    report.meanPieceEdgePx = report.tessellation.meanPieceEdgeWorld / viewPixelWorld;
     report.warnings = imported.warnings.size();
     report.peakRssBytes = peakResidentBytes();
     printBakeReport(std::cout, o.output, report);

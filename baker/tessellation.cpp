@@ -1,19 +1,28 @@
-// Tessellation stage: split triangles that would span more than the view-pixel bound.
+// Tessellation stage: cut triangles that would span more than the view-pixel bound.
 //
 // Paper section 5: large triangles were "tessellated ... to ensure that they spanned no
 // more than a hundred pixels", because point rendering only beats rasterisation on small
-// triangles. DESIGN.md section 4: only oversized triangles are split, attributes are
+// triangles. README "Baking", step 3: only oversized triangles are cut, attributes are
 // interpolated, and the result has no cracks (no T-junctions).
 //
-// Crack-freeness: vertices are welded per mesh by exact position, so the two sides of
-// a UV/normal seam see the same welded edge. Whether an edge is split, and where its
-// midpoint lies, depends only on that welded edge (its canonical endpoint positions and
-// the mesh bound), never on the triangle being split. Each side therefore subdivides a
-// shared edge into the same dyadic segments with bit-identical positions. Attributes of a
-// midpoint come from the triangle's own corners, so each side of a seam keeps its own
-// uv/normal at the shared position.
+// Each edge is cut into ceil(length / bound) equal pieces (its rate), not into the next
+// power of two, and each oversized face is filled by OpenSubdiv's Bfr::Tessellation for
+// its three edge rates (face_pattern.cpp picks the inner rate and checks every output
+// edge against the bound).
+//
+// Crack-freeness: vertices are welded per mesh by exact position, so the two sides of a
+// UV/normal seam see the same welded edge. An edge's rate and the positions of its points
+// depend only on that welded edge (its canonical endpoint positions and the mesh bound),
+// never on the face being cut. A tessellation pattern's boundary is fixed by its edge
+// rates alone (Bfr places rate - 1 points along each edge, whatever happens inside the
+// face), so the two faces of a shared edge put bit-identical points on it: every point
+// one side has, the other has too, hence no T-junctions and no cracks, with or without
+// a seam. Attributes of a new point come from the face's own corners, so each side of a
+// seam keeps its own uv/normal at the shared position.
 
 #include "tessellation.h"
+
+#include "face_pattern.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
@@ -33,13 +42,14 @@ constexpr uint32_t kInvalid = std::numeric_limits<uint32_t>::max();
 constexpr size_t kMaxOutputTriangles = size_t(1) << 28;
 static_assert(kMaxOutputTriangles * 3 < std::numeric_limits<uint32_t>::max(),
               "indices of the output must fit uint32_t");
-// Every split at least halves one edge; a stack this deep means float precision ran out.
-constexpr uint32_t kMaxDepth = 96;
+// Most pieces per edge: a face of rate n has about n^2 triangles, so a larger rate could
+// never fit kMaxOutputTriangles anyway (and Bfr's rates are ints).
+constexpr int kMaxEdgeRate = 1 << 14;
 // Input triangles between two progress lines on very large meshes.
 constexpr size_t kProgressInterval = size_t(1) << 20;
 
 // ---- Small open-addressing hash map ---------------------------------------------------
-// The weld and midpoint maps see millions of inserts on big meshes; linear probing over
+// The weld, edge-rate and edge-point maps see millions of inserts on big meshes; linear probing over
 // two flat arrays allocates once per growth instead of once per entry.
 
 uint64_t mix64(uint64_t x)
@@ -98,6 +108,15 @@ public:
         return value;
     }
 
+    // The value stored for key, kInvalid if absent.
+    uint32_t find(const Key& key) const
+    {
+        for (size_t i = hashKey(key) & mask_; values_[i] != kInvalid; i = (i + 1) & mask_)
+            if (keys_[i] == key)
+                return values_[i];
+        return kInvalid;
+    }
+
 private:
     static size_t capacityFor(size_t expected)
     {
@@ -139,36 +158,32 @@ double edgeLength2(const glm::vec3& a, const glm::vec3& b)
     return dx * dx + dy * dy + dz * dz;
 }
 
-// ---- Splitting one mesh ---------------------------------------------------------------
+// ---- Tessellating one mesh ------------------------------------------------------------
 
-// Splits the triangles of one mesh against one bound (object units). Holds the weld and
-// midpoint maps, which must live as long as any triangle of the mesh is being split.
-class MeshSplitter {
+// Tessellates the triangles of one mesh against one bound (object units). Holds the weld,
+// edge-rate and edge-point maps, which must live as long as any triangle of the mesh is
+// being tessellated.
+class MeshTessellator {
 public:
     // weldOf: per-vertex welded id for the whole vertex buffer; entries of this mesh's
     // vertices are (re)written by weld(), new vertices are appended.
-    MeshSplitter(VertexStreams& vertices, std::vector<uint32_t>& weldOf, double bound,
-                 size_t expectedVertices)
-        : v_(vertices), weldOf_(weldOf), bound2_(bound * bound),
-          weldByPosition_(expectedVertices), midpointOf_(expectedVertices / 2)
+    MeshTessellator(VertexStreams& vertices, std::vector<uint32_t>& weldOf, double bound,
+                    size_t expectedVertices, std::string label)
+        : v_(vertices), weldOf_(weldOf), bound_(bound), label_(std::move(label)), weldByPosition_(expectedVertices),
+          rateOf_(expectedVertices), edgePointsOf_(expectedVertices / 2)
     {
         weldPosition_.reserve(expectedVertices);
     }
 
     void weld(uint32_t vertex) { weldOf_[vertex] = weldId(v_.positions[vertex]); }
 
-    // Appends triangle (a, b, c), or the pieces it splits into, to out (3 indices each).
-    // Returns whether it was split.
-    bool split(uint32_t a, uint32_t b, uint32_t c, std::vector<uint32_t>& out);
+    // Appends triangle (a, b, c), or the pieces it is cut into, to out (3 indices each).
+    // Returns whether it was cut. `budget`: how many more output triangles are allowed.
+    bool tessellate(uint32_t a, uint32_t b, uint32_t c, size_t budget, std::vector<uint32_t>& out);
 
     size_t unresolved() const { return unresolved_; }
 
 private:
-    struct Tri {
-        std::array<uint32_t, 3> v;
-        uint32_t depth;
-    };
-
     uint32_t weldId(const glm::vec3& position)
     {
         const glm::vec3 p = canonicalPosition(position);
@@ -179,147 +194,202 @@ private:
         return id;
     }
 
-    // The split rule: a function of the welded edge only, so every triangle sharing it
-    // (on either side of a seam) decides the same way.
-    bool splitsEdge(uint32_t wa, uint32_t wb) const
-    {
-        if (wa == wb)
-            return false;
-        const glm::vec3& pLo = weldPosition_[std::min(wa, wb)];
-        const glm::vec3& pHi = weldPosition_[std::max(wa, wb)];
-        const double length2 = edgeLength2(pLo, pHi);
-        if (!std::isfinite(length2) || !(length2 > bound2_))
-            return false;
-        // note: an edge whose midpoint rounds onto an endpoint cannot be split further
-        // (float precision); keeping it avoids both an endless loop and a zero-length edge.
-        const glm::vec3 mid = 0.5f * (pLo + pHi);
-        return std::isfinite(mid.x) && std::isfinite(mid.y) && std::isfinite(mid.z) &&
-               mid != pLo && mid != pHi;
-    }
-
-    uint32_t midpoint(uint32_t va, uint32_t vb);
+    int edgeRate(uint32_t wa, uint32_t wb);
+    glm::vec3 edgePoint(uint32_t wa, uint32_t wb, int rate, int k) const;
+    uint32_t edgePoints(uint32_t va, uint32_t vb, int rate);
+    uint32_t appendVertex();
 
     VertexStreams& v_;
     std::vector<uint32_t>& weldOf_;
-    double bound2_;
+    double bound_;
+    std::string label_; // for messages
     std::vector<glm::vec3> weldPosition_; // canonical position per welded id
     FlatMap<PositionKey> weldByPosition_;
-    FlatMap<uint64_t> midpointOf_; // vertex pair -> midpoint vertex
-    std::vector<Tri> stack_;
+    FlatMap<uint64_t> rateOf_;       // welded edge -> pieces
+    FlatMap<uint64_t> edgePointsOf_; // vertex pair -> first of its rate - 1 edge points
+    std::vector<uint32_t> boundaryIndex_;
+    std::vector<glm::vec3> boundaryPosition_;
     size_t unresolved_ = 0;
 };
 
-// Midpoint vertex of the edge between vertices va and vb. One vertex per vertex pair:
-// triangles that share both corner vertices (same side of any seam) share the midpoint,
-// so the index topology stays connected.
-uint32_t MeshSplitter::midpoint(uint32_t va, uint32_t vb)
+// Point k of `rate` points along welded edge (wa, wb), counted from wa. Computed from the
+// edge's canonical endpoint order (lower welded id first) and its canonical point number,
+// so every face that has this edge - on either side of a UV/normal seam, whichever way it
+// runs along the edge - gets the bit-identical position.
+glm::vec3 MeshTessellator::edgePoint(uint32_t wa, uint32_t wb, int rate, int k) const
 {
-    if (v_.positions.size() >= kInvalid)
-        throw BakeError("tessellation: more than 2^32 - 1 vertices; raise the edge bound");
+    const bool forward = wa < wb;
+    const glm::dvec3 lo(weldPosition_[forward ? wa : wb]);
+    const glm::dvec3 hi(weldPosition_[forward ? wb : wa]);
+    const int canonical = forward ? k : rate - k;
+    return glm::vec3(lo + (hi - lo) * (double(canonical) / double(rate)));
+}
+
+// The rate rule: ceil(length / bound) pieces, a function of the welded edge only, so
+// every face sharing the edge cuts it the same way. (A dyadic split would round up to the
+// next power of two: an edge of 2.01 bounds became 4 pieces, now 3.) Raised where float
+// rounding of the points would leave a piece a hair over the bound; lowered where the
+// edge is too short for its coordinates' float precision to place distinct points.
+int MeshTessellator::edgeRate(uint32_t wa, uint32_t wb)
+{
+    if (wa == wb)
+        return 1;
+    const uint64_t key = pairKey(wa, wb);
+    if (const uint32_t known = rateOf_.find(key); known != kInvalid)
+        return int(known);
+
+    const glm::vec3& pLo = weldPosition_[std::min(wa, wb)];
+    const glm::vec3& pHi = weldPosition_[std::max(wa, wb)];
+    const double length = std::sqrt(edgeLength2(pLo, pHi));
+    int rate = 1;
+    if (std::isfinite(length) && length > bound_) {
+        const float magnitude = std::max({std::abs(pLo.x), std::abs(pLo.y), std::abs(pLo.z), std::abs(pHi.x),
+                                          std::abs(pHi.y), std::abs(pHi.z)});
+        const double resolvable = 8.0 * double(std::numeric_limits<float>::epsilon()) * double(magnitude);
+        const double finest = resolvable > 0.0 ? std::floor(length / resolvable) : double(kMaxEdgeRate);
+        const double wanted = std::ceil(length / bound_);
+        const int cap = int(std::clamp(finest, 1.0, double(kMaxEdgeRate)));
+        rate = int(std::min(wanted, double(cap)));
+        auto fits = [&](int n) {
+            glm::vec3 previous = pLo;
+            for (int k = 1; k <= n; ++k) {
+                const glm::vec3 next = k == n ? pHi : edgePoint(std::min(wa, wb), std::max(wa, wb), n, k);
+                if (edgeLength2(previous, next) > bound_ * bound_)
+                    return false;
+                previous = next;
+            }
+            return true;
+        };
+        while (rate < cap && !fits(rate))
+            ++rate;
+        if (!fits(rate))
+            ++unresolved_;
+    }
+    rateOf_.findOrInsert(key, uint32_t(rate));
+    return rate;
+}
+
+uint32_t MeshTessellator::appendVertex()
+{
+    if (v_.positions.size() >= size_t(std::numeric_limits<int32_t>::max()))
+        throw BakeError("tessellation: more than 2^31 - 1 vertices; raise the edge bound");
+    const auto index = uint32_t(v_.positions.size());
+    v_.positions.emplace_back();
+    if (!v_.normals.empty())
+        v_.normals.emplace_back();
+    if (!v_.tangents.empty())
+        v_.tangents.emplace_back();
+    if (!v_.uvs.empty())
+        v_.uvs.emplace_back();
+    weldOf_.push_back(kInvalid);
+    return index;
+}
+
+// Interpolated attributes of a new vertex from corner vertices and their weights (the
+// face's own corners, or an edge's two vertices): uv linearly, normal and tangent
+// re-normalised, tangent handedness from the heaviest corner. Weights that cancel out a
+// direction (opposite normals) keep the heaviest corner's instead of dividing by zero.
+template <size_t N>
+void interpolateAttributes(VertexStreams& v, uint32_t target, const std::array<uint32_t, N>& from,
+                           const std::array<double, N>& weight)
+{
+    size_t heaviest = 0;
+    for (size_t i = 1; i < N; ++i)
+        if (weight[i] > weight[heaviest])
+            heaviest = i;
+    auto direction = [&](auto get) {
+        glm::dvec3 sum(0.0);
+        for (size_t i = 0; i < N; ++i)
+            sum += weight[i] * glm::dvec3(get(from[i]));
+        const double length = glm::length(sum);
+        return length > 1e-20 ? glm::vec3(sum / length) : get(from[heaviest]);
+    };
+    if (!v.normals.empty())
+        v.normals[target] = direction([&](uint32_t i) { return v.normals[i]; });
+    if (!v.tangents.empty())
+        v.tangents[target] = glm::vec4(direction([&](uint32_t i) { return glm::vec3(v.tangents[i]); }),
+                                       v.tangents[from[heaviest]].w);
+    if (!v.uvs.empty()) {
+        glm::dvec2 uv(0.0);
+        for (size_t i = 0; i < N; ++i)
+            uv += weight[i] * glm::dvec2(v.uvs[from[i]]);
+        v.uvs[target] = glm::vec2(uv);
+    }
+}
+
+// First of the rate - 1 points of the edge between vertices va and vb, stored from the
+// lower vertex index to the higher. One run per vertex pair: faces that share both
+// corner vertices (same side of any seam) share the points, so the index topology stays
+// connected; a face on the other side of a seam has its own run, at the same positions,
+// with its own uvs and normals.
+uint32_t MeshTessellator::edgePoints(uint32_t va, uint32_t vb, int rate)
+{
     const auto next = uint32_t(v_.positions.size());
-    const uint32_t found = midpointOf_.findOrInsert(pairKey(va, vb), next);
+    const uint32_t found = edgePointsOf_.findOrInsert(pairKey(va, vb), next);
     if (found != next)
         return found;
-
-    // Position from the canonical welded pair: bit-identical on both sides of a seam.
-    const uint32_t lo = std::min(va, vb);
-    const uint32_t hi = std::max(va, vb);
-    const uint32_t wLo = std::min(weldOf_[va], weldOf_[vb]);
-    const uint32_t wHi = std::max(weldOf_[va], weldOf_[vb]);
-    const glm::vec3 position = 0.5f * (weldPosition_[wLo] + weldPosition_[wHi]);
-    v_.positions.push_back(position);
-
-    // Attributes from this triangle's own corners, re-normalised where they are
-    // directions. Opposite normals sum to ~0: keep one corner's rather than divide by 0.
-    if (!v_.normals.empty()) {
-        const glm::vec3 nLo = v_.normals[lo];
-        const glm::vec3 sum = nLo + v_.normals[hi];
-        const float length = glm::length(sum);
-        v_.normals.push_back(length > 1e-20f ? sum / length : nLo);
+    const uint32_t lo = std::min(va, vb), hi = std::max(va, vb);
+    for (int k = 1; k < rate; ++k) {
+        const uint32_t vertex = appendVertex();
+        v_.positions[vertex] = edgePoint(weldOf_[lo], weldOf_[hi], rate, k);
+        const double t = double(k) / double(rate);
+        interpolateAttributes<2>(v_, vertex, {lo, hi}, {1.0 - t, t});
     }
-    if (!v_.tangents.empty()) {
-        const glm::vec4 tLo = v_.tangents[lo];
-        const glm::vec3 sum = glm::vec3(tLo) + glm::vec3(v_.tangents[hi]);
-        const float length = glm::length(sum);
-        v_.tangents.emplace_back(length > 1e-20f ? sum / length : glm::vec3(tLo), tLo.w);
-    }
-    if (!v_.uvs.empty()) {
-        const glm::vec2 uv = 0.5f * (v_.uvs[lo] + v_.uvs[hi]);
-        v_.uvs.push_back(uv);
-    }
-    const uint32_t welded = weldId(position);
-    weldOf_.push_back(welded);
     return next;
 }
 
-bool MeshSplitter::split(uint32_t a, uint32_t b, uint32_t c, std::vector<uint32_t>& out)
+bool MeshTessellator::tessellate(uint32_t a, uint32_t b, uint32_t c, size_t budget, std::vector<uint32_t>& out)
 {
-    bool wasSplit = false;
-    stack_.clear();
-    stack_.push_back({{a, b, c}, 0});
-    while (!stack_.empty()) {
-        const Tri t = stack_.back();
-        stack_.pop_back();
-
-        // Decide per edge; edge i runs from corner i to corner i + 1.
-        std::array<bool, 3> s{};
-        int splitCount = 0;
-        for (int i = 0; i < 3; ++i) {
-            s[i] = splitsEdge(weldOf_[t.v[i]], weldOf_[t.v[(i + 1) % 3]]);
-            splitCount += s[i] ? 1 : 0;
-        }
-        if (splitCount == 0 || t.depth >= kMaxDepth) {
-            if (splitCount != 0)
-                ++unresolved_;
-            out.insert(out.end(), t.v.begin(), t.v.end());
-            continue;
-        }
-        wasSplit = true;
-
-        std::array<uint32_t, 3> m{kInvalid, kInvalid, kInvalid};
-        for (int i = 0; i < 3; ++i)
-            if (s[i])
-                m[i] = midpoint(t.v[i], t.v[(i + 1) % 3]);
-
-        // Build the children (winding of the parent kept), then push them reversed so
-        // they are emitted in the order listed.
-        std::array<Tri, 4> child{};
-        int childCount = 0;
-        const uint32_t depth = t.depth + 1;
-        auto add = [&](uint32_t x, uint32_t y, uint32_t z) { child[childCount++] = {{x, y, z}, depth}; };
-        const auto& cv = t.v;
-        if (splitCount == 3) {
-            add(cv[0], m[0], m[2]);
-            add(m[0], cv[1], m[1]);
-            add(m[2], m[1], cv[2]);
-            add(m[0], m[1], m[2]);
-        } else if (splitCount == 1) {
-            const int i = s[0] ? 0 : (s[1] ? 1 : 2);
-            const uint32_t ci = cv[i], cj = cv[(i + 1) % 3], ck = cv[(i + 2) % 3];
-            add(ci, m[i], ck);
-            add(m[i], cj, ck);
-        } else {
-            // Rotate so that edges A-B and B-C are split and C-A is not.
-            const int k = !s[0] ? 0 : (!s[1] ? 1 : 2); // the unsplit edge
-            const int r = (k + 1) % 3;
-            const uint32_t A = cv[r], B = cv[(r + 1) % 3], C = cv[(r + 2) % 3];
-            const uint32_t mAB = m[r], mBC = m[(r + 1) % 3];
-            add(mAB, B, mBC);
-            // Quad A, mAB, mBC, C: cut along the shorter diagonal (better-shaped
-            // triangles); ties go to A-mBC so the choice is deterministic.
-            const auto& P = v_.positions;
-            if (edgeLength2(P[A], P[mBC]) <= edgeLength2(P[mAB], P[C])) {
-                add(A, mAB, mBC);
-                add(A, mBC, C);
-            } else {
-                add(A, mAB, C);
-                add(mAB, mBC, C);
-            }
-        }
-        for (int i = childCount - 1; i >= 0; --i)
-            stack_.push_back(child[i]);
+    const std::array<uint32_t, 3> corner = {a, b, c};
+    std::array<int, 3> rates{};
+    for (size_t i = 0; i < 3; ++i)
+        rates[i] = edgeRate(weldOf_[corner[i]], weldOf_[corner[(i + 1) % 3]]);
+    // Every edge within the bound: the face is emitted as it is.
+    if (rates == std::array<int, 3>{1, 1, 1}) {
+        out.insert(out.end(), corner.begin(), corner.end());
+        return false;
     }
-    return wasSplit;
+    // A face of rate n has about n^2 pieces; refuse before allocating them.
+    const double largest = double(std::max({rates[0], rates[1], rates[2]}));
+    if (largest * largest > double(budget))
+        throw BakeError("tessellation: " + label_ + " would exceed " + std::to_string(kMaxOutputTriangles) +
+                        " triangles at this edge bound; raise the bound");
+
+    // Boundary points in Bfr's order (face_pattern.h): corner i, then edge i's points
+    // from corner i towards corner i + 1.
+    boundaryIndex_.clear();
+    boundaryPosition_.clear();
+    for (size_t i = 0; i < 3; ++i) {
+        const uint32_t va = corner[i], vb = corner[(i + 1) % 3];
+        boundaryIndex_.push_back(va);
+        boundaryPosition_.push_back(v_.positions[va]);
+        if (rates[i] == 1)
+            continue;
+        const uint32_t first = edgePoints(va, vb, rates[i]);
+        for (int k = 1; k < rates[i]; ++k) {
+            const uint32_t vertex = va < vb ? first + uint32_t(k - 1) : first + uint32_t(rates[i] - k - 1);
+            boundaryIndex_.push_back(vertex);
+            boundaryPosition_.push_back(v_.positions[vertex]);
+        }
+    }
+
+    const std::array<glm::vec3, 3> position = {v_.positions[a], v_.positions[b], v_.positions[c]};
+    const FacePattern pattern = facePattern(position, rates, boundaryPosition_, bound_);
+    if (!(pattern.longestEdge <= bound_))
+        ++unresolved_;
+
+    // Interior points belong to this face alone.
+    const auto firstInterior = uint32_t(v_.positions.size());
+    for (const glm::dvec3& w : pattern.interiorWeights) {
+        const uint32_t vertex = appendVertex();
+        v_.positions[vertex] = interiorPosition(position, w);
+        interpolateAttributes<3>(v_, vertex, corner, {w.x, w.y, w.z});
+    }
+    const auto boundaryCount = int(boundaryIndex_.size());
+    for (int index : pattern.facets)
+        out.push_back(index < boundaryCount ? boundaryIndex_[size_t(index)]
+                                            : firstInterior + uint32_t(index - boundaryCount));
+    return true;
 }
 
 // ---- Scene bookkeeping ----------------------------------------------------------------
@@ -359,21 +429,27 @@ void validateScene(const Scene& scene)
     }
 }
 
-// Longest edge (object units) of one primitive's triangles.
-double longestEdge(const Scene& scene, const uint32_t* indices, size_t indexCount)
-{
-    const auto& P = scene.vertices.positions;
-    double longest2 = 0.0;
-    for (size_t i = 0; i < indexCount; i += 3) {
-        const glm::vec3& a = P[indices[i]];
-        const glm::vec3& b = P[indices[i + 1]];
-        const glm::vec3& c = P[indices[i + 2]];
-        for (double l2 : {edgeLength2(a, b), edgeLength2(b, c), edgeLength2(c, a)})
-            if (std::isfinite(l2))
-                longest2 = std::max(longest2, l2);
+// Longest edge and total edge length of some triangles (every triangle's three edges;
+// an edge two triangles share counts twice). Non-finite lengths are skipped.
+struct EdgeSummary {
+    double longest = 0.0;
+    double sum = 0.0;
+    size_t count = 0;
+
+    void add(const Scene& scene, const uint32_t* indices, size_t indexCount)
+    {
+        const auto& P = scene.vertices.positions;
+        for (size_t i = 0; i < indexCount; i += 3)
+            for (size_t e = 0; e < 3; ++e) {
+                const double length = std::sqrt(edgeLength2(P[indices[i + e]], P[indices[i + (e + 1) % 3]]));
+                if (!std::isfinite(length))
+                    continue;
+                longest = std::max(longest, length);
+                sum += length;
+                ++count;
+            }
     }
-    return std::sqrt(longest2);
-}
+};
 
 void truncateStreams(VertexStreams& v, size_t count)
 {
@@ -445,27 +521,30 @@ std::vector<Group> groupPrimitives(const Scene& scene, const std::vector<double>
     return groups;
 }
 
-double groupLongestEdge(const Scene& scene, const Group& group)
+// Edges of a group's triangles, object units.
+EdgeSummary groupEdges(const Scene& scene, const Group& group)
 {
-    double longest = 0.0;
+    EdgeSummary edges;
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
-        longest = std::max(longest, longestEdge(scene, scene.indices.data() + prim.firstIndex, prim.indexCount));
+        edges.add(scene, scene.indices.data() + prim.firstIndex, prim.indexCount);
     }
-    return longest;
+    return edges;
 }
 
-// What splitting produced so far, across groups.
+// What tessellation produced so far, across groups.
 struct SplitResult {
     std::vector<std::vector<uint32_t>> indices; // per primitive; used where changed[p]
     std::vector<bool> changed;
-    std::vector<uint32_t> weldOf; // scratch shared by the groups' splitters
+    std::vector<uint32_t> weldOf; // scratch shared by the groups' tessellators
     size_t trianglesOut = 0;
     size_t trianglesSplit = 0;
     size_t unresolved = 0;
+    double pieceEdgeSum = 0.0; // scene units, edges of the pieces of cut triangles
+    size_t pieceEdgeCount = 0;
 };
 
-// Splits the oversized triangles of one group, primitive by primitive.
+// Tessellates the oversized triangles of one group, primitive by primitive.
 void splitGroup(Scene& scene, const Group& group, const std::string& label, SplitResult& result,
                 const Log& log)
 {
@@ -476,14 +555,14 @@ void splitGroup(Scene& scene, const Group& group, const std::string& label, Spli
     // Weld every vertex the group uses.
     if (result.weldOf.size() < scene.vertices.size())
         result.weldOf.resize(scene.vertices.size(), kInvalid);
-    MeshSplitter splitter(scene.vertices, result.weldOf, group.bound, groupTriangles);
+    MeshTessellator tessellator(scene.vertices, result.weldOf, group.bound, groupTriangles, label);
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
         for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; ++i)
-            splitter.weld(scene.indices[i]);
+            tessellator.weld(scene.indices[i]);
     }
 
-    // Split triangle by triangle; each primitive's pieces stay together and in order.
+    // Triangle by triangle; each primitive's pieces stay together and in order.
     size_t groupSplit = 0, groupOut = 0, done = 0;
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
@@ -492,10 +571,15 @@ void splitGroup(Scene& scene, const Group& group, const std::string& label, Spli
         bool primitiveChanged = false;
         for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; i += 3) {
             const size_t before = out.size();
-            if (splitter.split(scene.indices[i], scene.indices[i + 1], scene.indices[i + 2], out)) {
+            if (tessellator.tessellate(scene.indices[i], scene.indices[i + 1], scene.indices[i + 2],
+                                       kMaxOutputTriangles - result.trianglesOut, out)) {
                 ++groupSplit;
                 primitiveChanged = true;
                 result.trianglesOut += (out.size() - before) / 3 - 1;
+                EdgeSummary pieces;
+                pieces.add(scene, out.data() + before, out.size() - before);
+                result.pieceEdgeSum += pieces.sum * group.scale;
+                result.pieceEdgeCount += pieces.count;
                 if (result.trianglesOut > kMaxOutputTriangles)
                     throw BakeError("tessellation: " + label + " would exceed " +
                                     std::to_string(kMaxOutputTriangles) +
@@ -510,7 +594,7 @@ void splitGroup(Scene& scene, const Group& group, const std::string& label, Spli
         if (!primitiveChanged)
             std::vector<uint32_t>().swap(out); // unchanged: the original range is kept
     }
-    result.unresolved += splitter.unresolved();
+    result.unresolved += tessellator.unresolved();
     result.trianglesSplit += groupSplit;
     log.info("tessellation: " + label + ": " + std::to_string(groupTriangles) + " -> " +
              std::to_string(groupOut) + " triangles (" + std::to_string(groupSplit) + " split)");
@@ -564,7 +648,7 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
     const size_t vertexCountIn = scene.vertices.size();
     try {
         for (uint32_t g = 0; g < groups.size(); ++g) {
-            const double longest = groupLongestEdge(scene, groups[g]);
+            const double longest = groupEdges(scene, groups[g]).longest;
             stats.maxEdgeWorldBefore = std::max(stats.maxEdgeWorldBefore, longest * groups[g].scale);
             if (longest > groups[g].bound)
                 splitGroup(scene, groups[g], meshLabel(scene, g), result, log);
@@ -583,15 +667,25 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
 
     // Report.
     stats.trianglesOut = scene.triangleCount();
-    for (const Group& group : groups)
-        stats.maxEdgeWorldAfter = std::max(stats.maxEdgeWorldAfter, groupLongestEdge(scene, group) * group.scale);
+    double edgeSum = 0.0;
+    size_t edgeCount = 0;
+    for (const Group& group : groups) {
+        const EdgeSummary edges = groupEdges(scene, group);
+        stats.maxEdgeWorldAfter = std::max(stats.maxEdgeWorldAfter, edges.longest * group.scale);
+        edgeSum += edges.sum * group.scale;
+        edgeCount += edges.count;
+    }
+    stats.meanEdgeWorldAfter = edgeCount > 0 ? edgeSum / double(edgeCount) : 0.0;
+    stats.meanPieceEdgeWorld = result.pieceEdgeCount > 0 ? result.pieceEdgeSum / double(result.pieceEdgeCount) : 0.0;
     if (result.unresolved > 0)
         log.warn("tessellation: " + std::to_string(result.unresolved) +
-                 " triangles could not be split further (float precision); they exceed the bound");
+                 " edges or triangles could not be cut within the bound (float precision); they exceed it");
     log.info("tessellation: " + std::to_string(stats.trianglesIn) + " -> " +
              std::to_string(stats.trianglesOut) + " triangles (" + std::to_string(stats.trianglesSplit) +
              " split), longest edge " + std::to_string(stats.maxEdgeWorldBefore) + " -> " +
-             std::to_string(stats.maxEdgeWorldAfter) + " scene units");
+             std::to_string(stats.maxEdgeWorldAfter) + " scene units, mean edge " +
+             std::to_string(stats.meanEdgeWorldAfter) + " (pieces of split triangles " +
+             std::to_string(stats.meanPieceEdgeWorld) + ")");
     return stats;
 }
 

@@ -1,8 +1,10 @@
 // Tessellation stage: the bound holds, area and uv area are preserved, closed meshes stay
 // closed (OpenMesh) with no T-junctions across UV/normal seams, attributes are
-// interpolated, small triangles are untouched, instance scale is respected.
+// interpolated, small triangles are untouched, instance scale is respected; an edge is
+// cut into ceil(length / bound) pieces; face patterns cover their face.
 
 #include "bake.h"
+#include "face_pattern.h"
 #include "tessellation.h"
 
 #include <gtest/gtest.h>
@@ -290,7 +292,7 @@ TEST(Tessellation, InterpolatesAttributes)
         EXPECT_NEAR(glm::length(scene.vertices.normals[i] - glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
         EXPECT_EQ(scene.vertices.tangents[i], glm::vec4(1, 0, 0, -1));
     }
-    // Midpoints are shared: no two vertices of this seamless quad sit at one position.
+    // Edge points are shared: no two vertices of this seamless quad sit at one position.
     std::set<std::tuple<float, float, float>> unique;
     for (const glm::vec3& p : scene.vertices.positions)
         unique.insert({p.x, p.y, p.z});
@@ -299,7 +301,7 @@ TEST(Tessellation, InterpolatesAttributes)
 
 TEST(Tessellation, RenormalisesInterpolatedNormals)
 {
-    // A bent strip: two corners lean left, two lean right; midpoints must be unit length.
+    // A bent strip: two corners lean left, two lean right; new normals must be unit length.
     Scene scene;
     std::vector<Vertex> v = quadVertices({0, 0}, 4.0f);
     v[0].normal = v[3].normal = glm::normalize(glm::vec3(-1, 0, 1));
@@ -596,6 +598,134 @@ TEST(Tessellation, LargeRandomClosedMeshStaysClosed)
     EXPECT_EQ(topology.degenerateFaces, 0u);
     // Torus: Euler characteristic 0, so V = F / 2.
     EXPECT_EQ(topology.weldedVertices * 2, topology.faces);
+}
+
+TEST(Tessellation, EdgeOfKBoundsPlusEpsilonBecomesKPlusOnePieces)
+{
+    // A long edge on the x axis with its apex close by: the rate rule cuts the edge into
+    // ceil(length / bound) = k + 1 pieces, not the next power of two (4 for k = 2).
+    const double bound = 1.0;
+    for (int k = 1; k <= 6; ++k) {
+        const float length = float(k * bound) + 1e-3f;
+        Scene scene;
+        std::vector<Vertex> v(3);
+        v[0].position = {0, 0, 0};
+        v[1].position = {length, 0, 0};
+        v[2].position = {0.5f * length, 0.3f, 0};
+        addPrimitive(scene, v, {0, 1, 2});
+        addMesh(scene, "long", 1);
+        tessellateMeshes(scene, bounds(scene, bound), unitScales(scene), Log{});
+        std::set<float> onEdge;
+        for (const glm::vec3& p : scene.vertices.positions)
+            if (p.y == 0.0f && p.z == 0.0f)
+                onEdge.insert(p.x);
+        EXPECT_EQ(onEdge.size(), size_t(k + 2)) << "k = " << k; // k + 1 pieces
+        // Equal pieces.
+        float previous = 0.0f;
+        for (float x : onEdge) {
+            if (x > 0.0f) {
+                EXPECT_NEAR(x - previous, length / float(k + 1), 1e-5f) << "k = " << k;
+            }
+            previous = x;
+        }
+        EXPECT_LE(longestEdge(scene), bound) << "k = " << k;
+        EXPECT_NEAR(worldArea(scene), 0.15 * length, 1e-5) << "k = " << k;
+    }
+}
+
+TEST(Tessellation, FacePatternsCoverTheFaceWithinTheBound)
+{
+    // Every pattern (OpenSubdiv's, bisected, or boundary-only) keeps the face's boundary
+    // points, covers its area exactly once with its winding, and meets the bound; a
+    // face with one edge cut in two becomes 2 triangles (Bfr alone would fan 4).
+    const std::array<glm::vec3, 3> corners = {glm::vec3(0, 0, 0), glm::vec3(7.3f, 0.4f, 0), glm::vec3(2.1f, 5.2f, 0)};
+    const double bound = 1.0;
+    auto lerp = [&](int i, int k, int n) {
+        const glm::dvec3 a(corners[size_t(i)]), b(corners[size_t(i + 1) % 3]);
+        return glm::vec3(a + (b - a) * (double(k) / n));
+    };
+    const double faceArea = 0.5 * glm::length(glm::cross(glm::dvec3(corners[1] - corners[0]), glm::dvec3(corners[2] - corners[0])));
+    std::array<int, 3> rates{};
+    for (int i = 0; i < 3; ++i)
+        rates[size_t(i)] = int(std::ceil(glm::length(glm::dvec3(corners[size_t(i + 1) % 3] - corners[size_t(i)])) / bound));
+    std::vector<glm::vec3> boundary;
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < rates[size_t(i)]; ++k)
+            boundary.push_back(lerp(i, k, rates[size_t(i)]));
+    ASSERT_EQ(boundary.size(), boundaryPointCount(rates));
+
+    const FacePattern pattern = facePattern(corners, rates, boundary, bound);
+    std::vector<glm::vec3> points = boundary;
+    for (const glm::dvec3& w : pattern.interiorWeights) {
+        EXPECT_NEAR(w.x + w.y + w.z, 1.0, 1e-12);
+        points.push_back(interiorPosition(corners, w));
+    }
+    double area = 0.0;
+    std::set<int> used;
+    for (size_t f = 0; f < pattern.facets.size(); f += 3) {
+        const glm::dvec3 a(points[size_t(pattern.facets[f])]), b(points[size_t(pattern.facets[f + 1])]),
+            c(points[size_t(pattern.facets[f + 2])]);
+        const double z = glm::cross(b - a, c - a).z;
+        EXPECT_GT(z, 0.0) << f; // winding kept, nothing degenerate
+        area += 0.5 * z;
+        for (int e = 0; e < 3; ++e) {
+            used.insert(pattern.facets[f + size_t(e)]);
+            EXPECT_LE(glm::length(glm::dvec3(points[size_t(pattern.facets[f + size_t(e)])]) -
+                                  glm::dvec3(points[size_t(pattern.facets[f + size_t(e + 1) % 3])])),
+                      bound);
+        }
+    }
+    EXPECT_NEAR(area, faceArea, 1e-4);
+    EXPECT_EQ(used.size(), points.size()); // every boundary point is a corner of some piece
+    EXPECT_LE(pattern.longestEdge, bound);
+
+    // Rates 2, 1, 1 on a face whose other edges fit: 2 triangles, no interior point.
+    const std::array<glm::vec3, 3> small = {glm::vec3(0, 0, 0), glm::vec3(1.6f, 0, 0), glm::vec3(0.8f, 0.5f, 0)};
+    const std::vector<glm::vec3> smallBoundary = {small[0], glm::vec3(0.8f, 0, 0), small[1], small[2]};
+    const FacePattern halves = facePattern(small, {2, 1, 1}, smallBoundary, bound);
+    EXPECT_EQ(halves.facets.size(), 6u);
+    EXPECT_TRUE(halves.interiorWeights.empty());
+    // A uniform equilateral face of rate 3 takes OpenSubdiv's n^2 pattern.
+    const float s = 2.7f;
+    const std::array<glm::vec3, 3> equilateral = {glm::vec3(0, 0, 0), glm::vec3(s, 0, 0),
+                                                  glm::vec3(0.5f * s, s * std::sqrt(3.0f) / 2.0f, 0)};
+    std::vector<glm::vec3> equilateralBoundary;
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k)
+            equilateralBoundary.push_back(glm::mix(equilateral[size_t(i)], equilateral[size_t(i + 1) % 3], float(k) / 3.0f));
+    const FacePattern uniform = facePattern(equilateral, {3, 3, 3}, equilateralBoundary, bound);
+    EXPECT_EQ(uniform.facets.size(), 9u * 3u);
+    EXPECT_TRUE(uniform.fromOpenSubdiv);
+    EXPECT_LE(uniform.longestEdge, bound);
+}
+
+TEST(Tessellation, CubeStaysWatertightAtEveryRate)
+{
+    // Cube edges 1 and face diagonals sqrt 2 at bounds that give rates 2..8 (never a power
+    // of two for both): seams are closed bit for bit (OpenMesh welds exact positions).
+    for (double bound : {0.9, 0.6, 0.45, 0.34, 0.21, 0.13}) {
+        Scene scene = cubeScene();
+        const TessellationStats stats = tessellateMeshes(scene, bounds(scene, bound), unitScales(scene), Log{});
+        EXPECT_EQ(stats.trianglesSplit, 12u) << bound;
+        EXPECT_LE(longestEdge(scene), bound) << bound;
+        EXPECT_NEAR(worldArea(scene), 6.0, 6e-5) << bound;
+        EXPECT_NEAR(uvArea(scene), 6.0, 6e-5) << bound;
+        expectSaneStreams(scene);
+        const MeshTopology topology = meshTopology(scene, 0);
+        EXPECT_TRUE(topology.closedManifold()) << bound;
+        EXPECT_EQ(topology.degenerateFaces, 0u) << bound;
+        EXPECT_EQ(int64_t(topology.weldedVertices) - int64_t(topology.faces) / 2, 2) << bound;
+        EXPECT_EQ(countTJunctions(scene), 0u) << bound;
+        // Reported means: every output edge, and the pieces of the split triangles (all here).
+        double sum = 0.0;
+        for (size_t t = 0; t < scene.triangleCount(); ++t)
+            for (int e = 0; e < 3; ++e)
+                sum += glm::length(pos(scene, scene.indices[3 * t + e]) - pos(scene, scene.indices[3 * t + (e + 1) % 3]));
+        const double mean = sum / double(3 * scene.triangleCount());
+        EXPECT_NEAR(stats.meanEdgeWorldAfter, mean, 1e-9) << bound;
+        EXPECT_NEAR(stats.meanPieceEdgeWorld, mean, 1e-9) << bound;
+        EXPECT_LE(stats.meanEdgeWorldAfter, bound);
+    }
 }
 
 } // namespace
