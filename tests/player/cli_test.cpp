@@ -250,6 +250,28 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 
+TEST_F(CliTest, GstdRendererHeadlessWithFactor)
+{
+    const fs::path out = dir_ / "out";
+    fs::create_directories(out);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 96x72";
+    const RunResult r = runPlay(dir_, common + " --renderer gstd --gstd-factor 2 --stats " + q(out / "gstd.json") +
+                                          " --views-out " + q(out / "gstd_views"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json stats = nlohmann::json::parse(readText(out / "gstd.json"));
+    EXPECT_EQ(stats["renderer"], "gstd");
+    EXPECT_EQ(stats["gstd_factor"], 2.0);
+    EXPECT_EQ(stats["gstd_samples"], 32.0);
+    EXPECT_EQ(stats["gstd_sub_views"], 2.0);
+    EXPECT_GE(stats["anisotropy"].get<double>(), 1.0);
+    EXPECT_TRUE(fs::exists(out / "gstd_views" / "view_003.png"));
+
+    const RunResult bad = runPlay(dir_, common + " --renderer gstd --gstd-factor 0");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_NE(bad.err.find("--gstd-factor"), std::string::npos) << bad.err;
+}
+
 TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
 {
     ASSERT_TRUE(fs::exists(kBench)) << kBench << " not built (build target lfd-bench)";
