@@ -195,6 +195,7 @@ nlohmann::json benchJson(const BenchReport& report)
                               {"samples", o.gstd.samples},
                               {"seed", o.gstd.seed},
                               {"filter_diameter", o.gstd.filterDiameter},
+                              {"max_anisotropy", o.gstd.maxAnisotropy},
                               {"sub_views", GstdOptions::kSubViews}}}};
     nlohmann::json renderers = nlohmann::json::array();
     for (const RendererResult& r : report.results) {

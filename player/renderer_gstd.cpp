@@ -31,7 +31,6 @@ namespace {
 
 constexpr int kMaxSamples = 64; // GSTD_MAX_SAMPLES in gstd_reconstruct.comp
 constexpr GLuint kHighResUnit = 5; // after the five material units (LFD_UNIT_*)
-constexpr float kMaxAnisotropy = 16.0f;
 
 // splitmix64 (Steele, Lea & Flood 2014): a tiny, fully specified generator, so a seed
 // gives the same offsets with every compiler and standard library.
@@ -97,7 +96,7 @@ public:
         if (anisotropySupported()) {
             GLfloat maxSupported = 1.0f;
             glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxSupported);
-            anisotropy_ = std::min(kMaxAnisotropy, maxSupported);
+            anisotropy_ = std::min(options_.maxAnisotropy, maxSupported);
             glSamplerParameterf(sampler_, GL_TEXTURE_MAX_ANISOTROPY, anisotropy_);
         } else {
             std::fprintf(stderr, "gstd: warning: no anisotropic filtering in this driver "
@@ -246,6 +245,8 @@ void validateGstdOptions(const GstdOptions& options)
                                     std::to_string(options.samples));
     if (!(options.filterDiameter > 0.0) || !std::isfinite(options.filterDiameter))
         throw std::invalid_argument("gstd: the filter diameter must be positive");
+    if (!(options.maxAnisotropy >= 1.0f) || !std::isfinite(options.maxAnisotropy))
+        throw std::invalid_argument("gstd: the anisotropy must be at least 1");
 }
 
 std::vector<glm::vec2> gstdSampleOffsets(const GstdOptions& options)
@@ -270,10 +271,10 @@ std::vector<glm::vec2> gstdSampleOffsets(const GstdOptions& options)
 
 std::string gstdSettingsKey(const GstdOptions& options)
 {
-    char key[160];
-    std::snprintf(key, sizeof(key), "gstd/v1 factor=%u samples=%u seed=%llu diameter=%a subviews=%u",
+    char key[200];
+    std::snprintf(key, sizeof(key), "gstd/v1 factor=%u samples=%u seed=%llu diameter=%a anisotropy=%a subviews=%u",
                   options.factor, options.samples, static_cast<unsigned long long>(options.seed),
-                  options.filterDiameter, GstdOptions::kSubViews);
+                  options.filterDiameter, double(options.maxAnisotropy), GstdOptions::kSubViews);
     return key;
 }
 

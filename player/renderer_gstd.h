@@ -30,11 +30,15 @@ struct GstdOptions {
     // the project's spatial reconstruction width), truncated at 3 sigma, so
     // sigma = diameter / 6 = 0.375 view pixels.
     double filterDiameter = 2.25;
+    // Largest anisotropy of the scene textures' filtering (clamped to the driver's; 1 =
+    // trilinear only, for ablation and tests).
+    float maxAnisotropy = 16.0f;
     // Sub-views per output view ("twice the views at their exact angles").
     static constexpr uint32_t kSubViews = 2;
 };
 
-// Throws std::invalid_argument for factor 0, samples 0 or a non-positive diameter.
+// Throws std::invalid_argument for factor 0, samples 0, a non-positive diameter or an
+// anisotropy below 1.
 void validateGstdOptions(const GstdOptions& options);
 
 // The reconstruction sample offsets (view pixels, relative to the pixel centre), one set of
