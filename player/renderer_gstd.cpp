@@ -135,7 +135,9 @@ public:
         const float depthOne = 1.0f;
         for (uint32_t view = 0; view < targets.viewCount(); ++view) {
             for (uint32_t s = 0; s < GstdOptions::kSubViews; ++s) {
-                // Step 1: the sub-view at high resolution, as mvr draws a view.
+                // Step 1: the sub-view at high resolution, as mvr draws a view. beginFrame
+                // runs per sub-view because step 2 switches to the compute program (it
+                // re-uploads 2N view matrices: negligible next to the draw).
                 glBindFramebuffer(GL_FRAMEBUFFER, highResFbo_);
                 draw_.beginFrame(scene, sub);
                 glClearNamedFramebufferfv(highResFbo_, GL_COLOR, 0, kBackground);
