@@ -96,8 +96,19 @@ int main(int argc, char** argv)
         ->capture_default_str();
     app.add_option("--quality-frame", options.qualityFrame, "frame whose views and EIA are compared")
         ->capture_default_str();
-    app.add_option("--reference", options.reference, "quality reference renderer (rendered untimed if not in --renderers)")
+    app.add_option("--reference", options.reference,
+                   "quality reference renderer (rendered untimed if not in --renderers; gstd is the "
+                   "slow gold standard, mvr the fast raster baseline)")
         ->capture_default_str();
+    app.add_option("--gstd-factor", options.gstd.factor,
+                   "gstd: sub-views render at this many times the view resolution")
+        ->capture_default_str();
+    std::string gstdCache;
+    bool noGstdCache = false;
+    app.add_option("--gstd-cache", gstdCache,
+                   "directory caching gstd's quality-frame views (default $XDG_CACHE_HOME/lfdpr/gstd, "
+                   "else ~/.cache/lfdpr/gstd)");
+    app.add_flag("--no-gstd-cache", noGstdCache, "render gstd every time (neither read nor write the cache)");
     std::string outDir;
     app.add_option("--out", outDir, "directory for bench.json, bench.csv, speed_vs_error.svg and PNGs");
     app.add_flag("--quiet", options.quiet, "no progress lines");
@@ -127,6 +138,13 @@ int main(int argc, char** argv)
                 throw UsageError("--reference: unknown renderer '" + options.reference + "' (known: " +
                                  joinNames(known) + ")");
         }
+        try {
+            lfd::player::validateGstdOptions(options.gstd);
+        } catch (const std::exception& e) {
+            throw UsageError(std::string("--gstd-factor: ") + e.what());
+        }
+        options.gstdCache = gstdCache;
+        options.gstdCacheEnabled = !noGstdCache;
         if (options.frames == 0)
             throw UsageError("--frames: must be at least 1");
         if (!std::isfinite(options.fps) || options.fps <= 0.0)

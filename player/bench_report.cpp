@@ -51,7 +51,7 @@ nlohmann::json optionalNumber(const std::optional<double>& v)
 
 nlohmann::json qualityJson(const Quality& q)
 {
-    return {{"rmse", q.rmse}, {"psnr", number(q.psnr)}, {"ssim", q.ssim}};
+    return {{"rmse", q.rmse}, {"psnr", number(q.psnr)}, {"ssim", q.ssim}, {"flip", number(q.flip)}};
 }
 
 std::string csvNumber(double v)
@@ -122,10 +122,10 @@ std::string benchTable(const BenchReport& report)
       << " against " << o.reference << "; GPU times are means over the timed frames\n\n";
 
     char line[512];
-    const char* rowFormat = "%-28s %22s %12s %9s %11s %8s %15s %9s %9s %10s %10s %11s %11s\n";
+    const char* rowFormat = "%-28s %22s %12s %9s %11s %8s %15s %9s %9s %9s %10s %10s %10s %11s %11s\n";
     std::snprintf(line, sizeof(line), rowFormat, "renderer", "point_gen ms (points)", "view_gen ms",
-                  "eia ms", "total ms", "vs mvr", "vs mvr-layered", "EIA RMSE", "EIA SSIM", "view RMSE",
-                  "view SSIM", "views RMSE", "views SSIM");
+                  "eia ms", "total ms", "vs mvr", "vs mvr-layered", "EIA RMSE", "EIA SSIM", "EIA FLIP",
+                  "view RMSE", "view SSIM", "view FLIP", "views RMSE", "views SSIM");
     s << line;
     std::vector<std::string> otherStages;
     for (const RendererResult& r : report.results) {
@@ -148,12 +148,13 @@ std::string benchTable(const BenchReport& report)
                       eia.c_str(), total.c_str(), ratioText(report.speedUp(r.name, "mvr")).c_str(),
                       ratioText(report.speedUp(r.name, "mvr-layered")).c_str(),
                       format("%.2f", r.eia.rmse).c_str(), format("%.4f", r.eia.ssim).c_str(),
-                      format("%.2f", r.centreView.rmse).c_str(), format("%.4f", r.centreView.ssim).c_str(),
+                      format("%.4f", r.eia.flip).c_str(), format("%.2f", r.centreView.rmse).c_str(),
+                      format("%.4f", r.centreView.ssim).c_str(), format("%.4f", r.centreView.flip).c_str(),
                       format("%.2f", r.allViews.rmse).c_str(), format("%.4f", r.allViews.ssim).c_str());
         s << line;
     }
     s << "(vs X = X's total / this total, > 1: faster than X; view = centre view, views = mean over all "
-         "views; RMSE 0..255 and SSIM (luma) against "
+         "views; RMSE 0..255, SSIM (luma) and FLIP (0..1, lower is better) against "
       << o.reference << ")\n";
     if (!otherStages.empty()) {
         s << "stages inside total not shown above:";
@@ -189,13 +190,20 @@ nlohmann::json benchJson(const BenchReport& report)
     j["options"] = {{"renderers", o.renderers},        {"reference", o.reference},
                     {"frames", o.frames},              {"warmup", o.warmup},
                     {"fps", o.fps},                    {"turntable_period", o.turntablePeriod},
-                    {"quality_frame", o.qualityFrame}};
+                    {"quality_frame", o.qualityFrame},
+                    {"gstd", {{"factor", o.gstd.factor},
+                              {"samples", o.gstd.samples},
+                              {"seed", o.gstd.seed},
+                              {"filter_diameter", o.gstd.filterDiameter},
+                              {"max_anisotropy", o.gstd.maxAnisotropy},
+                              {"sub_views", GstdOptions::kSubViews}}}};
     nlohmann::json renderers = nlohmann::json::array();
     for (const RendererResult& r : report.results) {
         nlohmann::json e;
         e["name"] = r.name;
         e["timed"] = r.timed;
         e["seconds"] = r.seconds;
+        e["from_cache"] = r.fromCache;
         nlohmann::json stages = nlohmann::json::object();
         for (const auto& [name, t] : r.stages) {
             e[name + "_ms"] = t.mean();
@@ -226,7 +234,7 @@ std::string benchCsv(const BenchReport& report)
     std::ostringstream s;
     s << "renderer,timed,frames,point_generation_ms,view_generation_ms,eia_ms,total_ms,total_median_ms,"
          "total_min_ms,total_max_ms,points,speedup_vs_mvr,speedup_vs_mvr_layered,eia_rmse,eia_psnr,eia_ssim,"
-         "view_rmse,view_psnr,view_ssim,views_rmse,views_psnr,views_ssim\n";
+         "view_rmse,view_psnr,view_ssim,views_rmse,views_psnr,views_ssim,eia_flip,view_flip\n";
     auto opt = [](const std::optional<double>& v) { return v ? csvNumber(*v) : std::string(); };
     for (const RendererResult& r : report.results) {
         s << r.name << ',' << (r.timed ? 1 : 0) << ',' << (r.timed ? report.options.frames : 0u);
@@ -242,7 +250,8 @@ std::string benchCsv(const BenchReport& report)
           << opt(report.speedUp(r.name, "mvr-layered"));
         for (const Quality* q : {&r.eia, &r.centreView, &r.allViews})
             s << ',' << csvNumber(q->rmse) << ',' << csvNumber(q->psnr) << ',' << csvNumber(q->ssim);
-        s << '\n';
+        // FLIP last, so the columns before it keep their positions for existing readers.
+        s << ',' << csvNumber(r.eia.flip) << ',' << csvNumber(r.centreView.flip) << '\n';
     }
     return s.str();
 }

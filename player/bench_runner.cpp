@@ -3,11 +3,14 @@
 #include "eia_builder.h"
 #include "frame.h"
 #include "gpu_scene.h"
+#include "gstd_cache.h"
 #include "image_output.h"
 #include "renderer_lfdpr.h"
 #include "view_targets.h"
 
 #include "lfd/framing.h"
+
+#include "image_metrics.h"
 
 #include <epoxy/gl.h>
 
@@ -81,7 +84,17 @@ CapturedFrame capture(const DisplayProfile& profile, const ViewTargets& targets,
 
 Quality compare(const Image& a, const Image& reference)
 {
-    return {rmse(a, reference), psnr(a, reference), ssimLuma(a, reference)};
+    const auto rgb = [](const Image& image) {
+        return metrics::rgbFromPixels8(image.pixels.data(), int(image.width), int(image.height),
+                                       int(image.channels));
+    };
+    return {rmse(a, reference), psnr(a, reference), ssimLuma(a, reference),
+            metrics::flip(rgb(reference), rgb(a))};
+}
+
+std::unique_ptr<Renderer> createConfiguredRenderer(const std::string& name, const BenchOptions& options)
+{
+    return name == "gstd" ? createGstdRenderer(options.gstd) : createBenchRenderer(name);
 }
 
 double psnrFromRmse(double e)
@@ -174,6 +187,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
             createBenchRenderer(name); // throws the one-line "unknown renderer" error
     if (std::find(known.begin(), known.end(), options.reference) == known.end())
         createBenchRenderer(options.reference);
+    validateGstdOptions(options.gstd);
 
     BenchReport report;
     report.options = options;
@@ -204,6 +218,20 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     CapturedFrame reference;
     std::vector<RendererResult> results;
     const double qualityTime = double(options.qualityFrame) / options.fps;
+
+    // gstd's quality frame comes from the disk cache when the pack is a file (its content
+    // hash is part of the key); a failed cache write only costs the next run a re-render.
+    std::optional<GstdCache> gstdCache;
+    std::string gstdKey;
+    if (options.gstdCacheEnabled && std::find(order.begin(), order.end(), "gstd") != order.end() &&
+        std::filesystem::is_regular_file(options.pack)) {
+        const std::filesystem::path dir = options.gstdCache.empty() ? defaultGstdCacheDir() : options.gstdCache;
+        if (!dir.empty()) {
+            gstdCache.emplace(dir);
+            gstdKey = gstdCacheKey(hashFileContents(options.pack), qualityTime, options.turntablePeriod, profile,
+                                   options.gstd, glDescription);
+        }
+    }
     for (size_t i = 0; i < order.size(); ++i) {
         const std::string& name = order[i];
         const Clock::time_point start = Clock::now();
@@ -215,7 +243,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
                 progress << "lfd-bench: [" << (i + 1) << "/" << order.size() << "] " << name << ": "
                          << line << std::endl;
         };
-        std::unique_ptr<Renderer> renderer = createBenchRenderer(name);
+        std::unique_ptr<Renderer> renderer = createConfiguredRenderer(name, options);
 
         // Step 3: warm-up frames (shader compilation, buffer growth), then timed frames;
         // the warm-up replays the first timed frames' times and is timed separately.
@@ -239,9 +267,35 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
             say("reference only (not in --renderers): quality frame");
         }
 
-        // Step 4: the quality frame, untimed, compared with the reference's.
+        // Step 4: the quality frame, untimed, compared with the reference's (gstd's views
+        // from the cache when it has them; the EIA is built from them as usual).
         GpuTimer qualityTimer;
-        stage.renderFrame(*renderer, qualityTime, qualityTimer);
+        const bool cacheable = name == "gstd" && gstdCache;
+        if (cacheable) {
+            gpu.update(qualityTime);
+            result.fromCache = gstdCache->load(gstdKey, targets);
+            if (result.fromCache) {
+                eia.build(targets, Reconstruction::None, qualityTimer);
+                say("quality frame from the gstd cache " + gstdCache->entryPath(gstdKey).string());
+            }
+        }
+        if (!result.fromCache) {
+            const Clock::time_point qualityStart = Clock::now();
+            stage.renderFrame(*renderer, qualityTime, qualityTimer);
+            if (cacheable) {
+                try {
+                    gstdCache->store(gstdKey, targets);
+                } catch (const std::exception& e) {
+                    progress << "lfd-bench: warning: gstd cache not written: " << e.what() << std::endl;
+                }
+            }
+            char line[160];
+            std::snprintf(line, sizeof(line), "quality frame rendered in %.2f s%s",
+                          std::chrono::duration<double>(Clock::now() - qualityStart).count(),
+                          cacheable ? " (stored in the gstd cache)" : "");
+            if (name == "gstd")
+                say(line);
+        }
         qualityTimer.finish();
         if (!result.timed)
             result.extra = renderer->extraStats();
@@ -252,7 +306,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
 
         if (i == 0) {
             // The reference against itself: identical.
-            const Quality identical{0.0, std::numeric_limits<double>::infinity(), 1.0};
+            const Quality identical{0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0};
             result.eia = result.centreView = result.allViews = identical;
             reference = std::move(frame);
         } else {
@@ -266,11 +320,13 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
                 ssim += ssimLuma(frame.views[v], reference.views[v]);
             }
             const double n = double(frame.views.size());
-            result.allViews = {std::sqrt(mse / n), psnrFromRmse(std::sqrt(mse / n)), ssim / n};
-            char line[160];
-            std::snprintf(line, sizeof(line), "vs %s: EIA RMSE %.2f SSIM %.4f, centre view RMSE %.2f SSIM %.4f",
-                          options.reference.c_str(), result.eia.rmse, result.eia.ssim,
-                          result.centreView.rmse, result.centreView.ssim);
+            result.allViews = {std::sqrt(mse / n), psnrFromRmse(std::sqrt(mse / n)), ssim / n,
+                               std::numeric_limits<double>::quiet_NaN()};
+            char line[200];
+            std::snprintf(line, sizeof(line),
+                          "vs %s: EIA RMSE %.2f SSIM %.4f FLIP %.4f, centre view RMSE %.2f SSIM %.4f FLIP %.4f",
+                          options.reference.c_str(), result.eia.rmse, result.eia.ssim, result.eia.flip,
+                          result.centreView.rmse, result.centreView.ssim, result.centreView.flip);
             say(line);
         }
         const CapturedFrame& kept = i == 0 ? reference : frame;

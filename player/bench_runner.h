@@ -1,13 +1,14 @@
 // lfd-bench's measurement (DESIGN.md section 5): every renderer runs in one process and
 // one GL context on the same uploaded pack, the same views and the same frame times of
 // the rotating scene; per-stage GPU times come from the renderers' own GpuTimer stages,
-// and quality is measured at one fixed frame against a reference renderer (mvr by
-// default; the gold standard gstd once it exists). Speed and error are reported together
-// (bench_report.h formats them).
+// and quality is measured at one fixed frame against a reference renderer (the gold
+// standard gstd by default, paper section 5; its views are cached on disk, gstd_cache.h).
+// Speed and error are reported together (bench_report.h formats them).
 #pragma once
 
 #include "gpu_timer.h"
 #include "renderer.h"
+#include "renderer_gstd.h"
 
 #include "lfd/display_profile.h"
 #include "lfd/scene.h"
@@ -27,7 +28,12 @@ namespace lfd::player {
 struct BenchOptions {
     std::filesystem::path pack;
     std::vector<std::string> renderers{"mvr", "mvr-layered", "lfdpr"};
-    std::string reference = "mvr";  // quality reference (rendered untimed if not listed)
+    std::string reference = "gstd"; // quality reference (rendered untimed if not listed)
+    GstdOptions gstd;               // settings of renderer "gstd" (reference or timed)
+    // Cache of gstd's quality-frame views: used when `pack` is a readable file; empty
+    // gstdCache = defaultGstdCacheDir(); gstdCacheEnabled = false renders every time.
+    std::filesystem::path gstdCache;
+    bool gstdCacheEnabled = true;
     uint32_t frames = 100;          // timed frames
     uint32_t warmup = 3;            // untimed frames before them
     double fps = 60.0;              // frame k is at time k / fps
@@ -42,6 +48,10 @@ struct Quality {
     double rmse = 0.0; // 0..255
     double psnr = 0.0; // dB, +inf when identical
     double ssim = 1.0; // luma
+    // LDR FLIP (lfd::metrics::flip, mean over pixels, 0 = identical) at FLIP's default
+    // observer (about 67 pixels per degree, as lfd-compare), so the PNGs lfd-bench writes
+    // give the same value in lfd-compare. NaN where not computed (all views).
+    double flip = 0.0;
 };
 
 struct RendererResult {
@@ -51,6 +61,7 @@ struct RendererResult {
     std::vector<std::pair<std::string, double>> extra; // Renderer::extraStats() after the run
     Quality eia, centreView, allViews; // allViews: RMSE from the mean MSE, SSIM averaged
     double seconds = 0.0; // wall time of this renderer's run (timing + quality frame)
+    bool fromCache = false; // the quality frame's views came from the gstd cache
 
     double stageMean(const std::string& stage) const; // 0 when absent
     std::optional<double> extraValue(const std::string& key) const;

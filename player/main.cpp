@@ -164,6 +164,9 @@ int main(int argc, char** argv)
     app.add_option("--lfdpr-pipeline", pipeline,
                    "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
         ->capture_default_str();
+    app.add_option("--gstd-factor", options.gstd.factor,
+                   "gstd: sub-views render at this many times the view resolution (slow gold standard)")
+        ->capture_default_str();
     app.add_option("--display", options.displayProfile, "display profile JSON (default: the paper's prototype)");
     auto* viewsOpt = app.add_option("--views", views, "number of views (overrides the profile)");
     auto* sizeOpt = app.add_option("--view-size", viewSize, "view size WxH (overrides the profile)");
@@ -230,6 +233,11 @@ int main(int argc, char** argv)
             options.lfdpr.pipeline = lfd::player::parseLfdprPipeline(pipeline);
         } catch (const std::exception& e) {
             throw UsageError(e.what());
+        }
+        try {
+            lfd::player::validateGstdOptions(options.gstd);
+        } catch (const std::exception& e) {
+            throw UsageError(std::string("--gstd-factor: ") + e.what());
         }
         const std::vector<std::string> known = lfd::player::rendererNames();
         if (std::find(known.begin(), known.end(), options.renderer) == known.end())

@@ -18,8 +18,9 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     const double fill = scene.settings.framingFill > 0.0f ? double(scene.settings.framingFill) : 1.0;
     framing_ = fitSceneToDisplay(profile_, scene.bounds, fill);
     reconstruction_ = parseReconstruction(options.reconstruction);
-    renderer_ = options.renderer == "lfdpr" ? createLfdprRenderer(options.lfdpr)
-                                            : createRenderer(options.renderer);
+    renderer_ = options.renderer == "lfdpr"  ? createLfdprRenderer(options.lfdpr)
+                : options.renderer == "gstd" ? createGstdRenderer(options.gstd)
+                                             : createRenderer(options.renderer);
     scene_ = std::make_unique<GpuScene>(scene);
     targets_ = std::make_unique<ViewTargets>(profile_.viewCount, profile_.viewWidth, profile_.viewHeight);
     eia_ = std::make_unique<EiaBuilder>(profile_);

@@ -9,6 +9,7 @@
 #include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "renderer.h"
+#include "renderer_gstd.h"
 #include "renderer_lfdpr.h"
 #include "view_targets.h"
 
@@ -28,6 +29,7 @@ struct PlayOptions {
     bool headless = false;
     std::string renderer = "mvr";
     LfdprOptions lfdpr;                    // --no-lfd-sampling etc. (renderer "lfdpr")
+    GstdOptions gstd;                      // --gstd-factor (renderer "gstd")
     std::filesystem::path displayProfile;  // empty: the paper's prototype
     std::optional<uint32_t> views;         // overrides the profile
     std::optional<uint32_t> viewWidth, viewHeight;

@@ -30,7 +30,7 @@ public:
     virtual std::vector<std::pair<std::string, double>> extraStats() const { return {}; }
 };
 
-// Factory: "mvr", "mvr-layered" (later "lfdpr", "gstd"). Throws std::invalid_argument
+// Factory: "mvr", "mvr-layered", "lfdpr", "gstd" (default options). Throws std::invalid_argument
 // listing the known names for an unknown one.
 std::unique_ptr<Renderer> createRenderer(const std::string& name);
 std::vector<std::string> rendererNames();

@@ -1,5 +1,6 @@
-// Renderer registry: name -> constructor. Other methods (lfdpr, gstd) add a line here.
+// Renderer registry: name -> constructor. Each method adds a line here.
 #include "raster_draw.h"
+#include "renderer_gstd.h"
 #include "renderer_lfdpr.h"
 
 #include <functional>
@@ -20,6 +21,7 @@ const std::vector<Entry>& registry()
         {"mvr", createMvrRenderer},
         {"mvr-layered", createMvrLayeredRenderer},
         {"lfdpr", [] { return std::unique_ptr<Renderer>(createLfdprRenderer()); }},
+        {"gstd", [] { return createGstdRenderer(); }},
     };
     return entries;
 }

@@ -139,7 +139,11 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
     GLFWwindow* window = context->window();
 
     PlayerSession session(options, profile, std::move(scene), packName);
-    const std::vector<std::string> renderers = rendererNames();
+    // R cycles the interactive renderers; gstd (seconds to minutes per frame) joins the
+    // cycle only when the window was started with it.
+    std::vector<std::string> renderers = rendererNames();
+    if (options.renderer != "gstd")
+        std::erase(renderers, std::string("gstd"));
     size_t rendererIndex = size_t(std::find(renderers.begin(), renderers.end(), options.renderer) - renderers.begin());
     const std::vector<std::string> reconstructions = {"none"}; // more modes plug in here
     size_t reconstructionIndex = 0;
@@ -174,7 +178,8 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
         if (input.nextRenderer && renderers.size() > 1) {
             const size_t next = (rendererIndex + 1) % renderers.size();
             try {
-                session.setRenderer(createRenderer(renderers[next]));
+                session.setRenderer(renderers[next] == "gstd" ? createGstdRenderer(options.gstd)
+                                                                : createRenderer(renderers[next]));
                 rendererIndex = next;
             } catch (const std::exception& e) {
                 std::fprintf(stderr, "lfd-play: cannot switch to %s: %s\n", renderers[next].c_str(), e.what());

@@ -46,6 +46,7 @@ BenchOptions options(std::vector<std::string> renderers)
     BenchOptions o;
     o.pack = "scene.lfdpack";
     o.renderers = std::move(renderers);
+    o.reference = "mvr"; // these tests check mvr as the reference; gstd_test.cpp covers gstd
     o.frames = 3;
     o.warmup = 1;
     o.quiet = true;

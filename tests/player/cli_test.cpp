@@ -250,19 +250,63 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 
+TEST_F(CliTest, GstdRendererHeadlessWithFactor)
+{
+    const fs::path out = dir_ / "out";
+    fs::create_directories(out);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 96x72";
+    const RunResult r = runPlay(dir_, common + " --renderer gstd --gstd-factor 2 --stats " + q(out / "gstd.json") +
+                                          " --views-out " + q(out / "gstd_views"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json stats = nlohmann::json::parse(readText(out / "gstd.json"));
+    EXPECT_EQ(stats["renderer"], "gstd");
+    EXPECT_EQ(stats["gstd_factor"], 2.0);
+    EXPECT_EQ(stats["gstd_samples"], 32.0);
+    EXPECT_EQ(stats["gstd_sub_views"], 2.0);
+    EXPECT_GE(stats["anisotropy"].get<double>(), 1.0);
+    EXPECT_TRUE(fs::exists(out / "gstd_views" / "view_003.png"));
+
+    const RunResult bad = runPlay(dir_, common + " --renderer gstd --gstd-factor 0");
+    EXPECT_NE(bad.status, 0);
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_NE(bad.err.find("--gstd-factor"), std::string::npos) << bad.err;
+}
+
 TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
 {
     ASSERT_TRUE(fs::exists(kBench)) << kBench << " not built (build target lfd-bench)";
     const fs::path out = dir_ / "bench";
     const RunResult r = runTool(kBench, dir_, q(pack_) + " --display " + q(profile_) +
-                                                  " --views 4 --view-size 96x72 --frames 2 --warmup 1 --out " + q(out));
+                                                  " --views 4 --view-size 96x72 --frames 2 --warmup 1 --out " + q(out) +
+                                                  " --gstd-cache " + q(dir_ / "gstd-cache"));
     ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("gstd: quality frame rendered"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("lfdpr/mvr total-time ratio:"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("lfdpr/mvr-layered:"), std::string::npos) << r.out;
     for (const char* file : {"bench.json", "bench.csv", "speed_vs_error.svg", "lfdpr_eia.png", "mvr_eia.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
     const nlohmann::json bench = nlohmann::json::parse(readText(out / "bench.json"));
     EXPECT_FALSE(bench.dump().find("\"lfdpr\"") == std::string::npos) << "bench.json names lfdpr";
+    // gstd is the default reference; every renderer's quality carries FLIP next to RMSE, SSIM.
+    EXPECT_EQ(bench["options"]["reference"], "gstd");
+    for (const nlohmann::json& e : bench["renderers"]) {
+        ASSERT_TRUE(e["quality"]["eia"]["flip"].is_number()) << e.dump();
+        EXPECT_TRUE(e["quality"]["centre_view"]["flip"].is_number()) << e.dump();
+        if (e["name"] != "gstd") {
+            EXPECT_GT(e["quality"]["eia"]["flip"].get<double>(), 0.0) << e["name"];
+        }
+    }
+    // The second run takes gstd's views from the cache; --reference mvr still works.
+    const RunResult again = runTool(kBench, dir_, q(pack_) + " --display " + q(profile_) +
+                                                      " --views 4 --view-size 96x72 --frames 1 --warmup 0 --renderers mvr"
+                                                      " --gstd-cache " + q(dir_ / "gstd-cache"));
+    ASSERT_EQ(again.status, 0) << again.err;
+    EXPECT_NE(again.out.find("quality frame from the gstd cache"), std::string::npos) << again.out;
+    const RunResult vsMvr = runTool(kBench, dir_, q(pack_) + " --display " + q(profile_) +
+                                                      " --views 4 --view-size 96x72 --frames 1 --warmup 0"
+                                                      " --renderers lfdpr --reference mvr");
+    ASSERT_EQ(vsMvr.status, 0) << vsMvr.err;
+    EXPECT_NE(vsMvr.out.find("against mvr"), std::string::npos) << vsMvr.out;
 
     const RunResult missing = runTool(kBench, dir_, q(dir_ / "missing.lfdpack"));
     EXPECT_NE(missing.status, 0);

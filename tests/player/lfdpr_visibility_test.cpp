@@ -277,6 +277,7 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"mvr_layered.vert", "vert", {}},
         {"mvr.frag", "frag", {}},
         {"eia_construct.comp", "comp", {}},
+        {"gstd_reconstruct.comp", "comp", {}},
         {"lfdpr_points.vert", "vert", {}},
         {"lfdpr_points.geom", "geom", {}},
         {"lfdpr_points.frag", "frag", {}},
