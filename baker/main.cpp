@@ -23,6 +23,7 @@ struct Options {
     double textureDetail = 2.0;
     bool keepFullTextures = false;
     bool quiet = false;
+    bool strict = false;
 };
 
 double secondsSince(Clock::time_point start)
@@ -42,7 +43,13 @@ int bakeScene(const Options& o)
 {
     BakeReport report;
     Log log;
-    log.warn = [](const std::string& s) { std::cerr << "warning: " << s << "\n"; };
+    if (o.strict) {
+        // --strict: the first warning (schema or otherwise) refuses the input.
+        const std::string file = o.input.string();
+        log.warn = [file](const std::string& s) { throw BakeError(file + ": " + s + " (--strict)"); };
+    } else {
+        log.warn = [](const std::string& s) { std::cerr << "warning: " << s << "\n"; };
+    }
     if (!o.quiet)
         log.info = [](const std::string& s) { std::cout << s << "\n" << std::flush; };
 
@@ -121,7 +128,8 @@ int bakeScene(const Options& o)
     report.maxEdgePxAfter = report.tessellation.maxEdgeWorldAfter / viewPixelWorld;
     report.warnings = imported.warnings.size();
     report.peakRssBytes = peakResidentBytes();
-    printBakeReport(std::cout, o.output, report);
+    if (!o.quiet) // --quiet: warnings and errors only
+        printBakeReport(std::cout, o.output, report);
     return 0;
 }
 
@@ -146,6 +154,7 @@ int main(int argc, char** argv)
         ->check(CLI::Range(0.1, 64.0));
     app.add_flag("--keep-full-textures", o.keepFullTextures, "never drop mip levels the views cannot resolve");
     app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
+    app.add_flag("--strict", o.strict, "treat every warning (e.g. a glTF schema violation the baker can work around) as an error");
 
     try {
         app.parse(argc, argv);
