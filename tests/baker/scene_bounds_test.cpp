@@ -93,6 +93,26 @@ TEST(SceneBounds, RestPoseIsIncludedAndInstancesAreAll)
     expectVec(b.max, {6, 4, 0});
 }
 
+TEST(SceneBounds, LargeFiniteSceneHasFiniteRadius)
+{
+    // |p|^2 overflows float from about 1.8e19; the radius must not.
+    lfd::Scene s = unitTriangleScene();
+    s.vertices.positions[1] = {1e22f, 0, 0};
+    s.nodes = {meshNode({0, 0, 0})};
+    const lfd::SceneBounds b = lfd::bake::computeBounds(s);
+    EXPECT_FLOAT_EQ(b.center.x, 5e21f);
+    EXPECT_FLOAT_EQ(b.radius, 5e21f);
+}
+
+TEST(SceneBounds, TransformOverflowingFloatIsABakeError)
+{
+    lfd::Scene s = unitTriangleScene();
+    s.vertices.positions[1] = {1e20f, 0, 0};
+    s.nodes = {meshNode({0, 0, 0})};
+    s.nodes[0].scale = glm::vec3(1e30f);
+    EXPECT_THROW(lfd::bake::computeBounds(s), lfd::bake::BakeError);
+}
+
 TEST(SceneBounds, EmptySceneHasZeroBounds)
 {
     lfd::Scene s = unitTriangleScene();

@@ -1,11 +1,10 @@
 // libFuzzer entry point for glTF ingestion (built with -DLFD_BUILD_FUZZERS=ON, run by
 // scripts/fuzz.sh): the input is written to a file (.gltf JSON or .glb, told apart by
 // the importer from the "glTF" magic) and taken through the CPU bake stages up to a
-// tessellated, statistics-complete scene - import, bounds, framing on the prototype
-// display, tessellation at the default 100-pixel edge bound, triangle statistics.
+// tessellated, statistics-complete scene (gltf_fuzz_pipeline.h).
 // Any input must either get there or throw lfd::bake::BakeError: crashes, sanitizer
 // reports, other exceptions, timeouts and huge allocations are bugs.
-#include "bake.h"
+#include "gltf_fuzz_pipeline.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -30,24 +29,6 @@ const fs::path& inputFile()
     return path;
 }
 
-void bakeToStatistics(const fs::path& file)
-{
-    using namespace lfd::bake;
-    const Log quiet;
-    ImportedScene imported = importGltf(file, quiet);
-    lfd::Scene& scene = imported.scene;
-    scene.bounds = computeBounds(scene);
-    const lfd::DisplayProfile profile = lfd::prototypeDisplayProfile();
-    const lfd::Framing framing = lfd::fitSceneToDisplay(profile, scene.bounds, 1.0);
-    const double viewPixelWorld = lfd::minViewPixelWorld(profile, framing);
-    tessellateScene(scene, 100.0 * viewPixelWorld, quiet);
-    // Images are not decoded here (texture_bake has its own tests): every texture is
-    // taken as 256x256 so that the texel statistics run.
-    for (lfd::Texture& texture : scene.textures)
-        texture.width = texture.height = 256;
-    computeTriangleStats(scene);
-}
-
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
@@ -58,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
         out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
     }
     try {
-        bakeToStatistics(file);
+        lfd::fuzz::bakeToStatistics(file);
     } catch (const lfd::bake::BakeError&) {
     }
     return 0;
