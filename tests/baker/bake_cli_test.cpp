@@ -3,6 +3,8 @@
 // tessellation bound on the written pack, and check bad inputs fail cleanly.
 #include "lfd/pack.h"
 
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -297,7 +299,7 @@ TEST_F(BakeCli, BakesThirdPartyScenes)
 {
     const fs::path scenes = LFD_SHARED_SCENES;
     if (!fs::exists(scenes))
-        GTEST_SKIP() << "no third-party scenes at " << scenes;
+        LFD_SKIP_OR_FAIL("no third-party scenes at " << scenes);
     for (const char* name : {"CesiumMilkTruck", "DamagedHelmet"}) {
         const fs::path input = scenes / name / (std::string(name) + ".gltf");
         if (!fs::exists(input))

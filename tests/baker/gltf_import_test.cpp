@@ -3,6 +3,8 @@
 // third-party scenes in ../shared/scenes.
 #include "bake.h"
 
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -380,7 +382,7 @@ protected:
     void SetUp() override
     {
         if (!fs::is_directory(kAssimp))
-            GTEST_SKIP() << kAssimp << " absent (install Debian package assimp-testmodels)";
+            LFD_SKIP_OR_FAIL(kAssimp << " absent (install Debian package assimp-testmodels)");
     }
 };
 
@@ -512,7 +514,7 @@ protected:
     void SetUp() override
     {
         if (!fs::is_directory(kShared))
-            GTEST_SKIP() << kShared << " absent: third-party scene tests skipped";
+            LFD_SKIP_OR_FAIL(kShared << " absent: third-party scene tests skipped");
     }
 };
 

@@ -3,6 +3,8 @@
 #include "bake.h"
 #include "lfd/scene_animation.h"
 
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/quaternion.hpp>
@@ -201,7 +203,7 @@ TEST(SceneBounds, CesiumMilkTruckSphereContainsEveryAnimatedPose)
 {
     const fs::path file = fs::path(LFD_SHARED_SCENES) / "CesiumMilkTruck/CesiumMilkTruck.gltf";
     if (!fs::exists(file))
-        GTEST_SKIP() << file << " absent: third-party scene test skipped";
+        LFD_SKIP_OR_FAIL(file << " absent: third-party scene test skipped");
     const lfd::Scene s = lfd::bake::importGltf(file, {}).scene;
     const lfd::SceneBounds b = lfd::bake::computeBounds(s);
     ASSERT_GT(b.radius, 0.0f);
