@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <new>
 
 namespace {
 
@@ -173,6 +174,11 @@ int main(int argc, char** argv)
             return 2;
         }
         return bakeScene(o);
+    } catch (const std::bad_alloc&) {
+        // Input sizes are checked before allocation; this is the last line of defence.
+        std::cerr << "lfd-bake: error: " << (o.inspect.empty() ? o.input : o.inspect).string()
+                  << ": out of memory\n";
+        return 1;
     } catch (const std::exception& e) {
         // Every stage reports one line naming the file and the problem.
         std::cerr << "lfd-bake: error: " << e.what() << "\n";

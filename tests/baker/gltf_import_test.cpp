@@ -341,6 +341,29 @@ TEST(GltfImport, BrokenHandMadeFilesAreRejected)
     expectRejected(kCases, "is a directory");
 }
 
+TEST(GltfImport, AccessorWithoutBufferViewCannotAllocateGigabytes)
+{
+    // Without a bufferView an accessor is zeros (plus sparse patches): no buffer bounds its
+    // count. A 232-byte file declaring 2^28 - 1 POSITIONs made the importer allocate over
+    // 3 GiB and fail with std::bad_alloc; counts above 2^20 are refused by name.
+    TempDir dir;
+    auto scene = [](uint64_t count) {
+        return nlohmann::json{{"asset", {{"version", "2.0"}}},
+                              {"accessors", {{{"componentType", 5126}, {"count", count}, {"type", "VEC3"}}}},
+                              {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}}}}}}},
+                              {"nodes", {{{"mesh", 0}}}},
+                              {"scenes", {{{"nodes", {0}}}}}};
+    };
+    std::ofstream(dir.path() / "bomb.gltf") << scene((uint64_t(1) << 28) - 1).dump();
+    expectRejected(dir.path() / "bomb.gltf",
+                   "mesh 0 primitive 0 POSITION (accessor 0): accessor without bufferView has an implausible "
+                   "count 268435455 (at most 1048576)");
+    // At the limit it imports: all-zero positions, degenerate but valid.
+    std::ofstream(dir.path() / "zeros.gltf") << scene(3 * 1024).dump();
+    const ImportedScene r = import(dir.path() / "zeros.gltf");
+    EXPECT_EQ(r.sourceTriangles, 1024u);
+}
+
 TEST(GltfImport, BufferStartingWithPngSignatureStillLoads)
 {
     // The importer hands tinygltf only the signature of files that look like images;
