@@ -13,6 +13,7 @@ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_REL
 cmake --build build-asan -j "$jobs" >/dev/null
 export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0
 status=0
 (cd build-asan && ctest --output-on-failure -j "$jobs" --timeout 900 --output-junit ctest-junit.xml "$@") || status=$?
 python3 scripts/ctest_summary.py build-asan/ctest-junit.xml build-asan/tests | sed 's/^tests:/sanitize:/'
