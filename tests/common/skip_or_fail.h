@@ -6,7 +6,9 @@
 // Usage, like GTEST_SKIP() but with the message as the argument:
 //     LFD_SKIP_OR_FAIL(kShared << " absent: third-party scene tests skipped");
 // Tests that cannot run on some hardware by design (the 64-bit-atomics path on a driver
-// without GL_NV_shader_atomic_int64) use GTEST_SKIP directly and say why.
+// without GL_NV_shader_atomic_int64) and opt-in measurements (LFD_BIG_TEXTURE_TEST,
+// which scripts/test.sh turns on) use GTEST_SKIP directly and say why; the test script
+// lists every skip with its reason.
 #pragma once
 
 #include <gtest/gtest.h>
