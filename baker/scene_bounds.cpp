@@ -135,6 +135,13 @@ SceneBounds computeBounds(const Scene& scene)
         !std::isfinite(bounds.center.z))
         throw BakeError("bounds: the scene extends beyond the single-precision range (positions times node "
                         "transforms overflow)");
+    // The later stages square scene-space lengths in float (edge lengths, triangle areas):
+    // past about 1.8e19 those overflow to infinity and, for example, every edge looks
+    // oversized forever (a glTF fuzzer out-of-memory). Such scenes are refused.
+    constexpr float kMaxSceneRadius = 1e18f;
+    if (bounds.radius > kMaxSceneRadius)
+        throw BakeError("bounds: the scene's bounding radius " + std::to_string(bounds.radius) +
+                        " exceeds 1e18 units, where squared lengths overflow single precision; rescale the scene");
     return bounds;
 }
 

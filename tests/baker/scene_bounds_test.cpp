@@ -95,15 +95,23 @@ TEST(SceneBounds, RestPoseIsIncludedAndInstancesAreAll)
     expectVec(b.max, {6, 4, 0});
 }
 
-TEST(SceneBounds, LargeFiniteSceneHasFiniteRadius)
+TEST(SceneBounds, RadiusUpTo1e18IsAcceptedBeyondIsABakeError)
 {
-    // |p|^2 overflows float from about 1.8e19; the radius must not.
+    // Later stages square lengths in float (overflow from about 1.8e19): 1e18 is the limit.
     lfd::Scene s = unitTriangleScene();
-    s.vertices.positions[1] = {1e22f, 0, 0};
+    s.vertices.positions[1] = {1.9e18f, 0, 0};
     s.nodes = {meshNode({0, 0, 0})};
     const lfd::SceneBounds b = lfd::bake::computeBounds(s);
-    EXPECT_FLOAT_EQ(b.center.x, 5e21f);
-    EXPECT_FLOAT_EQ(b.radius, 5e21f);
+    EXPECT_FLOAT_EQ(b.center.x, 9.5e17f);
+    EXPECT_FLOAT_EQ(b.radius, 9.5e17f);
+
+    s.vertices.positions[1] = {1e22f, 0, 0};
+    try {
+        lfd::bake::computeBounds(s);
+        ADD_FAILURE() << "accepted";
+    } catch (const lfd::bake::BakeError& e) {
+        EXPECT_NE(std::string(e.what()).find("exceeds 1e18 units"), std::string::npos) << e.what();
+    }
 }
 
 TEST(SceneBounds, TransformOverflowingFloatIsABakeError)
