@@ -9,9 +9,10 @@ namespace lfd::bake::gltf {
 namespace {
 
 // note: accessors without a bufferView are all zeros (optionally patched by sparse
-// values), so their count is not bounded by any buffer; cap it to keep a hostile count
-// from allocating terabytes.
-constexpr size_t kMaxUnbackedCount = size_t(1) << 28;
+// values), so their count is not bounded by any buffer. A 200-byte file declaring 2^28
+// such POSITIONs made the importer allocate over 3 GiB; 2^20 elements (at most 16 MiB of
+// floats) is far beyond what a zero-filled stream plausibly holds in a real asset.
+constexpr size_t kMaxUnbackedCount = size_t(1) << 20;
 
 int componentSize(int componentType)
 {
@@ -206,7 +207,7 @@ void checkCountBacked(const tinygltf::Accessor& accessor, const std::string& fil
 {
     if (accessor.bufferView < 0 && accessor.count > kMaxUnbackedCount)
         fail(file, what + ": accessor without bufferView has an implausible count " +
-                       std::to_string(accessor.count));
+                       std::to_string(accessor.count) + " (at most " + std::to_string(kMaxUnbackedCount) + ")");
 }
 
 } // namespace

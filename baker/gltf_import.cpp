@@ -7,6 +7,7 @@
 // bakeTexture decodes one texture at a time later.
 #include "bake.h"
 #include "gltf_accessors.h"
+#include "gltf_validation.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
@@ -135,32 +136,45 @@ bool hasGlbMagic(const fs::path& path)
     return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
 }
 
-// extensionsRequired read straight from the JSON (the .glb JSON chunk), for files that
-// tinygltf rejects before we see them: a Draco-compressed file has accessors without
-// bufferViews, which tinygltf reports as an invalid bufferView. Empty if unreadable.
-std::vector<std::string> requiredExtensionsOf(const fs::path& path, bool binary)
+// extensionsRequired of the raw JSON, for files that tinygltf rejects before we see them:
+// a Draco-compressed file has accessors without bufferViews, which tinygltf reports as an
+// invalid bufferView.
+std::vector<std::string> requiredExtensionsOf(const nlohmann::json& document)
 {
-    std::ifstream in(path, std::ios::binary);
-    std::string text;
-    if (binary) {
-        // GLB: 12-byte header, then chunk 0 = (uint32 length, uint32 type "JSON", data).
-        uint32_t header[5] = {};
-        in.read(reinterpret_cast<char*>(header), sizeof header);
-        if (in.gcount() != std::streamsize(sizeof header) || header[4] != 0x4E4F534Au ||
-            header[3] > (64u << 20))
-            return {};
-        text.resize(header[3]);
-        in.read(text.data(), std::streamsize(text.size()));
-    } else {
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    const nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
     std::vector<std::string> names;
-    if (json.is_object() && json.contains("extensionsRequired") && json["extensionsRequired"].is_array())
-        for (const nlohmann::json& name : json["extensionsRequired"])
+    if (document.is_object() && document.contains("extensionsRequired") &&
+        document["extensionsRequired"].is_array())
+        for (const nlohmann::json& name : document["extensionsRequired"])
             if (name.is_string())
                 names.push_back(name.get<std::string>());
     return names;
+}
+
+void failOnUnsupportedRequiredExtension(const nlohmann::json& document, const std::string& file)
+{
+    for (const std::string& name : requiredExtensionsOf(document))
+        if (!kSupportedExtensions.count(name))
+            fail(file, "requires unsupported extension " + name);
+}
+
+// Strict schema validation of the raw JSON before tinygltf (which silently drops or
+// defaults what it cannot read): errors refuse the file, warnings are reported.
+void validateSchema(const nlohmann::json& document, const std::string& file, Warnings& warnings)
+{
+    const std::vector<gltf::SchemaIssue> issues = gltf::validateGltfSchema(document);
+    size_t errors = 0;
+    const gltf::SchemaIssue* first = nullptr;
+    for (const gltf::SchemaIssue& issue : issues)
+        if (issue.severity == gltf::SchemaIssue::Severity::Error && errors++ == 0)
+            first = &issue;
+    if (first != nullptr) {
+        // An unsupported required extension explains the rest (e.g. Draco accessors).
+        failOnUnsupportedRequiredExtension(document, file);
+        fail(file, first->text() +
+                       (errors > 1 ? " (and " + std::to_string(errors - 1) + " more schema errors)" : ""));
+    }
+    for (const gltf::SchemaIssue& issue : issues)
+        warnings.add(issue.text());
 }
 
 tinygltf::Model loadModel(const fs::path& path, const std::string& file, LoadCapture& capture,
@@ -172,6 +186,9 @@ tinygltf::Model loadModel(const fs::path& path, const std::string& file, LoadCap
     if (fs::is_directory(path, ec))
         fail(file, "is a directory, not a glTF file");
     const bool binary = hasGlbMagic(path);
+    const std::optional<nlohmann::json> document = gltf::readGltfJson(path, binary, file);
+    if (document)
+        validateSchema(*document, file, warnings);
 
     for (;;) {
         tinygltf::TinyGLTF loader;
@@ -201,9 +218,8 @@ tinygltf::Model loadModel(const fs::path& path, const std::string& file, LoadCap
             capture.sniffImages = false;
             continue;
         }
-        for (const std::string& name : requiredExtensionsOf(path, binary))
-            if (!kSupportedExtensions.count(name))
-                fail(file, "requires unsupported extension " + name);
+        if (document)
+            failOnUnsupportedRequiredExtension(*document, file);
         fail(file, !err.empty() ? err : !warn.empty() ? warn : "tinygltf could not load the file");
     }
 }
@@ -504,7 +520,7 @@ private:
 };
 
 Material convertMaterial(const tinygltf::Model& model, size_t index, TextureTable& textures,
-                         const std::string& file, Warnings& warnings)
+                         const std::string& file)
 {
     const tinygltf::Material& in = model.materials[index];
     const tinygltf::PbrMetallicRoughness& pbr = in.pbrMetallicRoughness;
@@ -515,12 +531,13 @@ Material convertMaterial(const tinygltf::Model& model, size_t index, TextureTabl
         m.baseColorFactor = glm::vec4(float(pbr.baseColorFactor[0]), float(pbr.baseColorFactor[1]),
                                       float(pbr.baseColorFactor[2]), float(pbr.baseColorFactor[3]));
     if (in.emissiveFactor.size() == 3)
-        m.emissiveFactor = glm::vec3(float(in.emissiveFactor[0]), float(in.emissiveFactor[1]),
-                                     float(in.emissiveFactor[2]));
+        m.emissiveFactor = glm::clamp(glm::vec3(float(in.emissiveFactor[0]), float(in.emissiveFactor[1]),
+                                                float(in.emissiveFactor[2])),
+                                      0.0f, 1.0f);
     if (auto it = in.extensions.find("KHR_materials_emissive_strength"); it != in.extensions.end()) {
         const tinygltf::Value& strength = it->second.Get("emissiveStrength");
         if (strength.IsNumber())
-            m.emissiveFactor *= float(strength.GetNumberAsDouble());
+            m.emissiveFactor *= std::max(float(strength.GetNumberAsDouble()), 0.0f);
     }
     m.metallicFactor = float(pbr.metallicFactor);
     m.roughnessFactor = float(pbr.roughnessFactor);
@@ -532,8 +549,7 @@ Material convertMaterial(const tinygltf::Model& model, size_t index, TextureTabl
         m.alphaMode = AlphaMode::Mask;
     else if (in.alphaMode == "BLEND")
         m.alphaMode = AlphaMode::Blend;
-    else if (in.alphaMode != "OPAQUE")
-        warnings.add(label + " has unknown alphaMode " + quoted(in.alphaMode) + ": treated as OPAQUE");
+    // Any other alphaMode was reported by the schema validation ("treated as OPAQUE").
 
     const std::array<float, 10> factors = {m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b,
                                            m.baseColorFactor.a, m.metallicFactor,    m.roughnessFactor,
@@ -542,6 +558,14 @@ Material convertMaterial(const tinygltf::Model& model, size_t index, TextureTabl
     for (float f : factors)
         if (!std::isfinite(f))
             fail(file, label + " has a non-finite factor");
+    // The schema bounds these factors; values outside were reported as clamped.
+    auto unit = [](float f) { return std::clamp(f, 0.0f, 1.0f); };
+    m.baseColorFactor = glm::clamp(m.baseColorFactor, 0.0f, 1.0f);
+    m.emissiveFactor = glm::max(m.emissiveFactor, 0.0f); // emissiveStrength may raise it above 1
+    m.metallicFactor = unit(m.metallicFactor);
+    m.roughnessFactor = unit(m.roughnessFactor);
+    m.occlusionStrength = unit(m.occlusionStrength);
+    m.alphaCutoff = std::max(m.alphaCutoff, 0.0f);
 
     m.baseColorTexture = textures.resolve(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true,
                                           label + " baseColorTexture");
@@ -889,7 +913,7 @@ ImportedScene importGltf(const std::filesystem::path& path, const Log& log)
     for (size_t m = 0; m < model.materials.size(); ++m)
         if (materialIndex[m] != kNone) {
             materialIndex[m] = int32_t(scene.materials.size());
-            scene.materials.push_back(convertMaterial(model, m, textures, file, warnings));
+            scene.materials.push_back(convertMaterial(model, m, textures, file));
         }
 
     // Step 4: stored streams - uvs only if some material is textured, tangents only if

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <new>
 
 namespace {
 
@@ -23,6 +24,7 @@ struct Options {
     double textureDetail = 2.0;
     bool keepFullTextures = false;
     bool quiet = false;
+    bool strict = false;
 };
 
 double secondsSince(Clock::time_point start)
@@ -42,7 +44,13 @@ int bakeScene(const Options& o)
 {
     BakeReport report;
     Log log;
-    log.warn = [](const std::string& s) { std::cerr << "warning: " << s << "\n"; };
+    if (o.strict) {
+        // --strict: the first warning (schema or otherwise) refuses the input.
+        const std::string file = o.input.string();
+        log.warn = [file](const std::string& s) { throw BakeError(file + ": " + s + " (--strict)"); };
+    } else {
+        log.warn = [](const std::string& s) { std::cerr << "warning: " << s << "\n"; };
+    }
     if (!o.quiet)
         log.info = [](const std::string& s) { std::cout << s << "\n" << std::flush; };
 
@@ -123,7 +131,8 @@ int bakeScene(const Options& o)
     report.meanPieceEdgePx = report.tessellation.meanPieceEdgeWorld / viewPixelWorld;
     report.warnings = imported.warnings.size();
     report.peakRssBytes = peakResidentBytes();
-    printBakeReport(std::cout, o.output, report);
+    if (!o.quiet) // --quiet: warnings and errors only
+        printBakeReport(std::cout, o.output, report);
     return 0;
 }
 
@@ -148,6 +157,7 @@ int main(int argc, char** argv)
         ->check(CLI::Range(0.1, 64.0));
     app.add_flag("--keep-full-textures", o.keepFullTextures, "never drop mip levels the views cannot resolve");
     app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
+    app.add_flag("--strict", o.strict, "treat every warning (e.g. a glTF schema violation the baker can work around) as an error");
 
     try {
         app.parse(argc, argv);
@@ -166,6 +176,11 @@ int main(int argc, char** argv)
             return 2;
         }
         return bakeScene(o);
+    } catch (const std::bad_alloc&) {
+        // Input sizes are checked before allocation; this is the last line of defence.
+        std::cerr << "lfd-bake: error: " << (o.inspect.empty() ? o.input : o.inspect).string()
+                  << ": out of memory\n";
+        return 1;
     } catch (const std::exception& e) {
         // Every stage reports one line naming the file and the problem.
         std::cerr << "lfd-bake: error: " << e.what() << "\n";

@@ -118,14 +118,30 @@ SceneBounds computeBounds(const Scene& scene)
     bounds.min = lo;
     bounds.max = hi;
     bounds.center = 0.5f * (lo + hi);
-    float radius2 = 0.0f;
+    // Squared distances in double: a float overflows from about 1.8e19 on, which would
+    // turn a large but finite scene into an infinite radius.
+    double radius2 = 0.0;
     for (size_t m = 0; m < instances.size(); ++m)
         for (const glm::mat4& sceneFromObject : instances[m])
             for (uint32_t v : vertices[m]) {
-                const glm::vec3 d = glm::vec3(sceneFromObject * glm::vec4(p[v], 1.0f)) - bounds.center;
+                const glm::dvec3 d =
+                    glm::dvec3(glm::vec3(sceneFromObject * glm::vec4(p[v], 1.0f))) - glm::dvec3(bounds.center);
                 radius2 = std::max(radius2, glm::dot(d, d));
             }
-    bounds.radius = std::sqrt(radius2);
+    bounds.radius = float(std::sqrt(radius2));
+    // Positions are finite (import checks them), but node transforms can carry them past
+    // the float range; such a scene cannot be framed.
+    if (!std::isfinite(bounds.radius) || !std::isfinite(bounds.center.x) || !std::isfinite(bounds.center.y) ||
+        !std::isfinite(bounds.center.z))
+        throw BakeError("bounds: the scene extends beyond the single-precision range (positions times node "
+                        "transforms overflow)");
+    // The later stages square scene-space lengths in float (edge lengths, triangle areas):
+    // past about 1.8e19 those overflow to infinity and, for example, every edge looks
+    // oversized forever (a glTF fuzzer out-of-memory). Such scenes are refused.
+    constexpr float kMaxSceneRadius = 1e18f;
+    if (bounds.radius > kMaxSceneRadius)
+        throw BakeError("bounds: the scene's bounding radius " + std::to_string(bounds.radius) +
+                        " exceeds 1e18 units, where squared lengths overflow single precision; rescale the scene");
     return bounds;
 }
 

@@ -121,7 +121,8 @@ private:
                  " bytes but it has " + std::to_string(size_));
         }
         table_.entries.resize(header_.sectionCount); // bounded by the bytes present
-        std::memcpy(table_.entries.data(), data_ + sizeof(FileHeader), size_t(tableBytes));
+        if (tableBytes > 0) // an empty table has no storage: memcpy from/to null is undefined
+            std::memcpy(table_.entries.data(), data_ + sizeof(FileHeader), size_t(tableBytes));
     }
 
     void checkLayout()

@@ -3,6 +3,8 @@
 // tessellation bound on the written pack, and check bad inputs fail cleanly.
 #include "lfd/pack.h"
 
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -219,11 +221,85 @@ TEST_F(BakeCli, BadArgumentsAreRejected)
     EXPECT_NE(r.out.find("no_profile.json"), std::string::npos) << r.out;
 }
 
+std::string readBytes(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+const fs::path kGltfCases = fs::path(LFD_TEST_DATA) / "gltf";
+
+TEST_F(BakeCli, SchemaErrorIsRefusedWithOneLineNamingFileAndJsonPath)
+{
+    const fs::path input = kGltfCases / "schema_error.gltf";
+    const fs::path pack = dir_ / "schema_error.lfdpack";
+    const RunResult r = run(kBake + " " + quoted(input) + " -o " + quoted(pack));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.out, "lfd-bake: error: " + input.string() +
+                         ": materials[0].pbrMetallicRoughness: expected an object, got an array\n");
+    EXPECT_FALSE(fs::exists(pack));
+}
+
+TEST_F(BakeCli, StrictTurnsSchemaWarningsIntoErrors)
+{
+    const fs::path input = kGltfCases / "schema_warnings.gltf";
+    const fs::path pack = dir_ / "schema_warnings.lfdpack";
+    const RunResult lenient = run(kBake + " " + quoted(input) + " -o " + quoted(pack) + " --quiet");
+    EXPECT_EQ(lenient.exitCode, 0) << lenient.out;
+    EXPECT_EQ(lenient.out, "warning: nodes[0].name: expected a string, got 7: name ignored\n"
+                           "warning: materials[0].pbrMetallicRoughness.metallicFactor: 1.5 is outside [0.0, 1.0]: "
+                           "clamped\n");
+    EXPECT_EQ(lfd::readPack(pack).materials.at(0).metallicFactor, 1.0f);
+
+    fs::remove(pack);
+    const RunResult strict = run(kBake + " " + quoted(input) + " -o " + quoted(pack) + " --strict");
+    EXPECT_EQ(strict.exitCode, 1);
+    EXPECT_EQ(strict.out, "lfd-bake: error: " + input.string() +
+                              ": nodes[0].name: expected a string, got 7: name ignored (--strict)\n");
+    EXPECT_FALSE(fs::exists(pack));
+}
+
+TEST_F(BakeCli, QuietPrintsWarningsAndErrorsOnly)
+{
+    const fs::path pack = dir_ / "quiet.lfdpack";
+    const RunResult clean = run(kBake + " " + quoted(dir_ / "samples/car/car.gltf") + " -o " + quoted(pack) + " --quiet");
+    EXPECT_EQ(clean.exitCode, 0) << clean.out;
+    EXPECT_EQ(clean.out, ""); // no progress, no bake report
+    EXPECT_TRUE(fs::exists(pack));
+
+    const RunResult loud = run(kBake + " " + quoted(dir_ / "samples/car/car.gltf") + " -o " + quoted(pack));
+    EXPECT_NE(loud.out.find("bake report"), std::string::npos) << loud.out;
+}
+
+TEST_F(BakeCli, BakingTwiceGivesByteIdenticalPacks)
+{
+    // Every sample scene (textures, animation, hierarchy): same input, same bytes.
+    size_t baked = 0;
+    for (const auto& entry : fs::directory_iterator(dir_ / "samples")) {
+        const std::string name = entry.path().filename().string();
+        const fs::path input = entry.path() / (name + ".gltf");
+        if (!fs::exists(input))
+            continue;
+        SCOPED_TRACE(name);
+        std::string bytes[2];
+        for (int i = 0; i < 2; ++i) {
+            const fs::path pack = dir_ / (name + "_det" + std::to_string(i) + ".lfdpack");
+            const RunResult r = run(kBake + " " + quoted(input) + " -o " + quoted(pack) + " --quiet");
+            ASSERT_EQ(r.exitCode, 0) << r.out;
+            bytes[i] = readBytes(pack);
+        }
+        EXPECT_FALSE(bytes[0].empty());
+        EXPECT_TRUE(bytes[0] == bytes[1]) << "two bakes of " << name << " differ";
+        ++baked;
+    }
+    EXPECT_GE(baked, 3u);
+}
+
 TEST_F(BakeCli, BakesThirdPartyScenes)
 {
     const fs::path scenes = LFD_SHARED_SCENES;
     if (!fs::exists(scenes))
-        GTEST_SKIP() << "no third-party scenes at " << scenes;
+        LFD_SKIP_OR_FAIL("no third-party scenes at " << scenes);
     for (const char* name : {"CesiumMilkTruck", "DamagedHelmet"}) {
         const fs::path input = scenes / name / (std::string(name) + ".gltf");
         if (!fs::exists(input))

@@ -3,6 +3,8 @@
 #include "bake.h"
 #include "lfd/scene_animation.h"
 
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 
 #include <glm/gtc/quaternion.hpp>
@@ -93,6 +95,34 @@ TEST(SceneBounds, RestPoseIsIncludedAndInstancesAreAll)
     expectVec(b.max, {6, 4, 0});
 }
 
+TEST(SceneBounds, RadiusUpTo1e18IsAcceptedBeyondIsABakeError)
+{
+    // Later stages square lengths in float (overflow from about 1.8e19): 1e18 is the limit.
+    lfd::Scene s = unitTriangleScene();
+    s.vertices.positions[1] = {1.9e18f, 0, 0};
+    s.nodes = {meshNode({0, 0, 0})};
+    const lfd::SceneBounds b = lfd::bake::computeBounds(s);
+    EXPECT_FLOAT_EQ(b.center.x, 9.5e17f);
+    EXPECT_FLOAT_EQ(b.radius, 9.5e17f);
+
+    s.vertices.positions[1] = {1e22f, 0, 0};
+    try {
+        lfd::bake::computeBounds(s);
+        ADD_FAILURE() << "accepted";
+    } catch (const lfd::bake::BakeError& e) {
+        EXPECT_NE(std::string(e.what()).find("exceeds 1e18 units"), std::string::npos) << e.what();
+    }
+}
+
+TEST(SceneBounds, TransformOverflowingFloatIsABakeError)
+{
+    lfd::Scene s = unitTriangleScene();
+    s.vertices.positions[1] = {1e20f, 0, 0};
+    s.nodes = {meshNode({0, 0, 0})};
+    s.nodes[0].scale = glm::vec3(1e30f);
+    EXPECT_THROW(lfd::bake::computeBounds(s), lfd::bake::BakeError);
+}
+
 TEST(SceneBounds, EmptySceneHasZeroBounds)
 {
     lfd::Scene s = unitTriangleScene();
@@ -181,7 +211,7 @@ TEST(SceneBounds, CesiumMilkTruckSphereContainsEveryAnimatedPose)
 {
     const fs::path file = fs::path(LFD_SHARED_SCENES) / "CesiumMilkTruck/CesiumMilkTruck.gltf";
     if (!fs::exists(file))
-        GTEST_SKIP() << file << " absent: third-party scene test skipped";
+        LFD_SKIP_OR_FAIL(file << " absent: third-party scene test skipped");
     const lfd::Scene s = lfd::bake::importGltf(file, {}).scene;
     const lfd::SceneBounds b = lfd::bake::computeBounds(s);
     ASSERT_GT(b.radius, 0.0f);

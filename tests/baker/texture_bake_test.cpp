@@ -4,6 +4,8 @@
 #include "mip_chain.h"
 
 #include <OpenImageIO/imageio.h>
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/resource.h>
@@ -691,7 +693,7 @@ TEST(TextureBake, DamagedHelmetAlbedo)
 {
     const fs::path path = fs::path(LFD_SHARED_SCENES) / "DamagedHelmet" / "Default_albedo.jpg";
     if (!fs::exists(path))
-        GTEST_SKIP() << path << " not present";
+        LFD_SKIP_OR_FAIL(path << " not present");
     EXPECT_EQ(lfd::bake::probeTextureSize(fileSource(path, true)), glm::uvec2(2048, 2048));
     const Texture t = lfd::bake::bakeTexture(fileSource(path, true), {});
     expectChain(t, 2048, 2048);

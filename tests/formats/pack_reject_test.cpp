@@ -3,7 +3,12 @@
 #include "pack_test_scenes.h"
 
 #include <algorithm>
+#include <fstream>
+#include <functional>
 #include <limits>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace lfd::test {
 namespace {
@@ -272,6 +277,147 @@ TEST(PackReject, HugeElementCounts)
             writeElement(b, kTagAnimations, 1, a);
         },
         "animation 1: channels [3, +4294967280)");
+}
+
+// Runs `read` in a child process whose address space is capped 512 MiB above what it
+// already uses, so a count that drove an allocation before being checked would end in
+// std::bad_alloc instead of the expected PackError. Returns the child's verdict.
+// Under AddressSanitizer (which reserves terabytes of shadow memory) the cap cannot be
+// set; the child then only checks the error, and ASan's own allocation limits apply.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kCanCapAddressSpace = false;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kCanCapAddressSpace = false;
+#else
+constexpr bool kCanCapAddressSpace = true;
+#endif
+#else
+constexpr bool kCanCapAddressSpace = true;
+#endif
+
+size_t currentAddressSpaceBytes()
+{
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.rfind("VmSize:", 0) == 0)
+            return size_t(std::stoull(line.substr(7))) * 1024;
+    return 0;
+}
+
+std::string rejectedUnderMemoryCap(const std::vector<uint8_t>& bytes, const std::string& needle)
+{
+    int pipeFds[2];
+    if (::pipe(pipeFds) != 0)
+        return "pipe failed";
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::close(pipeFds[0]);
+        std::string verdict;
+        if (kCanCapAddressSpace) {
+            const rlim_t cap = rlim_t(currentAddressSpaceBytes() + (size_t(512) << 20));
+            const rlimit limit{cap, cap};
+            ::setrlimit(RLIMIT_AS, &limit);
+        }
+        try {
+            readPackFromMemory(bytes.data(), bytes.size(), kName);
+            verdict = "accepted";
+        } catch (const PackError& e) {
+            verdict = std::string(e.what()).find(needle) != std::string::npos ? "ok" : std::string(e.what());
+        } catch (const std::bad_alloc&) {
+            verdict = "std::bad_alloc: an allocation was sized before the check";
+        }
+        [[maybe_unused]] const ssize_t written = ::write(pipeFds[1], verdict.data(), verdict.size());
+        ::_exit(0);
+    }
+    ::close(pipeFds[1]);
+    std::string verdict;
+    char buffer[512];
+    ssize_t n;
+    while ((n = ::read(pipeFds[0], buffer, sizeof buffer)) > 0)
+        verdict.append(buffer, size_t(n));
+    ::close(pipeFds[0]);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    return verdict.empty() ? "child died (status " + std::to_string(status) + ")" : verdict;
+}
+
+// Crafted headers and records whose counts or sizes, if trusted, would allocate
+// gigabytes or more: each is rejected, under a 512 MiB address-space cap.
+TEST(PackReject, CraftedSizesAreCheckedBeforeAllocation)
+{
+    struct Case {
+        const char* what;
+        std::function<void(std::vector<uint8_t>&)> patch;
+        const char* needle;
+    };
+    const Case cases[] = {
+        {"section table of 2^32 - 1 entries (192 GiB)",
+         [](std::vector<uint8_t>& b) {
+             FileHeader h = headerOf(b);
+             h.sectionCount = 0xFFFFFFFFu;
+             setHeader(b, h);
+         },
+         "truncated: section table of 4294967295 entries"},
+        {"2^60 positions",
+         [](std::vector<uint8_t>& b) {
+             const uint32_t i = *entryIndex(b, kTagPositions);
+             SectionEntry e = entryAt(b, i);
+             e.count = uint64_t(1) << 60;
+             setEntry(b, i, e);
+         },
+         "section 'VPOS' count 1152921504606846976 is inconsistent"},
+        {"2^62-byte index section",
+         [](std::vector<uint8_t>& b) {
+             const uint32_t i = *entryIndex(b, kTagIndices);
+             SectionEntry e = entryAt(b, i);
+             e.size = uint64_t(1) << 62;
+             e.count = e.size / 4;
+             setEntry(b, i, e);
+         },
+         "truncated: section 'INDX' ends at byte"},
+        {"a 65536 x 65536 texture (22 GiB with mips) in a few bytes of texels",
+         [](std::vector<uint8_t>& b) {
+             TextureRecord t = readElement<TextureRecord>(b, kTagTextures, 0);
+             t.width = t.height = kMaxTextureDimension;
+             t.mipCount = 17; // consistent with the size: the MIPS and TEXL runs must catch it
+             t.texelSize = 0; // RGBA8, full chain: 22.9 GB
+             for (uint64_t w = t.width, h = t.height;; w = std::max<uint64_t>(w / 2, 1), h = std::max<uint64_t>(h / 2, 1)) {
+                 t.texelSize += w * h * 4;
+                 if (w == 1 && h == 1)
+                     break;
+             }
+             writeElement(b, kTagTextures, 0, t);
+         },
+         "texture 0: mip levels [0, +17) do not follow the previous texture's"},
+        {"2^40 animation keys",
+         [](std::vector<uint8_t>& b) {
+             ChannelRecord c = readElement<ChannelRecord>(b, kTagChannels, 0);
+             c.keyCount = uint64_t(1) << 40;
+             writeElement(b, kTagChannels, 0, c);
+         },
+         "animation 0 channel 0: keys [0, +1099511627776)"},
+        {"2^32 - 16 channels",
+         [](std::vector<uint8_t>& b) {
+             AnimationRecord a = readElement<AnimationRecord>(b, kTagAnimations, 1);
+             a.channelCount = 0xFFFFFFF0u;
+             writeElement(b, kTagAnimations, 1, a);
+         },
+         "animation 1: channels [3, +4294967280)"},
+        {"a 4 GiB mesh name",
+         [](std::vector<uint8_t>& b) {
+             writeElement<uint32_t>(b, kTagMeshes, 0, 0xFFFFFFF0u, offsetof(MeshRecord, name) + 4);
+         },
+         "mesh 0: name ["},
+    };
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.what);
+        std::vector<uint8_t> bytes = smallPack();
+        c.patch(bytes);
+        resealPack(bytes);
+        EXPECT_EQ(rejectedUnderMemoryCap(bytes, c.needle), "ok");
+    }
 }
 
 TEST(PackReject, OutOfRangeIndex)

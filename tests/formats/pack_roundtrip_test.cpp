@@ -1,5 +1,6 @@
 // Round trips through memory and files, with eager texels and with a TextureProducer.
 #include "pack_test_scenes.h"
+#include "skip_or_fail.h"
 
 #include <filesystem>
 #include <fstream>
@@ -98,7 +99,7 @@ TEST(PackRoundTrip, ProducerGivesTheSameBytesAsEagerTexels)
 TEST(PackRoundTrip, ProducerTexturesAreReleasedBeforeTheNext)
 {
 #ifndef __GLIBC__
-    GTEST_SKIP() << "needs glibc mallinfo2 to measure live heap bytes";
+    LFD_SKIP_OR_FAIL("needs glibc mallinfo2 to measure live heap bytes");
 #else
     constexpr uint32_t kSize = 512; // 1.33 MiB with mips, far above the writer's own needs
     Scene lazy = withoutTexels(makeFullScene());

@@ -1,7 +1,7 @@
-// libFuzzer entry point for the pack reader (not part of the default build).
+// libFuzzer entry point for the pack reader (built with -DLFD_BUILD_FUZZERS=ON, run by
+// scripts/fuzz.sh; see formats/README.md "Tests and fuzzing").
 // Any input must either decode or throw lfd::PackError: crashes, sanitizer reports,
-// other exceptions and huge allocations are bugs. See formats/README.md ("Tests and
-// fuzzing") for the build line; seed the corpus with tests/data/golden_v1.lfdpack.
+// other exceptions and huge allocations are bugs.
 #include "lfd/pack.h"
 #include "lfd/pack_layout.h"
 

@@ -9,6 +9,8 @@
 
 #include "lfd/pack.h"
 
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -160,7 +162,7 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
 TEST_F(CliTest, LayeredRendererAndExplicitFrame)
 {
     if (!caps().layerFromVertexShader)
-        GTEST_SKIP() << "driver lacks GL_ARB_shader_viewport_layer_array";
+        LFD_SKIP_OR_FAIL("driver lacks GL_ARB_shader_viewport_layer_array");
     const fs::path a = dir_ / "a", b = dir_ / "b";
     const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 64x48";
     ASSERT_EQ(runPlay(dir_, common + " --renderer mvr --frames 1 --frame 30 --views-out " + q(a)).status, 0);

@@ -1,9 +1,11 @@
 // Shared fixture for tests that need OpenGL: one headless GL 4.5 core context per test
 // binary (EGL surfaceless; Mesa llvmpipe on CI), created on first use and made current
-// again before every test. Without EGL or GL 4.5 the tests are skipped with the reason.
+// again before every test. Without EGL or GL 4.5 the tests are skipped with the reason
+// (and fail under CI=true: skip_or_fail.h).
 #pragma once
 
 #include "gl_context.h"
+#include "skip_or_fail.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +24,7 @@ protected:
     {
         gl::GlContext* context = sharedGlContext();
         if (!context)
-            GTEST_SKIP() << "no headless OpenGL 4.5 context: " << glUnavailableReason();
+            LFD_SKIP_OR_FAIL("no headless OpenGL 4.5 context: " << glUnavailableReason());
         context->makeCurrent();
     }
     const gl::GlCapabilities& caps() const { return sharedGlContext()->caps(); }

@@ -194,6 +194,8 @@ TEST_F(LfdprRendererTest, ReportsStagesAndTheAtomicsPathInUse)
 
 TEST_F(LfdprRendererTest, Int64AndTwoPass32GiveTheSameImage)
 {
+    // The one hardware-dependent skip that CI=true allows (skip_or_fail.h): llvmpipe has
+    // no 64-bit atomics, so this comparison runs on NVIDIA only; scripts/test.sh prints why.
     if (!caps().int64Atomics)
         GTEST_SKIP() << "GL_NV_shader_atomic_int64 absent (" << caps().renderer << "): only the 32-bit path runs";
     const Scene scene = cubeAndSphereScene();

@@ -7,6 +7,8 @@
 #include "image_output.h"
 #include "renderer.h"
 
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -83,7 +85,7 @@ TEST_F(RendererTest, FactoryKnowsRasterRenderersAndRejectsUnknownNames)
 TEST_F(RendererTest, LayeredMatchesPerViewPasses)
 {
     if (!caps().layerFromVertexShader)
-        GTEST_SKIP() << "driver lacks GL_ARB_shader_viewport_layer_array";
+        LFD_SKIP_OR_FAIL("driver lacks GL_ARB_shader_viewport_layer_array");
     const Scene scene = cubeAndSphereScene();
     const DisplayProfile profile = smallProfile(6, 96, 72);
     const RenderedViews a = renderScene(scene, "mvr", profile, 1.7, 10.0);

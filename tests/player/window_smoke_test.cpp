@@ -7,6 +7,8 @@
 
 #include "lfd/pack.h"
 
+#include "skip_or_fail.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -82,7 +84,7 @@ TEST(WindowSmoke, RendersEveryOutputAndSavesScreenshotsUnderXvfb)
 {
     const std::string xvfb = findXvfb();
     if (xvfb.empty())
-        GTEST_SKIP() << "Xvfb not installed; windowed mode not tested";
+        LFD_SKIP_OR_FAIL("Xvfb not installed; windowed mode not tested");
     const fs::path play = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
     ASSERT_TRUE(fs::exists(play)) << play << " not built";
 
@@ -138,7 +140,7 @@ TEST(WindowSmoke, KeysAndMouseSwitchRendererOutputViewerAndPause)
 {
     const std::string xvfb = findXvfb();
     if (xvfb.empty() || !fs::exists("/usr/bin/xdotool"))
-        GTEST_SKIP() << "Xvfb or xdotool not installed; interactive controls not tested";
+        LFD_SKIP_OR_FAIL("Xvfb or xdotool not installed; interactive controls not tested");
     const fs::path play = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
     ASSERT_TRUE(fs::exists(play)) << play << " not built";
     const fs::path dir = testOutputDir("window_controls");

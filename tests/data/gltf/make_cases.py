@@ -310,6 +310,27 @@ def interleaved_sparse():
     g.write("interleaved_sparse.gltf")
 
 
+def schema_warnings():
+    # Schema violations a sensible bake survives (README "Strict validation"): a metallic
+    # factor above 1 (clamped), a node name that is a number (ignored). lfd-bake warns;
+    # lfd-bake --strict refuses the file.
+    g = Gltf()
+    g.doc["materials"] = [{"pbrMetallicRoughness": {"metallicFactor": 1.5}}]
+    g.doc["meshes"] = [{"primitives": [{"attributes": unit_triangle(g), "material": 0}]}]
+    g.single_node_scene()
+    g.doc["nodes"][0]["name"] = 7
+    g.write("schema_warnings.gltf")
+
+
+def schema_error():
+    # assimp's wrongTypes/badObject.gltf in small: pbrMetallicRoughness is an array.
+    g = Gltf()
+    g.doc["materials"] = [{"pbrMetallicRoughness": ["not an object"]}]
+    g.doc["meshes"] = [{"primitives": [{"attributes": unit_triangle(g), "material": 0}]}]
+    g.single_node_scene()
+    g.write("schema_error.gltf")
+
+
 def malformed():
     with open("malformed.gltf", "w") as f:
         f.write('{"asset": {"version": "2.0"}, "meshes": [\n')
@@ -318,5 +339,6 @@ def malformed():
 if __name__ == "__main__":
     for case in [strip, fan, no_normals, hierarchy, sheared, recursive, accessor_out_of_bounds,
                  index_out_of_range, draco_required, missing_bin, lines_and_triangles, cubic_spline,
-                 bad_key_times, unused_streams, normal_map, interleaved_sparse, malformed]:
+                 bad_key_times, unused_streams, normal_map, interleaved_sparse, schema_warnings, schema_error,
+                 malformed]:
         case()

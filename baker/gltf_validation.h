@@ -1,0 +1,47 @@
+// Strict glTF 2.0 schema validation for the import stage (internal to the baker).
+//
+// tinygltf is a lenient loader: a property of the wrong JSON type, a negative index or an
+// unknown enum value is silently dropped or defaulted, so a broken file would bake into
+// something other than what its author wrote. The validator walks the raw JSON of every
+// property the baker reads (glTF 2.0 specification, section 5 "Properties Reference" and
+// the JSON schema) and reports each violation with its JSON path, for example
+// `materials[0].pbrMetallicRoughness: expected an object, got an array`.
+//
+// Severity (README "Baking", "Strict validation"):
+//   Error   - the baker cannot know what the author meant: a wrong type, a missing
+//             required property, a reference to something that does not exist, an enum
+//             value it cannot interpret in a property it reads. The file is refused.
+//   Warning - a sensible bake is still possible and the message says what the baker
+//             does: out-of-range factors (clamped), non-unit rotations (normalised), wrong
+//             types or values in properties the baker never reads (names, samplers,
+//             cameras, skins, optional extensions). `lfd-bake --strict` refuses these too.
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lfd::bake::gltf {
+
+struct SchemaIssue {
+    enum class Severity { Error, Warning };
+    Severity severity = Severity::Error;
+    std::string path;    // JSON path, e.g. "materials[0].pbrMetallicRoughness"
+    std::string message; // e.g. "expected an object, got an array"
+
+    std::string text() const { return path + ": " + message; }
+};
+
+// Every violation in `document` (the glTF JSON), in document order.
+std::vector<SchemaIssue> validateGltfSchema(const nlohmann::json& document);
+
+// The glTF JSON of a .gltf file or of a .glb's JSON chunk (glTF 2.0 section 4.4 "Binary
+// glTF Layout"). Returns nullopt when a .glb container is malformed (tinygltf then reports
+// the container error); throws BakeError naming `file` when the JSON does not parse.
+std::optional<nlohmann::json> readGltfJson(const std::filesystem::path& path, bool binary,
+                                           const std::string& file);
+
+} // namespace lfd::bake::gltf
