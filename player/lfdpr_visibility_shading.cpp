@@ -112,7 +112,7 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
             glProgramUniform1ui(shadeProgram_, k.locPass, i == 0 ? firstPass : 1u);
             glProgramUniform1ui(shadeProgram_, k.locShadeMaterial, gpuMaterial);
             scene.bindMaterialTextures(material);
-            glDispatchCompute((views_ + 7) / 8, (width_ + 7) / 8, height_); // (view, x, row)
+            glDispatchCompute((width_ + 7) / 8, views_, (height_ + 7) / 8); // (x tile, view, row tile)
             glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         }
         glUseProgram(0);

@@ -33,7 +33,7 @@ vec2 g_duvdx, g_duvdy; // this pixel's uv footprint, for LFD_SAMPLE
 #include "lfdpr_scene_access.glsl"
 #include "lfdpr_camera_line.glsl"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
 
 layout(binding = LFDPR_IMAGE_VIEWS, rgba8) uniform writeonly image2DArray u_views;
 layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
@@ -181,48 +181,55 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
 
 void main()
 {
-    // Invocations run over (view, x, GL row), views fastest: neighbouring invocations read
-    // neighbouring words of the view-interleaved buffers.
-    uvec3 id = gl_GlobalInvocationID.yzx; // x, GL row, view
+    // Workgroups are 8 x 8 pixel tiles of one view (image stores stay in one layer, which a
+    // software rasteriser needs to be fast), dispatched as (x tile, view, row tile): the
+    // tiles of all views of one band of rows follow each other, so the view-interleaved
+    // buffers' cache lines are reused by the neighbouring views' tiles.
+    uvec3 id = gl_GlobalInvocationID.xzy; // x, GL row, view
     uvec2 size = uvec2(u_lfd.viewSize.xy);
     if (id.x >= size.x || id.y >= size.y || id.z >= u_lfd.counts.x)
         return;
     uint pixel = lfdViewWord(id.z, id.x, id.y, size.x, u_lfd.counts.x);
     uint state = materialIds[pixel];
     vec2 centre = vec2(id.xy) + 0.5;
-    if (u_pass == 1u) {
-        if (state != u_shadeMaterial)
-            return;
-        imageStore(u_views, ivec3(id), shadePixel(viewTriangle(winner(pixel), id.z), id.z, centre));
-        materialIds[pixel] = LFDPR_PIXEL_SHADED;
-        return;
-    }
-    if (u_pass == 2u && state != LFDPR_PIXEL_REPAIR)
-        return;
 
-    // Classify: background, a point index to repair, or the winner's material.
-    uint index = winner(pixel);
-    if (index == 0xFFFFFFFFu) {
-        materialIds[pixel] = LFDPR_PIXEL_SHADED;
-        imageStore(u_views, ivec3(id), u_frame.background);
-        return;
-    }
-    ViewTriangle t = viewTriangle(index, id.z);
+    // note: a software rasteriser (llvmpipe) runs both sides of a divergent `if` under a
+    // lane mask, but leaves a loop as soon as no lane is in it. The costly blocks below are
+    // one-trip loops, so a vector of pixels with nothing to do here skips them entirely
+    // (a pass that shades one material out of many then costs about one read per pixel).
+    bool classify = u_pass == 0u || (u_pass == 2u && state == LFDPR_PIXEL_REPAIR);
+    bool shade = u_pass == 1u && state == u_shadeMaterial;
+    ViewTriangle t;
+    for (uint once = classify ? 0u : 1u; once < 1u; ++once) {
+        // Classify: background, a point index to repair, or the winner's material.
+        uint index = winner(pixel);
+        if (index == 0xFFFFFFFFu) {
+            materialIds[pixel] = LFDPR_PIXEL_SHADED;
+            imageStore(u_views, ivec3(id), u_frame.background);
+            break;
+        }
+        t = viewTriangle(index, id.z);
 #ifndef LFDPR_INT64
-    LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
-    if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != viewDepth[pixel]) {
-        materialIds[pixel] = LFDPR_PIXEL_REPAIR;
-        viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp u_pass 1 sets it again
-        atomicAdd(vis.repairCount, 1u);
-        return;
-    }
+        LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
+        if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != viewDepth[pixel]) {
+            materialIds[pixel] = LFDPR_PIXEL_REPAIR;
+            viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp u_pass 1 sets it again
+            atomicAdd(vis.repairCount, 1u);
+            break;
+        }
 #endif
-    uint material = t.draw.material;
-    bool textured = (u_streams & LFD_STREAM_UV) != 0u && (materials[material].flags & kTextureFlags) != 0u;
-    if (textured && material != u_shadeMaterial) {
-        materialIds[pixel] = material; // a later pass, with this material's textures bound
-        return;
+        uint material = t.draw.material;
+        bool textured = (u_streams & LFD_STREAM_UV) != 0u && (materials[material].flags & kTextureFlags) != 0u;
+        if (textured && material != u_shadeMaterial) {
+            materialIds[pixel] = material; // a later pass, with this material's textures bound
+            break;
+        }
+        shade = true;
     }
-    imageStore(u_views, ivec3(id), shadePixel(t, id.z, centre));
-    materialIds[pixel] = LFDPR_PIXEL_SHADED;
+    for (uint once = shade ? 0u : 1u; once < 1u; ++once) {
+        if (u_pass == 1u)
+            t = viewTriangle(winner(pixel), id.z);
+        imageStore(u_views, ivec3(id), shadePixel(t, id.z, centre));
+        materialIds[pixel] = LFDPR_PIXEL_SHADED;
+    }
 }
