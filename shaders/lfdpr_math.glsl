@@ -304,6 +304,18 @@ LFD_FN bool lfdInsideTriangle(vec2 a, vec2 b, vec2 c, vec2 p)
            lfdEdgeOwns(c, a, p, orientation);
 }
 
+// Convex quad (either winding) contains p, edges inclusive: a projected splat cell
+// (splats overlap slightly, so samples on a shared cell edge are never lost).
+LFD_FN bool lfdInsideQuad(vec2 a, vec2 b, vec2 c, vec2 d, vec2 p)
+{
+    float e0 = lfdEdge(a, b, p);
+    float e1 = lfdEdge(b, c, p);
+    float e2 = lfdEdge(c, d, p);
+    float e3 = lfdEdge(d, a, p);
+    return (e0 >= 0.0f && e1 >= 0.0f && e2 >= 0.0f && e3 >= 0.0f) ||
+           (e0 <= 0.0f && e1 <= 0.0f && e2 <= 0.0f && e3 <= 0.0f);
+}
+
 // Conservative rasterisation in the sampling viewport: does the unit pixel square centred
 // at `center` overlap triangle (a, b, c)? Separating-axis test: the two box axes (the
 // caller's bounding box) and the three edge normals; for an edge, the square is outside

@@ -73,14 +73,6 @@ bool inFront(mat4 clipFromScene, vec3 p)
     return (clipFromScene * vec4(p, 1.0)).w > 0.0;
 }
 
-// Convex quad (either winding) contains p, edges inclusive (splats overlap slightly).
-bool insideQuad(vec2 a, vec2 b, vec2 c, vec2 d, vec2 p)
-{
-    float e0 = lfdEdge(a, b, p), e1 = lfdEdge(b, c, p), e2 = lfdEdge(c, d, p), e3 = lfdEdge(d, a, p);
-    return (e0 >= 0.0 && e1 >= 0.0 && e2 >= 0.0 && e3 >= 0.0) ||
-           (e0 <= 0.0 && e1 <= 0.0 && e2 <= 0.0 && e3 <= 0.0);
-}
-
 void main()
 {
     uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * uint(LFDPR_GROUP_SIZE) +
@@ -195,7 +187,7 @@ void main()
         for (int y = pixelLo.y; y <= pixelHi.y; ++y) {
             for (int x = pixelLo.x; x <= pixelHi.x; ++x) {
                 vec2 centre = vec2(x, y) + 0.5;
-                if (!insideQuad(a, b, c, d, centre) || !lfdInsideTriangle(s0, s1, s2, centre))
+                if (!lfdInsideQuad(a, b, c, d, centre) || !lfdInsideTriangle(s0, s1, s2, centre))
                     continue;
                 vec2 ndc = centre / viewSize * 2.0 - 1.0;
                 precise float zNdc = -(planeClip.x * ndc.x + planeClip.y * ndc.y + planeClip.w) / planeClip.z;

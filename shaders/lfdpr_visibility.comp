@@ -59,14 +59,6 @@ layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
 layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
 #endif
 
-// Convex quad (either winding) contains p, edges inclusive (splats overlap slightly).
-bool insideQuad(vec2 a, vec2 b, vec2 c, vec2 d, vec2 p)
-{
-    float e0 = lfdEdge(a, b, p), e1 = lfdEdge(b, c, p), e2 = lfdEdge(c, d, p), e3 = lfdEdge(d, a, p);
-    return (e0 >= 0.0 && e1 >= 0.0 && e2 >= 0.0 && e3 >= 0.0) ||
-           (e0 <= 0.0 && e1 <= 0.0 && e2 <= 0.0 && e3 <= 0.0);
-}
-
 void main()
 {
     uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * uint(LFDPR_GROUP_SIZE) +
@@ -135,7 +127,7 @@ void main()
         for (int y = rowLo; y <= rowHi; ++y) {
             for (int x = colLo; x <= colHi; ++x) {
                 vec2 p = vec2(x, y) + 0.5;
-                if (!insideQuad(a, b, c, d, p))
+                if (!lfdInsideQuad(a, b, c, d, p))
                     continue;
                 vec3 edges = lfdEdgeValues(t, p);
                 if (!lfdOwnsSample(t, edges))
