@@ -1,5 +1,5 @@
-// Texture budget: drop mip levels finer than any view can resolve (DESIGN.md section 4,
-// "mip levels finer than any view can resolve may be dropped").
+// Texture budget: drop mip levels finer than any view can resolve (README "Baking":
+// texture levels finer than any view can resolve are never sampled, so they are not stored).
 #include "bake.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 #version 450
-// EIA construction (DESIGN.md section 3): one invocation per panel pixel writes its three
+// EIA construction (formats/display_profiles.md section 2): one invocation per panel pixel writes its three
 // subpixels. Subpixel column k = 3x + i (physical order on the panel), pixel row l (0 =
 // top of the panel). Its phase under the lens array follows the profile's SubpixelMapping
 // (van Berkel 1999 in affine form), exactly as lfd::subpixelPhase computes it on the CPU:
@@ -15,7 +15,7 @@
 // the CPU (x86-64 SSE2, -ffp-contract=off in ISO C++ mode) does not use either.
 
 // Reconstruction modes (C++: lfd::player::Reconstruction, checked by a test). Only
-// nearest view exists so far; the Gaussian modes of DESIGN.md section 2 (spatial: 2.25
+// nearest view exists so far; the Gaussian modes of the paper's section 4 (spatial: 2.25
 // view-pixel diameter, view: support of 2 view intervals, view-spatial; 8 random Gaussian
 // samples each) become further cases of subpixelValue().
 #define EIA_MODE_NONE 0

@@ -115,7 +115,7 @@ DisplayProfile importLookingGlassVisual(const json& root, const std::string& sou
         throwProfileError(source, "viewCone",
                           "must lie in (0, 170) degrees, got " + formatNumber(viewCone));
 
-    // Step 2: the shader's derived uniforms (DESIGN.md section 3).
+    // Step 2: the shader's derived uniforms (formats/display_profiles.md section 3).
     const double screenWidthIn = double(W) / dpi;
     const double pitchU = pitch * screenWidthIn * std::cos(std::atan(1.0 / slope));
     const double tilt = (double(H) / (double(W) * slope)) * (flipImageX ? -1.0 : 1.0);

@@ -4,6 +4,8 @@
 // lfd-compare", and image_metrics.h for each metric's definition.
 #include "image_metrics.h"
 
+#include "cli_support.h"
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -16,12 +18,6 @@
 namespace {
 
 using namespace lfd::metrics;
-
-std::string oneLine(std::string s)
-{
-    std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-    return s;
-}
 
 std::string sizeText(const RgbImage& image)
 {
@@ -72,16 +68,10 @@ int main(int argc, char** argv)
     app.add_option("--ppd", ppd, "FLIP observer's pixels per degree (default 67.02: 0.7 m from a 0.7 m wide 3840-pixel monitor)")
         ->check(CLI::Range(0.01, 10000.0));
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "lfd-compare: " << oneLine(e.what()) << "\n";
-        return 2;
-    }
+    if (const auto exit = lfd::cli::parseCommandLine(app, argc, argv, "lfd-compare"))
+        return *exit;
 
-    try {
+    return lfd::cli::runReportingErrors("lfd-compare", [&] {
         const RgbImage reference = readRgbImage(referencePath);
         const RgbImage test = readRgbImage(testPath);
         if (reference.width != test.width || reference.height != test.height)
@@ -106,8 +96,5 @@ int main(int argc, char** argv)
         else
             printText(scores);
         return 0;
-    } catch (const std::exception& e) {
-        std::cerr << "lfd-compare: error: " << oneLine(e.what()) << "\n";
-        return 1;
-    }
+    });
 }

@@ -9,6 +9,7 @@
 #include "bench_runner.h"
 #include "image_output.h"
 #include "renderer_lfdpr.h"
+#include "renderer_registry.h"
 
 #include "lfd/display_profile.h"
 
@@ -149,7 +150,7 @@ TEST_F(BenchTest, UnknownRendererIsOneLineError)
         EXPECT_NE(what.find("lfdpr-no-mv-mipmapping"), std::string::npos) << "variants are listed";
         EXPECT_EQ(what.find('\n'), std::string::npos);
     }
-    EXPECT_THROW(player::createBenchRenderer("lfdpr-no-anything"), std::invalid_argument);
+    EXPECT_THROW(player::createRenderer("lfdpr-no-anything"), std::invalid_argument);
 }
 
 TEST_F(BenchTest, LfdprVariantsDisableOneInnovationEach)
@@ -161,7 +162,7 @@ TEST_F(BenchTest, LfdprVariantsDisableOneInnovationEach)
     for (const Expect& e : {Expect{"lfdpr", true, true, true}, Expect{"lfdpr-no-lfd-sampling", false, true, true},
                             Expect{"lfdpr-no-texture-splatting", true, false, true},
                             Expect{"lfdpr-no-mv-mipmapping", true, true, false}}) {
-        std::unique_ptr<player::Renderer> r = player::createBenchRenderer(e.name);
+        std::unique_ptr<player::Renderer> r = player::createRenderer(e.name);
         const auto* lfdpr = dynamic_cast<const player::LfdprRenderer*>(r.get());
         ASSERT_NE(lfdpr, nullptr) << e.name;
         EXPECT_EQ(lfdpr->options().lfdBiasedSampling, e.lfd) << e.name;
@@ -193,6 +194,19 @@ TEST_F(BenchTest, LfdprRowHasPointGenerationAndRatioLines)
               std::string::npos)
         << table;
     EXPECT_EQ(table.find("lfdpr/mvr-layered: n/a"), std::string::npos) << table;
+
+    // Every stage lfd-play prints is in the bench report too: lfdpr's resolve has its own
+    // column in the table and the CSV (it once went missing from both).
+    EXPECT_GT(lfdpr->stageMean("resolve"), 0.0);
+    EXPECT_NE(table.find("resolve ms"), std::string::npos) << table;
+    EXPECT_EQ(table.find("stages inside total not shown above"), std::string::npos) << table;
+    const std::string csv = player::benchCsv(report);
+    const std::string header = csv.substr(0, csv.find('\n'));
+    ASSERT_NE(header.find(",resolve_ms"), std::string::npos) << header;
+    const size_t lfdprRow = csv.find("\nlfdpr,");
+    ASSERT_NE(lfdprRow, std::string::npos) << csv;
+    const std::string row = csv.substr(lfdprRow + 1, csv.find('\n', lfdprRow + 1) - lfdprRow - 1);
+    EXPECT_NE(row.back(), ',') << "lfdpr's resolve_ms is empty: " << row;
 }
 
 TEST_F(BenchTest, WritesJsonCsvSvgAndImages)

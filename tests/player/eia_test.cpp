@@ -104,7 +104,7 @@ TEST(Eia, ShaderModeConstantsMatchTheEnum) {
 }
 
 TEST(Eia, PrototypeHandWorkedSubpixels) {
-    // Prototype (DESIGN.md section 3): X = 3 * 3840 / 479.36 = 11520 / 479.36
+    // Prototype (formats/display_profiles.md section 2): X = 3 * 3840 / 479.36 = 11520 / 479.36
     //   = 24.0320427236...  subpixels per lens; tan(-9.66 deg) = -0.1702146861...
     // phase = fract((k + 0.5 - 3 l tan a) / X), view = floor(48 * phase):
     //   (k, l) = (0, 0):      0.5 / X = 0.0208056;            * 48 = 0.99867 -> view 0

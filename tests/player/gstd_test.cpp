@@ -389,7 +389,7 @@ TEST_F(GstdTest, BenchMeasuresFlipAgainstGstdAndCachesIt)
     EXPECT_DOUBLE_EQ(q["centre_view"]["flip"].get<double>(), mvr.centreView.flip);
     EXPECT_TRUE(q["all_views"]["flip"].is_null()) << "not computed per view";
     const std::string csv = player::benchCsv(first);
-    EXPECT_NE(csv.find(",eia_flip,view_flip\n"), std::string::npos) << csv;
+    EXPECT_NE(csv.find(",eia_flip,view_flip,resolve_ms\n"), std::string::npos) << csv;
     EXPECT_NE(player::benchTable(first).find("EIA FLIP"), std::string::npos);
 
     // The second run reads gstd's views from the cache and measures the same numbers.
@@ -400,7 +400,7 @@ TEST_F(GstdTest, BenchMeasuresFlipAgainstGstdAndCachesIt)
     EXPECT_EQ(second.results[0].eia.flip, mvr.eia.flip);
 
     // A changed gstd setting is a different entry: rendered again.
-    o.gstd.factor = 2;
+    o.rendererOptions.gstd.factor = 2;
     const player::BenchReport third =
         player::runBenchmark(o, profile, readPack(pack), "scene.lfdpack", "test GL", progress);
     EXPECT_FALSE(third.results[1].fromCache);

@@ -11,6 +11,7 @@
 #include "gpu_timer.h"
 #include "image_output.h"
 #include "renderer_lfdpr.h"
+#include "renderer_registry.h"
 #include "view_targets.h"
 
 #include "lfd/framing.h"

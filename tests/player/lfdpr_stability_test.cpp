@@ -21,7 +21,7 @@
 #include "gpu_timer.h"
 #include "image_output.h"
 #include "lfdpr_math.h"
-#include "renderer.h"
+#include "renderer_registry.h"
 #include "renderer_lfdpr.h"
 #include "view_targets.h"
 

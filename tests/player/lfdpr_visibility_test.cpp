@@ -14,6 +14,7 @@
 #include "image_output.h"
 #include "lfdpr_camera_line.h"
 #include "renderer_lfdpr.h"
+#include "renderer_registry.h"
 #include "shader_library.h"
 #include "view_targets.h"
 

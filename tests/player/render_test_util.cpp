@@ -3,7 +3,7 @@
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
-#include "renderer.h"
+#include "renderer_registry.h"
 #include "view_targets.h"
 
 #include "lfd/framing.h"

@@ -14,7 +14,7 @@
 #include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "image_output.h"
-#include "renderer.h"
+#include "renderer_registry.h"
 #include "renderer_lfdpr.h"
 #include "view_targets.h"
 

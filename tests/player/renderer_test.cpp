@@ -5,7 +5,7 @@
 #include "test_scenes.h"
 
 #include "image_output.h"
-#include "renderer.h"
+#include "renderer_registry.h"
 
 #include "skip_or_fail.h"
 

@@ -1,5 +1,5 @@
 // Display profiles: the physical panel, its lenticular mapping and the views rendered
-// for it. The paper's prototype (DESIGN.md section 3) is the built-in default.
+// for it. The paper's prototype (formats/display_profiles.md section 1) is the built-in default.
 //
 // Profiles are JSON files (samples/profiles/*.json); Looking Glass visual.json
 // calibrations are imported into the same struct. Every loaded profile is validated

@@ -1,0 +1,100 @@
+// lfd-bench's measurement (paper section 5; README "Benchmarking: lfd-bench"): every renderer runs in one process and
+// one GL context on the same uploaded pack, the same views and the same frame times of
+// the rotating scene; per-stage GPU times come from the renderers' own GpuTimer stages,
+// and quality is measured at one fixed frame against a reference renderer (the gold
+// standard gstd by default, paper section 5; its views are cached on disk, gstd_cache.h).
+// Speed and error are reported together (bench_report.h formats them).
+#pragma once
+
+#include "gpu_timer.h"
+#include "renderer_registry.h"
+
+#include "lfd/display_profile.h"
+#include "lfd/scene.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <iosfwd>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lfd::player {
+
+struct BenchOptions {
+    std::filesystem::path pack;
+    std::vector<std::string> renderers{"mvr", "mvr-layered", "lfdpr"};
+    std::string reference = "gstd"; // quality reference (rendered untimed if not listed)
+    RendererOptions rendererOptions; // every renderer is built with these (gstd: reference or timed)
+    // Cache of gstd's quality-frame views: used when `pack` is a readable file; empty
+    // gstdCache = defaultGstdCacheDir(); gstdCacheEnabled = false renders every time.
+    std::filesystem::path gstdCache;
+    bool gstdCacheEnabled = true;
+    uint32_t frames = 100;          // timed frames
+    uint32_t warmup = 3;            // untimed frames before them
+    double fps = 60.0;              // frame k is at time k / fps
+    double turntablePeriod = 10.0;  // seconds per revolution, 0 = still
+    uint32_t qualityFrame = 0;      // frame whose views and EIA are compared
+    std::filesystem::path outDir;   // empty: nothing written
+    bool quiet = false;             // no progress lines
+};
+
+// Quality of one image set against the reference's (image_output.h metrics).
+struct Quality {
+    double rmse = 0.0; // 0..255
+    double psnr = 0.0; // dB, +inf when identical
+    double ssim = 1.0; // luma
+    // LDR FLIP (lfd::metrics::flip, mean over pixels, 0 = identical) at FLIP's default
+    // observer (about 67 pixels per degree, as lfd-compare), so the PNGs lfd-bench writes
+    // give the same value in lfd-compare. NaN where not computed (all views).
+    double flip = 0.0;
+};
+
+struct RendererResult {
+    std::string name;
+    bool timed = true;  // false: the reference, rendered only for quality
+    std::map<std::string, StageTimes> stages; // timed frames only
+    std::vector<std::pair<std::string, double>> extra; // Renderer::extraStats() after the run
+    Quality eia, centreView, allViews; // allViews: RMSE from the mean MSE, SSIM averaged
+    double seconds = 0.0; // wall time of this renderer's run (timing + quality frame)
+    bool fromCache = false; // the quality frame's views came from the gstd cache
+
+    double stageMean(const std::string& stage) const; // 0 when absent
+    std::optional<double> extraValue(const std::string& key) const;
+};
+
+struct BenchReport {
+    BenchOptions options;
+    std::string gl;        // GlContext::describe()
+    std::string packName;
+    DisplayProfile profile;
+    uint64_t triangles = 0;
+    uint64_t drawnTriangles = 0; // with every node instance counted
+    uint64_t sceneGpuBytes = 0;
+    std::vector<RendererResult> results; // in options.renderers order, reference last if untimed
+
+    const RendererResult* find(const std::string& name) const;
+    // other's total / renderer's total (> 1: `renderer` is faster); empty if either is
+    // missing or untimed.
+    std::optional<double> speedUp(const std::string& renderer, const std::string& other) const;
+};
+
+// The reference renderer's outputs at the quality frame and each renderer's own, kept so
+// the caller can write the PNGs (image order, RGBA8).
+struct FrameImages {
+    std::vector<uint8_t> eia;    // panel size
+    std::vector<uint8_t> centre; // view viewCount / 2
+};
+
+// Runs the benchmark. Needs a current GL 4.5 context (`glDescription` is recorded as is).
+// Progress lines go to `progress` unless options.quiet. `images` (optional) receives each
+// renderer's quality-frame EIA and centre view, keyed by renderer name.
+BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& profile, Scene scene,
+                         const std::string& packName, const std::string& glDescription,
+                         std::ostream& progress,
+                         std::map<std::string, FrameImages>* images = nullptr);
+
+} // namespace lfd::player

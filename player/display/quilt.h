@@ -1,0 +1,57 @@
+// Quilt images (Looking Glass convention, README "Playing: lfd-play"): all N views tiled into one
+// image, `cols` x `rows` tiles, view 0 in the bottom-left tile (the leftmost camera), then
+// left to right and upwards, so view cols-1 is bottom-right and view cols sits above view 0.
+// Tiles past the last view stay black. File names carry the layout as a suffix
+// `_qs{cols}x{rows}a{aspect}` (aspect = view width / view height), e.g. `_qs8x6a1.33`, so
+// Looking Glass tools read the layout from the name.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lfd {
+struct DisplayProfile;
+}
+
+namespace lfd::player {
+
+class ViewTargets;
+
+struct QuiltLayout {
+    uint32_t cols = 0, rows = 0;
+    uint32_t tileWidth = 0, tileHeight = 0; // = the view size
+    uint32_t width() const { return cols * tileWidth; }
+    uint32_t height() const { return rows * tileHeight; }
+    double aspect() const { return double(tileWidth) / double(tileHeight); }
+};
+
+// Layout rule: rows = ceil(N / cols), so fewer than one row of tiles is ever empty; among
+// those, cols is chosen so that the quilt's aspect (cols * w) / (rows * h) is closest to
+// `targetAspect` (ratio compared on a log scale), ties broken by fewer empty tiles, then by
+// fewer columns. With targetAspect = the panel's aspect the quilt has the panel's shape,
+// which for the prototype (48 views of 480x360 on 3840x2160) gives exactly 8x6 tiles of
+// 3840x2160, one sample per panel pixel. Throws std::invalid_argument on zero sizes.
+QuiltLayout chooseQuiltLayout(uint32_t viewCount, uint32_t viewWidth, uint32_t viewHeight,
+                              double targetAspect);
+// Target aspect = panel width / panel height of the profile; views from the profile.
+QuiltLayout chooseQuiltLayout(const DisplayProfile& profile);
+
+// Tiles RGBA8 views (image order, row 0 = top, each tileWidth x tileHeight) into an RGBA8
+// quilt in image order. Throws std::invalid_argument when the views do not fit the layout.
+std::vector<uint8_t> assembleQuilt(const QuiltLayout& layout,
+                                   const std::vector<std::vector<uint8_t>>& views);
+// Same from the GPU view array (reads every layer back).
+std::vector<uint8_t> assembleQuilt(const QuiltLayout& layout, const ViewTargets& views);
+
+// "_qs8x6a1.33": aspect with at most two decimals, trailing zeros removed ("a2", "a0.75").
+std::string quiltSuffix(uint32_t cols, uint32_t rows, double aspect);
+
+// Inserts quiltSuffix before the extension ("out/q.png" -> "out/q_qs8x6a1.33.png") unless
+// the stem already ends with a _qs{cols}x{rows}a{aspect} suffix (then the name is kept as
+// given). A name without an extension gets ".png".
+std::filesystem::path quiltFileName(const std::filesystem::path& requested, uint32_t cols,
+                                    uint32_t rows, double aspect);
+
+} // namespace lfd::player

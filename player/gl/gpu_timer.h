@@ -1,0 +1,44 @@
+// Per-stage GPU times from GL timer queries, accumulated over frames. Each stage is a pair
+// of GL_TIMESTAMP queries (glQueryCounter), so stages may nest: "total" brackets a whole
+// frame around "view_generation" and "eia" (GL_TIME_ELAPSED queries cannot nest).
+// Queries are read back lazily, in order, so timing does not stall the GPU more than
+// necessary; finish() collects everything outstanding.
+#pragma once
+
+#include <map>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace lfd::player {
+
+struct StageTimes {
+    std::vector<double> ms; // one entry per frame
+    double mean() const;
+    double median() const;
+    double min() const;
+    double max() const;
+};
+
+class GpuTimer {
+public:
+    GpuTimer();
+    ~GpuTimer();
+    GpuTimer(const GpuTimer&) = delete;
+    GpuTimer& operator=(const GpuTimer&) = delete;
+
+    void begin(std::string_view stage); // stages may nest; end() closes the innermost
+    void end();
+    void finish(); // waits for and collects all pending results
+    const std::map<std::string, StageTimes>& stages() const { return stages_; }
+
+private:
+    struct Pending;
+    std::vector<Pending*> pending_;
+    std::vector<unsigned> freeQueries_;
+    std::vector<Pending*> open_; // begun, not yet ended (innermost last)
+    void collect(bool wait);
+    std::map<std::string, StageTimes> stages_;
+};
+
+} // namespace lfd::player

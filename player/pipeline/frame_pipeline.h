@@ -1,0 +1,68 @@
+// One frame, written once: animate the scene to time t, render the N views with a
+// renderer, build the EIA - timed as stage "total" around the renderer's stages and "eia"
+// (frame_stages.h). lfd-play (headless and windowed, through PlayerSession) and lfd-bench
+// both drive a FramePipeline, so what the bench times is exactly what the player runs.
+// It owns what every renderer shares: the uploaded scene, the view targets and the EIA
+// builder, created once so switching renderers (R key, bench) pays no upload.
+#pragma once
+
+#include "eia_builder.h"
+#include "frame.h"
+#include "gpu_scene.h"
+#include "gpu_timer.h"
+#include "renderer.h"
+#include "view_targets.h"
+
+#include "lfd/display_profile.h"
+#include "lfd/framing.h"
+#include "lfd/scene.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace lfd::player {
+
+// The in-memory outputs of one frame, read back right after it was rendered.
+struct FrameOutputs {
+    uint32_t frame = 0;
+    std::vector<std::vector<uint8_t>> views; // RGBA8, image order, view 0 = leftmost camera
+    std::vector<uint8_t> eia;                // RGBA8, panel size, image order
+};
+
+class FramePipeline {
+public:
+    // Needs a current GL context. The scene is framed as the baker assumed (its fill), so
+    // pixel sizes agree with the pack; `turntablePeriod` seconds per revolution, 0 = still.
+    FramePipeline(const DisplayProfile& profile, const Scene& scene, double turntablePeriod);
+
+    const DisplayProfile& profile() const { return profile_; }
+    const Framing& framing() const { return framing_; }
+    GpuScene& scene() { return *scene_; }
+    const GpuScene& scene() const { return *scene_; }
+    ViewTargets& targets() { return *targets_; }
+    const ViewTargets& targets() const { return *targets_; }
+    const EiaBuilder& eia() const { return *eia_; }
+    const FrameSetup& lastFrame() const { return frame_; }
+
+    // Animates to `time`, renders the views with `renderer` and builds the EIA.
+    void renderFrame(Renderer& renderer, double time, GpuTimer& timer,
+                     Reconstruction reconstruction = Reconstruction::None);
+    // The two halves, for views that come from elsewhere (lfd-bench's gstd cache):
+    // animate only, then interleave whatever the view targets hold.
+    void animate(double time);
+    void buildEia(GpuTimer& timer, Reconstruction reconstruction = Reconstruction::None);
+
+    FrameOutputs read(uint32_t frameIndex) const;
+
+private:
+    DisplayProfile profile_;
+    Framing framing_;
+    double turntablePeriod_;
+    std::unique_ptr<GpuScene> scene_;
+    std::unique_ptr<ViewTargets> targets_;
+    std::unique_ptr<EiaBuilder> eia_;
+    FrameSetup frame_;
+};
+
+} // namespace lfd::player

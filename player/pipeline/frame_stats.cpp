@@ -1,0 +1,104 @@
+#include "frame_stats.h"
+
+#include "frame_stages.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <unistd.h>
+
+namespace lfd::player {
+
+nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageTimes>& stages)
+{
+    nlohmann::json j;
+    j["renderer"] = info.renderer;
+    j["views"] = info.views;
+    j["view_width"] = info.viewWidth;
+    j["view_height"] = info.viewHeight;
+    j["frames"] = info.frames;
+    j["gpu"] = info.gpu;
+    j["profile"] = info.profile;
+    j["pack"] = info.pack;
+    j["reconstruction"] = info.reconstruction;
+    j["panel_width"] = info.panelWidth;
+    j["panel_height"] = info.panelHeight;
+    j["view_buffer_bytes"] = info.viewBufferBytes;
+    j["scene_gpu_bytes"] = info.sceneGpuBytes;
+    j["triangles"] = info.triangles;
+    j["drawn_triangles"] = info.drawnTriangles;
+
+    // Means at the top level (the numbers a reader wants first), details under "stages".
+    nlohmann::json detail = nlohmann::json::object();
+    for (const std::string_view required : stage::kRequired)
+        j[std::string(required) + "_ms"] = 0.0; // present even if a stage did not run
+    for (const auto& [name, times] : stages) {
+        j[name + "_ms"] = times.mean();
+        detail[name] = {{"mean", times.mean()},
+                        {"median", times.median()},
+                        {"min", times.min()},
+                        {"max", times.max()},
+                        {"samples", times.ms.size()}};
+    }
+    j["stages"] = detail;
+    for (const auto& [key, value] : info.extra)
+        if (!j.contains(key))
+            j[key] = value;
+    return j;
+}
+
+std::string statsCsv(const std::map<std::string, StageTimes>& stages)
+{
+    std::ostringstream csv;
+    csv << "frame,stage,ms\n";
+    size_t frames = 0;
+    for (const auto& [name, times] : stages)
+        frames = std::max(frames, times.ms.size());
+    char value[64];
+    for (size_t f = 0; f < frames; ++f)
+        for (const auto& [name, times] : stages)
+            if (f < times.ms.size()) {
+                std::snprintf(value, sizeof(value), "%.6f", times.ms[f]);
+                csv << f << ',' << name << ',' << value << '\n';
+            }
+    return csv.str();
+}
+
+void writeTextFileAtomic(const std::filesystem::path& path, const std::string& text)
+{
+    const std::filesystem::path tmp =
+        path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out)
+            throw std::runtime_error(path.string() + ": cannot write (directory missing or not writable)");
+        out << text;
+        out.flush();
+        if (!out) {
+            out.close();
+            std::filesystem::remove(tmp);
+            throw std::runtime_error(path.string() + ": write failed");
+        }
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::filesystem::remove(tmp);
+        throw std::runtime_error(path.string() + ": cannot rename temporary file: " + ec.message());
+    }
+}
+
+void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
+                const std::map<std::string, StageTimes>& stages)
+{
+    std::filesystem::path csvPath = jsonPath;
+    csvPath.replace_extension(".csv");
+    if (csvPath == jsonPath)
+        csvPath += ".csv";
+    writeTextFileAtomic(jsonPath, statsJson(info, stages).dump(2) + "\n");
+    writeTextFileAtomic(csvPath, statsCsv(stages));
+}
+
+} // namespace lfd::player

@@ -1,0 +1,43 @@
+// Run statistics (paper section 5: time per stage): per-stage GPU milliseconds with mean / median /
+// min / max, the run's configuration, view-buffer memory and renderer-specific numbers,
+// written as JSON (--stats FILE.json) plus a CSV with one row per frame per stage next to
+// it (same stem, .csv) for charts.
+#pragma once
+
+#include "gpu_timer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lfd::player {
+
+struct RunInfo {
+    std::string renderer, gpu, profile, pack, reconstruction;
+    uint32_t views = 0, viewWidth = 0, viewHeight = 0, frames = 0;
+    uint32_t panelWidth = 0, panelHeight = 0;
+    uint64_t viewBufferBytes = 0, sceneGpuBytes = 0, triangles = 0, drawnTriangles = 0;
+    std::vector<std::pair<std::string, double>> extra; // Renderer::extraStats()
+};
+
+// Keys: renderer, views, view_width, view_height, frames, gpu, <stage>_ms (means) for
+// every stage (view_generation_ms, eia_ms, total_ms at least), stages {name: {mean,
+// median, min, max, samples}}, view_buffer_bytes, scene_gpu_bytes, triangles, drawn_triangles,
+// panel_width, panel_height, profile, pack, reconstruction, and the extra stats.
+nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageTimes>& stages);
+// "frame,stage,ms" header, then one row per recorded sample.
+std::string statsCsv(const std::map<std::string, StageTimes>& stages);
+
+// Writes `jsonPath` and its .csv sibling atomically (temporary file + rename). Throws
+// std::runtime_error naming the file.
+void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
+                const std::map<std::string, StageTimes>& stages);
+// Atomic text file write used above.
+void writeTextFileAtomic(const std::filesystem::path& path, const std::string& text);
+
+} // namespace lfd::player

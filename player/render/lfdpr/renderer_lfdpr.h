@@ -1,0 +1,96 @@
+// lfdpr: Light Field Display Point Rendering (Gavane & Watson 2024, section 3).
+//
+// Per frame (paper section 3; README "LFDPR"):
+//   1. "point_generation": VS -> GS -> FS into a framebuffer without attachments. The GS
+//      samples each visible triangle at LFD-biased horizontal / vertical densities (paper
+//      section 3.1, T_align and S_ortho), reduced where the texture is coarser than the
+//      views (eq. lfd_texelSplatDensity), and sets up multiview mipmapping (eqs.
+//      minVPUVSize..maxLOD); every fragment appends one point to the point buffer.
+//   2. "view_generation": a compute pass splats every point into every view as a
+//      world-space square clipped by its own triangle (section 3.2), shaded per view with
+//      the texture value interpolated between the point's min- and max-LOD fetches (eqs.
+//      interpolationParameter, interplateTexValue), depth-resolved by atomicMin on a
+//      64-bit (depth << 32 | rgba8) word, or by the two-pass 32-bit fallback.
+//   3. "resolve": a compute pass writes the winning colours (or the background) into the
+//      ViewTargets colour array, so the EIA builder, quilt and view outputs are shared.
+// The shared formulas live in shaders/lfdpr_math.glsl (player/lfdpr_math.h on the CPU).
+#pragma once
+
+#include "renderer.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace lfd::player {
+
+struct LfdprOptions {
+    // Visibility (default, beyond the paper): compute point generation, 8-byte points,
+    // visibility splatting of depth and point index with camera-line coherence, then one
+    // mvr-identical shading per visible view pixel with textureGrad at the exact footprint.
+    // Paper: the paper's pipeline as published - geometry-shader point generation, 48-byte
+    // points carrying tv_min / tv_max, shading per splat and view (multiview mipmapping).
+    enum class Pipeline { Visibility, Paper } pipeline = Pipeline::Visibility;
+    // false: isotropic sampling at the finer of the two densities (as iVIR).
+    bool lfdBiasedSampling = true;
+    // false: never reduce density by texture (eq. lfd_texelSplatDensity off).
+    bool textureSplatting = true;
+    // false: texture values fetched at LOD 0 (as iVIR / EPR). Paper pipeline only (the
+    // visibility pipeline filters every texture per pixel and view).
+    bool multiviewMipmapping = true;
+    // Auto: 64-bit atomics where GL_NV_shader_atomic_int64 exists, else two-pass 32-bit.
+    // Int64 where unsupported throws gl::GlError at construction.
+    enum class Atomics { Auto, Int64, TwoPass32 } atomics = Atomics::Auto;
+    // Points the buffer holds initially; it grows (needed * 1.25) after an overflow. The
+    // visibility pipeline then regenerates the points within the same frame (no point is
+    // ever dropped below the cap); the paper pipeline renders that frame partially.
+    uint32_t initialPointCapacity = 1u << 20;
+    // Upper bound of that growth (also capped by GL_MAX_SHADER_STORAGE_BLOCK_SIZE): past
+    // it every frame stores what fits, is flagged as overflowed and renders partially,
+    // rather than asking the driver for an unbounded allocation. 2^26 points = 3 GiB.
+    uint32_t maxPointCapacity = 1u << 26;
+};
+
+// Introspection for tests and the benchmark (values of the most recent render()).
+struct LfdprFrameInfo {
+    uint64_t points = 0;           // points generated (may exceed capacity on overflow)
+    uint64_t pointsStored = 0;     // min(points, capacity): points splatted this frame
+    uint64_t triangles = 0;        // triangle records written (triangles that emitted)
+    uint64_t trianglesOversized = 0; // triangles larger than one sampling tile
+    uint32_t pointCapacity = 0;    // capacity used this frame
+    uint32_t triangleCapacity = 0;
+    bool overflowed = false;       // points (or triangle records) were dropped this frame
+    uint64_t overflowFrames = 0;   // frames overflowed so far
+    bool int64Atomics = false;     // atomics path in use
+    uint32_t bytesPerPoint = 0;
+    uint64_t pointBufferBytes = 0;
+    uint64_t triangleBufferBytes = 0; // per-triangle records (and the large-triangle list)
+    uint64_t trianglesLarge = 0;      // visibility pipeline: sampled by a workgroup
+    uint64_t regenerations = 0;       // visibility pipeline: point generation redone after growth
+    uint64_t repairs = 0;             // visibility pipeline, 32-bit: pixels whose index was repaired
+    uint64_t viewBufferBytes = 0;
+};
+
+class LfdprRenderer : public Renderer {
+public:
+    virtual const LfdprOptions& options() const = 0;
+    virtual const LfdprFrameInfo& lastFrame() const = 0;
+    // Points of the last frame per drawn triangle (draws in order, then triangles), read
+    // back from the GPU: lets tests check that both pipelines sample alike. Slow.
+    virtual std::vector<uint32_t> pointsPerTriangle() const = 0;
+};
+
+// Needs a current GL 4.5 context. Builds options.pipeline's implementation.
+std::unique_ptr<LfdprRenderer> createLfdprRenderer(const LfdprOptions& options = {});
+// The two implementations (renderer_lfdpr_paper.cpp, renderer_lfdpr_visibility.cpp).
+std::unique_ptr<LfdprRenderer> createLfdprPaperRenderer(const LfdprOptions& options);
+std::unique_ptr<LfdprRenderer> createLfdprVisibilityRenderer(const LfdprOptions& options);
+// Parses "visibility" | "paper" (the --lfdpr-pipeline flag); throws std::invalid_argument.
+LfdprOptions::Pipeline parseLfdprPipeline(const std::string& text);
+// Whether the driver has the 64-bit atomics the Int64 path needs; throws gl::GlError
+// for Int64 where it has not.
+bool lfdprUseInt64(LfdprOptions::Atomics atomics);
+
+// Parses "auto" | "64" | "32" (the --atomics flag); throws std::invalid_argument.
+LfdprOptions::Atomics parseLfdprAtomics(const std::string& text);
+
+} // namespace lfd::player

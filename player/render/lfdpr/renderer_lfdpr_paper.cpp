@@ -1,0 +1,237 @@
+// lfdpr, the paper's pipeline (LfdprOptions::Pipeline::Paper): owns the LFDPR buffers (points, triangle records, counters, per-view
+// inverses) and runs point generation, view generation and the resolve each frame; grows
+// the point buffer after an overflow and reports what happened (extraStats).
+#include "renderer_lfdpr.h"
+
+#include "frame_stages.h"
+#include "frame_uniforms.h"
+#include "gpu_scene.h"
+#include "gpu_timer.h"
+#include "lfdpr_point_generation.h"
+#include "lfdpr_view_generation.h"
+#include "scene_bindings.h"
+#include "shader_library.h"
+#include "view_targets.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace lfd::player {
+
+namespace {
+
+long define(const char* name) { return gl::shaderDefineValue("lfdpr_bindings.glsl", name); }
+
+// A device-local buffer of `bytes` (at least 16, so bindings stay valid).
+unsigned makeBuffer(size_t bytes, GLbitfield flags = 0)
+{
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr, flags);
+    return buffer;
+}
+
+class LfdprRendererImpl final : public LfdprRenderer {
+public:
+    explicit LfdprRendererImpl(const LfdprOptions& options)
+        : options_(options), views_(lfdprUseInt64(options.atomics))
+    {
+        pointBytes_ = uint32_t(define("LFDPR_POINT_BYTES"));
+        // The largest point buffer one SSBO binding can address, and the user's cap.
+        GLint64 maxBlockBytes = 0;
+        glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
+        maxPointCapacity_ = uint32_t(std::min<uint64_t>(
+            std::max<uint32_t>(options.maxPointCapacity, 1),
+            std::max<uint64_t>(uint64_t(std::max<GLint64>(maxBlockBytes, 0)) / pointBytes_, 1)));
+        pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
+        points_ = makeBuffer(size_t(pointCapacity_) * pointBytes_);
+        counters_ = makeBuffer(size_t(define("LFDPR_COUNTER_BYTES")), GL_DYNAMIC_STORAGE_BIT);
+        frameUbo_ = makeBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
+        info_.int64Atomics = views_.int64();
+        info_.bytesPerPoint = pointBytes_;
+    }
+
+    ~LfdprRendererImpl() override
+    {
+        const GLuint buffers[] = {points_, counters_, frameUbo_, records_, sampling_, viewInverse_};
+        glDeleteBuffers(6, buffers);
+    }
+
+    std::string name() const override { return "lfdpr-paper"; }
+    const LfdprOptions& options() const override { return options_; }
+    const LfdprFrameInfo& lastFrame() const override { return info_; }
+
+    std::vector<uint32_t> pointsPerTriangle() const override
+    {
+        // PointGpu.triangle (offset 12) is the record: draw record base + primitive.
+        std::vector<uint32_t> counts(size_t(recordCapacity_), 0);
+        std::vector<uint32_t> words(size_t(info_.pointsStored) * (pointBytes_ / 4));
+        if (!words.empty())
+            glGetNamedBufferSubData(points_, 0, GLsizeiptr(words.size() * 4), words.data());
+        for (size_t i = 0; i < info_.pointsStored; ++i) {
+            const uint32_t record = words[i * (pointBytes_ / 4) + 3];
+            if (record < counts.size())
+                ++counts[record];
+        }
+        return counts;
+    }
+
+    void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets,
+                GpuTimer& timer) override
+    {
+        // Step 1: buffers sized for this scene, these views, and the last frame's overflow.
+        prepareBuffers(scene, frame, targets);
+        uniforms_.upload(frame);
+        const uint32_t options = (options_.lfdBiasedSampling ? uint32_t(define("LFDPR_OPTION_LFD_SAMPLING")) : 0u) |
+                                 (options_.textureSplatting ? uint32_t(define("LFDPR_OPTION_TEXTURE_SPLATTING")) : 0u) |
+                                 (options_.multiviewMipmapping ? uint32_t(define("LFDPR_OPTION_MV_MIPMAPPING")) : 0u);
+        const LfdprFrameGpu constants = makeLfdprFrame(frame, pointCapacity_, options);
+        glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
+        uploadViewInverses(frame);
+        bindBuffers(scene);
+
+        // Step 2: point generation (section 3.1).
+        timer.begin(stage::kPointGeneration);
+        const GLuint zero = 0;
+        glClearNamedBufferData(counters_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        pointGeneration_.run(scene);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        timer.end();
+
+        // Step 3: view generation (sections 3.2, 3.3) and the resolve into the targets.
+        bindBuffers(scene); // the draw loop changed texture and program state, not buffers
+        timer.begin(stage::kViewGeneration);
+        views_.splat(counters_);
+        timer.end();
+        timer.begin(stage::kResolve);
+        views_.resolve(targets);
+        timer.end();
+
+        // Step 4: what happened (read back for stats and to size the next frame).
+        readCounters();
+    }
+
+    std::vector<std::pair<std::string, double>> extraStats() const override
+    {
+        return {
+            {"points", double(info_.points)},
+            {"bytes_per_point", double(info_.bytesPerPoint)},
+            {"point_buffer_bytes", double(info_.pointBufferBytes)},
+            {"triangle_buffer_bytes", double(triangleBufferBytes())},
+            {"pipeline_paper", 1.0},
+            {"view_buffer_bytes", double(info_.viewBufferBytes)},
+            {"point_capacity", double(info_.pointCapacity)},
+            {"overflow_frames", double(info_.overflowFrames)},
+            {"atomics", info_.int64Atomics ? 1.0 : 0.0},
+            {"triangles_emitting", double(info_.triangles)},
+            {"triangles_oversized", double(info_.trianglesOversized)},
+            {"triangles_coarsened", double(trianglesCoarsened_)},
+            {"lfd_sampling", options_.lfdBiasedSampling ? 1.0 : 0.0},
+            {"texture_splatting", options_.textureSplatting ? 1.0 : 0.0},
+            {"mv_mipmapping", options_.multiviewMipmapping ? 1.0 : 0.0},
+        };
+    }
+
+private:
+    size_t triangleBufferBytes() const
+    {
+        return size_t(recordCapacity_) *
+               size_t(define("LFDPR_TRIANGLE_RECORD_BYTES") + define("LFDPR_TRIANGLE_SAMPLING_BYTES"));
+    }
+
+    void prepareBuffers(const GpuScene& scene, const FrameSetup& frame, const ViewTargets& targets)
+    {
+        if (targets.viewCount() != frame.profile.viewCount || targets.width() != frame.profile.viewWidth ||
+            targets.height() != frame.profile.viewHeight)
+            throw std::invalid_argument("lfdpr: view targets do not match the frame's profile");
+        // Points: grow after an overflow, to the needed count * 1.25.
+        if (nextCapacity_ > pointCapacity_) {
+            glDeleteBuffers(1, &points_);
+            pointCapacity_ = nextCapacity_;
+            points_ = makeBuffer(size_t(pointCapacity_) * pointBytes_);
+        }
+        // Triangle records: one per triangle of every draw (never overflows).
+        const uint64_t records = LfdprPointGeneration::recordCount(scene);
+        if (records > recordCapacity_ || !records_) {
+            glDeleteBuffers(1, &records_);
+            glDeleteBuffers(1, &sampling_);
+            recordCapacity_ = std::max<uint64_t>(records, 1);
+            records_ = makeBuffer(recordCapacity_ * size_t(define("LFDPR_TRIANGLE_RECORD_BYTES")));
+            sampling_ = makeBuffer(recordCapacity_ * size_t(define("LFDPR_TRIANGLE_SAMPLING_BYTES")));
+        }
+        views_.resize(targets.viewCount(), targets.width(), targets.height());
+    }
+
+    void uploadViewInverses(const FrameSetup& frame)
+    {
+        std::vector<glm::mat4> inverses;
+        inverses.reserve(frame.cameras.size());
+        for (const ViewCamera& camera : frame.cameras)
+            inverses.push_back(glm::mat4(glm::inverse(camera.clipFromDisplay * frame.displayFromScene)));
+        if (inverses.size() > viewInverseCapacity_ || !viewInverse_) {
+            glDeleteBuffers(1, &viewInverse_);
+            viewInverseCapacity_ = std::max<size_t>(inverses.size(), 1);
+            viewInverse_ = makeBuffer(viewInverseCapacity_ * sizeof(glm::mat4), GL_DYNAMIC_STORAGE_BIT);
+        }
+        if (!inverses.empty())
+            glNamedBufferSubData(viewInverse_, 0, GLsizeiptr(inverses.size() * sizeof(glm::mat4)),
+                                 inverses.data());
+    }
+
+    void bindBuffers(const GpuScene& scene) const
+    {
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboMaterials, scene.materialBuffer());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboNodes, scene.nodeTransformBuffer());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboTriangleStats, scene.triangleStatsBuffer());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_POINTS")), points_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_TRIANGLES")), records_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_SAMPLING")), sampling_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_COUNTERS")), counters_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_VIEW_INVERSE")), viewInverse_);
+        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(define("LFDPR_UBO_FRAME")), frameUbo_);
+    }
+
+    void readCounters()
+    {
+        GLuint c[8] = {};
+        glGetNamedBufferSubData(counters_, 0, sizeof(c), c);
+        info_.points = c[0];
+        info_.pointCapacity = pointCapacity_;
+        info_.pointsStored = std::min<uint64_t>(c[0], pointCapacity_);
+        info_.triangles = c[1];
+        info_.trianglesOversized = c[2];
+        trianglesCoarsened_ = c[3];
+        info_.triangleCapacity = uint32_t(recordCapacity_);
+        info_.overflowed = c[0] > pointCapacity_;
+        if (info_.overflowed) {
+            ++info_.overflowFrames;
+            nextCapacity_ = uint32_t(std::min<double>(std::ceil(double(c[0]) * 1.25), double(maxPointCapacity_)));
+        }
+        info_.pointBufferBytes = uint64_t(pointCapacity_) * pointBytes_;
+        info_.viewBufferBytes = views_.viewBufferBytes();
+    }
+
+    LfdprOptions options_;
+    LfdprFrameInfo info_;
+    FrameUniforms uniforms_;
+    LfdprPointGeneration pointGeneration_;
+    LfdprViewGeneration views_;
+    unsigned points_ = 0, counters_ = 0, frameUbo_ = 0, records_ = 0, sampling_ = 0, viewInverse_ = 0;
+    uint32_t pointCapacity_ = 0, nextCapacity_ = 0, pointBytes_ = 0, maxPointCapacity_ = 0;
+    uint64_t recordCapacity_ = 0, trianglesCoarsened_ = 0;
+    size_t viewInverseCapacity_ = 0;
+};
+
+} // namespace
+
+std::unique_ptr<LfdprRenderer> createLfdprPaperRenderer(const LfdprOptions& options)
+{
+    return std::make_unique<LfdprRendererImpl>(options);
+}
+
+} // namespace lfd::player

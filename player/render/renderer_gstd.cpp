@@ -1,0 +1,290 @@
+// gstd: the gold standard (Gavane & Watson 2024, section 5, "GStd"; renderer_gstd.h).
+// Each output view i is rebuilt from two sub-views at the exact angles inside its
+// interval [i, i+1) / N of the view cone, (i + 0.25) / N and (i + 0.75) / N, which are
+// cameras 2i and 2i+1 of makeViewCamera with 2N views. Each sub-view is drawn by mvr's
+// programs (mvr.vert + mvr.frag, the same PBR shading) at `factor` times the resolution
+// with anisotropic texture filtering, then reduced to the view resolution by the Gaussian
+// reconstruction of shaders/gstd_reconstruct.comp. One high-resolution framebuffer is
+// reused for every sub-view, so memory does not grow with the view count.
+#include "renderer_gstd.h"
+
+#include "frame_stages.h"
+#include "gl_context.h"
+#include "gpu_timer.h"
+#include "raster_draw.h"
+#include "scene_bindings.h"
+#include "shader_library.h"
+#include "view_targets.h"
+
+#include "lfd/framing.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <stdexcept>
+
+namespace lfd::player {
+
+namespace {
+
+constexpr int kMaxSamples = 64; // GSTD_MAX_SAMPLES in gstd_reconstruct.comp
+constexpr GLuint kHighResUnit = 5; // after the five material units (LFD_UNIT_*)
+
+// splitmix64 (Steele, Lea & Flood 2014): a tiny, fully specified generator, so a seed
+// gives the same offsets with every compiler and standard library.
+struct SplitMix64 {
+    uint64_t state;
+    uint64_t next()
+    {
+        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    // Uniform in (0, 1]: 53 random bits, never 0 (Box-Muller takes its logarithm).
+    double uniform() { return (double(next() >> 11) + 1.0) * 0x1.0p-53; }
+};
+
+// The frame gstd draws: the same scene placement and time, 2N cameras at the exact
+// sub-view angles, and a profile of the high-resolution size (the raster state and the
+// frame constants take the viewport from it).
+FrameSetup subViewFrame(const FrameSetup& frame, uint32_t factor)
+{
+    FrameSetup sub = frame;
+    const uint32_t n = frame.profile.viewCount * GstdOptions::kSubViews;
+    sub.profile.viewCount = n;
+    sub.profile.viewWidth = frame.profile.viewWidth * factor;
+    sub.profile.viewHeight = frame.profile.viewHeight * factor;
+    sub.cameras.clear();
+    sub.clipFromScene.clear();
+    sub.eyeScene.clear();
+    const glm::dmat4 sceneFromDisplay = glm::inverse(frame.displayFromScene);
+    for (uint32_t j = 0; j < n; ++j) {
+        // Camera j of 2N sits at (j + 0.5) / 2N of the cone: (i + 0.25) / N for j = 2i and
+        // (i + 0.75) / N for j = 2i + 1 (formats/include/lfd/framing.h).
+        const ViewCamera camera = makeViewCamera(frame.profile, frame.framing, j, n);
+        sub.cameras.push_back(camera);
+        sub.clipFromScene.push_back(glm::mat4(camera.clipFromDisplay * frame.displayFromScene));
+        sub.eyeScene.push_back(glm::vec3(sceneFromDisplay * glm::dvec4(camera.eye, 1.0)));
+    }
+    return sub;
+}
+
+bool anisotropySupported()
+{
+    return epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
+           epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic");
+}
+
+class GstdRenderer final : public Renderer {
+public:
+    explicit GstdRenderer(const GstdOptions& options)
+        : options_(options), offsets_(gstdSampleOffsets(options)), draw_("mvr.vert")
+    {
+        reconstruct_ = gl::buildProgram({{GL_COMPUTE_SHADER, "gstd_reconstruct.comp"}});
+
+        // The scene textures' sampling for this renderer only: a sampler object bound to
+        // the material units overrides the textures' own state (GpuScene's trilinear
+        // REPEAT) while gstd draws, adding anisotropic filtering (paper section 5).
+        glCreateSamplers(1, &sampler_);
+        glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_T, GL_REPEAT);
+        if (anisotropySupported()) {
+            GLfloat maxSupported = 1.0f;
+            glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &maxSupported);
+            anisotropy_ = std::min(options_.maxAnisotropy, maxSupported);
+            glSamplerParameterf(sampler_, GL_TEXTURE_MAX_ANISOTROPY, anisotropy_);
+        } else {
+            std::fprintf(stderr, "gstd: warning: no anisotropic filtering in this driver "
+                                 "(GL_EXT_texture_filter_anisotropic); textures are trilinear\n");
+        }
+    }
+
+    ~GstdRenderer() override
+    {
+        glDeleteProgram(reconstruct_);
+        glDeleteSamplers(1, &sampler_);
+        releaseTargets();
+    }
+
+    std::string name() const override { return "gstd"; }
+
+    std::vector<std::pair<std::string, double>> extraStats() const override
+    {
+        return {{"gstd_factor", double(options_.factor)},
+                {"gstd_samples", double(options_.samples)},
+                {"gstd_filter_diameter", options_.filterDiameter},
+                {"gstd_sub_views", double(GstdOptions::kSubViews)},
+                {"anisotropy", double(anisotropy_)}};
+    }
+
+    void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets,
+                GpuTimer& timer) override
+    {
+        timer.begin(stage::kViewGeneration);
+        const uint32_t width = targets.width(), height = targets.height();
+        ensureTargets(width, height);
+        const FrameSetup sub = subViewFrame(frame, options_.factor);
+
+        GLuint samplers[5];
+        std::fill(std::begin(samplers), std::end(samplers), sampler_);
+        const float depthOne = 1.0f;
+        for (uint32_t view = 0; view < targets.viewCount(); ++view) {
+            for (uint32_t s = 0; s < GstdOptions::kSubViews; ++s) {
+                // Step 1: the sub-view at high resolution, as mvr draws a view. beginFrame
+                // runs per sub-view because step 2 switches to the compute program (it
+                // re-uploads 2N view matrices: negligible next to the draw).
+                glBindFramebuffer(GL_FRAMEBUFFER, highResFbo_);
+                draw_.beginFrame(scene, sub);
+                glClearNamedFramebufferfv(highResFbo_, GL_COLOR, 0, kBackground);
+                glClearNamedFramebufferfv(highResFbo_, GL_DEPTH, 0, &depthOne);
+                glBindSamplers(bindings::kUnitBaseColor, 5, samplers);
+                glProgramUniform1i(draw_.program(), bindings::kLocView,
+                                   GLint(view * GstdOptions::kSubViews + s));
+                draw_.drawScene(scene, 1);
+                glBindSamplers(bindings::kUnitBaseColor, 5, nullptr);
+                draw_.endFrame();
+                glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+                // Step 2: Gaussian reconstruction at view resolution, averaged over sub-views.
+                glUseProgram(reconstruct_);
+                glBindTextureUnit(kHighResUnit, highRes_);
+                glBindImageTexture(0, accum_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+                glBindImageTexture(1, targets.colorArray(), 0, GL_FALSE, GLint(view), GL_WRITE_ONLY,
+                                   GL_RGBA8);
+                glUniform2ui(0, width, height);
+                glUniform1ui(1, options_.samples);
+                glUniform1ui(2, s);
+                glUniform1ui(3, GstdOptions::kSubViews);
+                glUniform2fv(4, GLsizei(options_.samples), &offsets_[size_t(s) * options_.samples].x);
+                glDispatchCompute((width + 7) / 8, (height + 7) / 8, 1);
+                // The accumulator is read by the next dispatch; the high-res texture is
+                // drawn into again next (ordered by GL for framebuffer writes).
+                glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+            }
+        }
+        glBindTextureUnit(kHighResUnit, 0);
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glUseProgram(0);
+        // The views are read next by the EIA pass, readbacks and blits.
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                        GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+        timer.end();
+    }
+
+private:
+    // One high-resolution colour + depth target and one view-size accumulator, made for
+    // the first frame and remade only when the view size changes.
+    void ensureTargets(uint32_t width, uint32_t height)
+    {
+        if (highRes_ && width == width_ && height == height_)
+            return;
+        releaseTargets();
+        GLint maxSize = 0, maxViewport[2] = {0, 0};
+        glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+        glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+        const uint64_t highW = uint64_t(width) * options_.factor, highH = uint64_t(height) * options_.factor;
+        const uint64_t limit = uint64_t(std::min({maxSize, maxViewport[0], maxViewport[1]}));
+        if (highW > limit || highH > limit)
+            throw gl::GlError("gstd: " + std::to_string(highW) + "x" + std::to_string(highH) +
+                              " sub-views (factor " + std::to_string(options_.factor) +
+                              ") exceed the driver's limit of " + std::to_string(limit) +
+                              " pixels; use a smaller factor");
+        width_ = width;
+        height_ = height;
+
+        // sRGB storage: mvr.frag writes sRGB-encoded values (GL_FRAMEBUFFER_SRGB stays
+        // off, so they are stored as written), and the reconstruction's bilinear fetches
+        // decode to linear light before filtering.
+        glCreateTextures(GL_TEXTURE_2D, 1, &highRes_);
+        glTextureStorage2D(highRes_, 1, GL_SRGB8_ALPHA8, GLsizei(highW), GLsizei(highH));
+        glTextureParameteri(highRes_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTextureParameteri(highRes_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(highRes_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(highRes_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glCreateTextures(GL_TEXTURE_2D, 1, &highResDepth_);
+        glTextureStorage2D(highResDepth_, 1, GL_DEPTH_COMPONENT32F, GLsizei(highW), GLsizei(highH));
+        glCreateFramebuffers(1, &highResFbo_);
+        glNamedFramebufferTexture(highResFbo_, GL_COLOR_ATTACHMENT0, highRes_, 0);
+        glNamedFramebufferTexture(highResFbo_, GL_DEPTH_ATTACHMENT, highResDepth_, 0);
+        if (glCheckNamedFramebufferStatus(highResFbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw gl::GlError("gstd: high-resolution framebuffer incomplete");
+        glCreateTextures(GL_TEXTURE_2D, 1, &accum_);
+        glTextureStorage2D(accum_, 1, GL_RGBA32F, GLsizei(width), GLsizei(height));
+    }
+
+    void releaseTargets()
+    {
+        if (highResFbo_)
+            glDeleteFramebuffers(1, &highResFbo_);
+        const GLuint textures[3] = {highRes_, highResDepth_, accum_};
+        glDeleteTextures(3, textures);
+        highResFbo_ = highRes_ = highResDepth_ = accum_ = 0;
+    }
+
+    GstdOptions options_;
+    std::vector<glm::vec2> offsets_;
+    RasterDraw draw_;
+    GLuint reconstruct_ = 0, sampler_ = 0;
+    GLuint highRes_ = 0, highResDepth_ = 0, highResFbo_ = 0, accum_ = 0;
+    uint32_t width_ = 0, height_ = 0;
+    float anisotropy_ = 1.0f;
+};
+
+} // namespace
+
+void validateGstdOptions(const GstdOptions& options)
+{
+    if (options.factor == 0 || options.factor > 16)
+        throw std::invalid_argument("gstd: factor must be 1..16, got " + std::to_string(options.factor));
+    if (options.samples == 0 || options.samples > uint32_t(kMaxSamples))
+        throw std::invalid_argument("gstd: samples must be 1.." + std::to_string(kMaxSamples) + ", got " +
+                                    std::to_string(options.samples));
+    if (!(options.filterDiameter > 0.0) || !std::isfinite(options.filterDiameter))
+        throw std::invalid_argument("gstd: the filter diameter must be positive");
+    if (!(options.maxAnisotropy >= 1.0f) || !std::isfinite(options.maxAnisotropy))
+        throw std::invalid_argument("gstd: the anisotropy must be at least 1");
+}
+
+std::vector<glm::vec2> gstdSampleOffsets(const GstdOptions& options)
+{
+    validateGstdOptions(options);
+    // 2D Gaussian by Box-Muller, truncated at its 3-sigma support radius (resampled
+    // outside it: about 1.1% of draws), so the filter is the truncated Gaussian exactly.
+    const double radius = 0.5 * options.filterDiameter;
+    const double sigma = radius / 3.0;
+    SplitMix64 rng{options.seed};
+    std::vector<glm::vec2> offsets;
+    const size_t count = size_t(options.samples) * GstdOptions::kSubViews;
+    offsets.reserve(count);
+    while (offsets.size() < count) {
+        const double r = sigma * std::sqrt(-2.0 * std::log(rng.uniform()));
+        const double phi = 2.0 * std::numbers::pi * rng.uniform();
+        if (r <= radius)
+            offsets.emplace_back(float(r * std::cos(phi)), float(r * std::sin(phi)));
+    }
+    return offsets;
+}
+
+std::string gstdSettingsKey(const GstdOptions& options)
+{
+    char key[200];
+    std::snprintf(key, sizeof(key), "gstd/v1 factor=%u samples=%u seed=%llu diameter=%a anisotropy=%a subviews=%u",
+                  options.factor, options.samples, static_cast<unsigned long long>(options.seed),
+                  options.filterDiameter, double(options.maxAnisotropy), GstdOptions::kSubViews);
+    return key;
+}
+
+std::unique_ptr<Renderer> createGstdRenderer(const GstdOptions& options)
+{
+    validateGstdOptions(options);
+    return std::make_unique<GstdRenderer>(options);
+}
+
+} // namespace lfd::player

@@ -1,0 +1,89 @@
+// PlayerSession: the one place lfd-play (headless and the window) builds renderers. The
+// window's R key used to rebuild lfdpr with default options, silently dropping --atomics,
+// --lfdpr-pipeline and the --no-* flags; it now goes through the registry with the
+// session's options, and these tests would fail if any path bypassed them again.
+#include "gl_test_support.h"
+#include "test_scenes.h"
+
+#include "player_session.h"
+#include "renderer_lfdpr.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace lfd::test {
+namespace {
+
+class PlayerSessionTest : public GlTest {};
+
+DisplayProfile tinyProfile()
+{
+    return withViews(prototypeDisplayProfile(), 4, 32, 24);
+}
+
+const player::LfdprRenderer& asLfdpr(player::Renderer& renderer)
+{
+    const auto* lfdpr = dynamic_cast<const player::LfdprRenderer*>(&renderer);
+    if (!lfdpr)
+        throw std::runtime_error(renderer.name() + " is not an lfdpr renderer");
+    return *lfdpr;
+}
+
+TEST_F(PlayerSessionTest, RKeyCycleRebuildsLfdprWithTheUsersOptions)
+{
+    player::PlayOptions options;
+    options.renderer = "lfdpr";
+    options.rendererOptions.lfdpr.atomics = player::LfdprOptions::Atomics::TwoPass32;
+    options.rendererOptions.lfdpr.pipeline = player::LfdprOptions::Pipeline::Paper;
+    options.rendererOptions.lfdpr.lfdBiasedSampling = false;
+    options.rendererOptions.lfdpr.multiviewMipmapping = false;
+    player::PlayerSession session(options, tinyProfile(), cubeAndSphereScene(), "scene");
+
+    // The window's cycle: every other interactive renderer, then lfdpr again.
+    const std::vector<std::string> cycle = player::windowRendererCycle(options.renderer);
+    ASSERT_FALSE(cycle.empty());
+    EXPECT_EQ(cycle.back(), "lfdpr");
+    EXPECT_EQ(std::count(cycle.begin(), cycle.end(), "gstd"), 0) << "gstd is too slow to cycle into";
+    for (const std::string& name : cycle) {
+        session.switchRenderer(name);
+        EXPECT_EQ(session.rendererName(), name);
+        session.renderFrame(0.0);
+    }
+    const player::LfdprOptions& after = asLfdpr(session.renderer()).options();
+    EXPECT_EQ(after.atomics, player::LfdprOptions::Atomics::TwoPass32);
+    EXPECT_EQ(after.pipeline, player::LfdprOptions::Pipeline::Paper);
+    EXPECT_FALSE(after.lfdBiasedSampling);
+    EXPECT_FALSE(after.multiviewMipmapping);
+    EXPECT_TRUE(after.textureSplatting);
+}
+
+TEST_F(PlayerSessionTest, VariantsStartFromTheUsersOptionsAndChangeOneThing)
+{
+    player::PlayOptions options;
+    options.renderer = "lfdpr-no-texture-splatting";
+    options.rendererOptions.lfdpr.atomics = player::LfdprOptions::Atomics::TwoPass32;
+    options.rendererOptions.lfdpr.lfdBiasedSampling = false;
+    player::PlayerSession session(options, tinyProfile(), cubeAndSphereScene(), "scene");
+    const player::LfdprOptions& o = asLfdpr(session.renderer()).options();
+    EXPECT_FALSE(o.textureSplatting);
+    EXPECT_FALSE(o.lfdBiasedSampling);
+    EXPECT_EQ(o.atomics, player::LfdprOptions::Atomics::TwoPass32);
+
+    // A variant stays in the window's cycle, so R comes back to it.
+    const std::vector<std::string> cycle = player::windowRendererCycle(options.renderer);
+    EXPECT_EQ(cycle.back(), "lfdpr-no-texture-splatting");
+}
+
+TEST_F(PlayerSessionTest, FailedSwitchKeepsTheCurrentRenderer)
+{
+    player::PlayOptions options;
+    options.renderer = "mvr";
+    player::PlayerSession session(options, tinyProfile(), cubeAndSphereScene(), "scene");
+    EXPECT_THROW(session.switchRenderer("warp-drive"), std::invalid_argument);
+    EXPECT_EQ(session.rendererName(), "mvr");
+    EXPECT_EQ(session.renderer().name(), "mvr");
+}
+
+} // namespace
+} // namespace lfd::test
