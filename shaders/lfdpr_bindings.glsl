@@ -127,18 +127,30 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_SSBO_LARGE 18        // per draw segment: primitives sampled by a workgroup
 #define LFDPR_SSBO_LARGE_DISPATCH 19 // per draw: uvec4 indirect dispatch (x = triangles)
 #define LFDPR_SSBO_VIS_COUNTERS 20 // LfdprVisCounters
-#define LFDPR_SSBO_MATERIAL_IDS 22 // per view pixel: GPU material of the visible point
+#define LFDPR_SSBO_SHADE_WORK 21   // LfdprShadeWork: per shading group, its tiles and dispatch
+#define LFDPR_SSBO_MATERIAL_IDS 22 // per view pixel: shading group of the visible point
+#define LFDPR_SSBO_MATERIAL_GROUPS 23 // per GPU material: its shading group
 #define LFDPR_UBO_CAMERA_LINE 2
 
 #define LFDPR_LOC_DRAW 7           // draw index (lfdpr_points.comp)
 #define LFDPR_LOC_TRIANGLES 8      // triangles in the draw
 #define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_shade.comp: the material whose textures are bound
 #define LFDPR_LOC_LARGE_BASE 10    // first LFDPR_SSBO_LARGE slot of the draw
+#define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_shade.comp: the shading group dispatched
+#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_dispatch.comp: groups in use
 
 // Triangles whose sampling box exceeds this many pixels are sampled by one workgroup
 // (LFDPR_GROUP_SIZE threads striding over the box) instead of one invocation.
 #define LFDPR_LARGE_PIXELS 4096
-// LFDPR_SSBO_MATERIAL_IDS markers besides GPU material indices.
+// Shading (lfdpr_classify.comp, lfdpr_shade.comp): view pixels are shaded in tiles of
+// LFDPR_SHADE_TILE x LFDPR_SHADE_TILE pixels of one view. Materials fall into shading
+// groups - group 0 every untextured material, then one group per textured material (whose
+// textures are bound for its dispatch) - and each group's dispatch visits only the tiles
+// holding one of its pixels. Textured materials beyond LFDPR_MAX_SHADE_GROUPS - 1 share
+// groups (each then visits its group's tiles and shades only its own pixels).
+#define LFDPR_SHADE_TILE 8
+#define LFDPR_MAX_SHADE_GROUPS 256
+// LFDPR_SSBO_MATERIAL_IDS markers besides shading groups.
 #define LFDPR_PIXEL_SHADED 0xFFFFFFFFu // written (or background)
 #define LFDPR_PIXEL_REPAIR 0xFFFFFFFEu // index disagrees with the depth key: redone
 #define LFDPR_RECORD_BYTES 16
@@ -177,10 +189,28 @@ struct LfdprVisCountersGpu {
     uint oversizedCount; // larger than one sampling tile
     uint coarsenedCount; // larger than LFDPR_MAX_TILES tiles (sampled coarser)
     uint largeCount;     // sampled by a workgroup
-    uint repairCount;    // 32-bit path: view pixels whose point index lost a race
+    uint pad0;
     uint pad1;
     uint pad2;
 };
+
+// Shading work (std430, LFDPR_SSBO_SHADE_WORK): counters, then per group an indirect
+// dispatch (x, y, z) with the group's tile count in w (at byte 16 + 16 * group), then per
+// group a list of tile indices ((view * tilesY + tileY) * tilesX + tileX):
+// groupTiles[group * tileCount + i].
+struct LfdprShadeCountersGpu {
+    uint repairCount; // 32-bit path: view pixels whose point index lost a race
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
+#define LFDPR_SHADE_WORK_BUFFER \
+    buffer ShadeWork { \
+        LfdprShadeCountersGpu shadeCounters; \
+        uvec4 groupDispatch[LFDPR_MAX_SHADE_GROUPS]; \
+        uint groupTiles[]; \
+    }
+#define LFDPR_SHADE_DISPATCH_WIDTH 32768 // tiles per dispatch row (x stays under GL's 65535)
 
 // Views the camera-line block holds offsets for (4 per vec4).
 #define LFDPR_MAX_VIEWS 256

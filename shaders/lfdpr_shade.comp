@@ -1,6 +1,6 @@
 #version 450 core
-// LFDPR shading (the visibility pipeline): each view pixel that a point won in
-// lfdpr_visibility.comp is shaded once, as mvr shades a fragment - the same material
+// LFDPR shading, step 3 of 3 (the visibility pipeline): each view pixel that a point won
+// in lfdpr_visibility.comp is shaded once, as mvr shades a fragment - the same material
 // function (material_shading.glsl), the point's triangle interpolated perspective-correctly
 // at the pixel centre, and every texture fetched with textureGrad at the pixel's exact
 // footprint in this view (analytic uv gradients: the pixel's neighbours on the triangle
@@ -8,15 +8,13 @@
 // replaces the paper's per-splat shading with tv_min / tv_max (multiview mipmapping),
 // which the paper's pipeline keeps.
 //
-// Textures are bound per material, so shading runs in passes over LFDPR_SSBO_MATERIAL_IDS:
-//   u_pass 0 visits every pixel: the background where no point landed; on the 32-bit path
-//            a check that the stored point index belongs to the stored depth key (else
-//            the pixel is flagged LFDPR_PIXEL_REPAIR and counted); the pixel's material;
-//            untextured materials and u_shadeMaterial are shaded at once.
-//   u_pass 1 shades the pending pixels of u_shadeMaterial (one pass per further textured
-//            material; a pixel costs one read there).
-//   u_pass 2 after a repair (lfdpr_visibility.comp u_pass 1): as u_pass 0 for the flagged
-//            pixels only.
+// One dispatch per shading group (lfdpr_classify.comp): a workgroup per listed tile, and
+// in it the pixels of group u_group (a textured group also checks the material, since
+// groups are shared past LFDPR_MAX_SHADE_GROUPS). The program is compiled per set of
+// textures (LFD_TEXTURE_MASK): the untextured group's program has no sampling code at all.
+// On the 32-bit path, u_pass 0 first checks that the stored point index belongs to the
+// stored depth key; a pixel that fails is flagged LFDPR_PIXEL_REPAIR and counted, and is
+// classified and shaded again (u_pass 2) after lfdpr_visibility.comp's index pass.
 // Shaded pixels are marked LFDPR_PIXEL_SHADED.
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
@@ -33,11 +31,12 @@ vec2 g_duvdx, g_duvdy; // this pixel's uv footprint, for LFD_SAMPLE
 #include "lfdpr_scene_access.glsl"
 #include "lfdpr_camera_line.glsl"
 
-layout(local_size_x = 8, local_size_y = 1, local_size_z = 8) in;
+layout(local_size_x = LFDPR_SHADE_TILE, local_size_y = LFDPR_SHADE_TILE) in;
 
 layout(binding = LFDPR_IMAGE_VIEWS, rgba8) uniform writeonly image2DArray u_views;
 layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
 layout(location = LFDPR_LOC_SHADE_MATERIAL) uniform uint u_shadeMaterial;
+layout(location = LFDPR_LOC_SHADE_GROUP) uniform uint u_group;
 layout(location = LFD_LOC_STREAMS) uniform uint u_streams;
 
 layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
@@ -55,9 +54,10 @@ layout(std430, binding = LFDPR_SSBO_TANGENTS) readonly buffer SceneTangents {
 layout(std430, binding = LFDPR_SSBO_UVS) readonly buffer SceneUvs {
     vec2 sceneUvs[];
 };
-layout(std430, binding = LFDPR_SSBO_MATERIAL_IDS) buffer MaterialIds {
-    uint materialIds[];
+layout(std430, binding = LFDPR_SSBO_MATERIAL_IDS) buffer PixelStates {
+    uint pixelStates[];
 };
+layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
 #ifdef LFDPR_INT64
 layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) readonly buffer ViewWords {
     uint64_t viewWords[];
@@ -69,14 +69,7 @@ layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) readonly buffer ViewDepth {
 layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
     uint viewIndex[];
 };
-layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) buffer VisCounters {
-    LfdprVisCountersGpu vis;
-};
 #endif
-
-const uint kTextureFlags = LFD_MATERIAL_BASE_COLOR_TEXTURE | LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE |
-                           LFD_MATERIAL_NORMAL_TEXTURE | LFD_MATERIAL_OCCLUSION_TEXTURE |
-                           LFD_MATERIAL_EMISSIVE_TEXTURE;
 
 // The point that won this pixel, or 0xFFFFFFFF.
 uint winner(uint pixel)
@@ -181,55 +174,41 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
 
 void main()
 {
-    // Workgroups are 8 x 8 pixel tiles of one view (image stores stay in one layer, which a
-    // software rasteriser needs to be fast), dispatched as (x tile, view, row tile): the
-    // tiles of all views of one band of rows follow each other, so the view-interleaved
-    // buffers' cache lines are reused by the neighbouring views' tiles.
-    uvec3 id = gl_GlobalInvocationID.xzy; // x, GL row, view
+    // Step 1: this workgroup's tile, from the group's list.
     uvec2 size = uvec2(u_lfd.viewSize.xy);
-    if (id.x >= size.x || id.y >= size.y || id.z >= u_lfd.counts.x)
+    uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
+    uint tileCount = tiles.x * tiles.y * u_lfd.counts.x;
+    uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;
+    if (slot >= groupDispatch[u_group].w)
+        return;
+    uint tile = groupTiles[u_group * tileCount + slot];
+    uint view = tile / (tiles.x * tiles.y);
+    uvec2 tileXy = uvec2(tile % tiles.x, (tile / tiles.x) % tiles.y);
+    uvec3 id = uvec3(tileXy * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy, view); // x, GL row, view
+    if (any(greaterThanEqual(id.xy, size)))
         return;
     uint pixel = lfdViewWord(id.z, id.x, id.y, size.x, u_lfd.counts.x);
-    uint state = materialIds[pixel];
-    vec2 centre = vec2(id.xy) + 0.5;
+    if (pixelStates[pixel] != u_group)
+        return;
 
-    // note: a software rasteriser (llvmpipe) runs both sides of a divergent `if` under a
-    // lane mask, but leaves a loop as soon as no lane is in it. The costly blocks below are
-    // one-trip loops, so a vector of pixels with nothing to do here skips them entirely
-    // (a pass that shades one material out of many then costs about one read per pixel).
-    bool classify = u_pass == 0u || (u_pass == 2u && state == LFDPR_PIXEL_REPAIR);
-    bool shade = u_pass == 1u && state == u_shadeMaterial;
-    ViewTriangle t;
-    for (uint once = classify ? 0u : 1u; once < 1u; ++once) {
-        // Classify: background, a point index to repair, or the winner's material.
-        uint index = winner(pixel);
-        if (index == 0xFFFFFFFFu) {
-            materialIds[pixel] = LFDPR_PIXEL_SHADED;
-            imageStore(u_views, ivec3(id), u_frame.background);
-            break;
-        }
-        t = viewTriangle(index, id.z);
+    // Step 2: the winner's triangle in this view; a shared group shades one material.
+    ViewTriangle t = viewTriangle(winner(pixel), id.z);
+    if (u_group != 0u && t.draw.material != u_shadeMaterial)
+        return;
+    vec2 centre = vec2(id.xy) + 0.5;
 #ifndef LFDPR_INT64
-        LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
-        if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != viewDepth[pixel]) {
-            materialIds[pixel] = LFDPR_PIXEL_REPAIR;
-            viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp u_pass 1 sets it again
-            atomicAdd(vis.repairCount, 1u);
-            break;
-        }
+    // Step 3 (32-bit path): the single splat pass stores depth by atomicMin and the index
+    // by a plain store, so a racing point may have left its index under another's depth.
+    LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
+    if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != viewDepth[pixel]) {
+        pixelStates[pixel] = LFDPR_PIXEL_REPAIR;
+        viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp u_pass 1 sets it again
+        atomicAdd(shadeCounters.repairCount, 1u);
+        return;
+    }
 #endif
-        uint material = t.draw.material;
-        bool textured = (u_streams & LFD_STREAM_UV) != 0u && (materials[material].flags & kTextureFlags) != 0u;
-        if (textured && material != u_shadeMaterial) {
-            materialIds[pixel] = material; // a later pass, with this material's textures bound
-            break;
-        }
-        shade = true;
-    }
-    for (uint once = shade ? 0u : 1u; once < 1u; ++once) {
-        if (u_pass == 1u)
-            t = viewTriangle(winner(pixel), id.z);
-        imageStore(u_views, ivec3(id), shadePixel(t, id.z, centre));
-        materialIds[pixel] = LFDPR_PIXEL_SHADED;
-    }
+
+    // Step 4: shade.
+    imageStore(u_views, ivec3(id), shadePixel(t, id.z, centre));
+    pixelStates[pixel] = LFDPR_PIXEL_SHADED;
 }

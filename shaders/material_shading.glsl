@@ -5,6 +5,14 @@
 // derivatives in a fragment shader, textureGrad() with analytic gradients in compute.
 // Needs scene_bindings.glsl and pbr_shading.glsl first.
 
+// The textures a program can sample (LFD_MATERIAL_*_TEXTURE bits): a program compiled for
+// a known set (lfdpr_shade.comp, per shading group) contains no code for the others.
+// note: Mesa's llvmpipe runs every `if` under a lane mask - a texture fetch no lane takes
+// still costs its full price - so leaving the code out is the only way to skip it there.
+#ifndef LFD_TEXTURE_MASK
+#define LFD_TEXTURE_MASK 0xFFFFFFFFu
+#endif
+
 layout(binding = LFD_UNIT_BASE_COLOR) uniform sampler2D t_baseColor;
 layout(binding = LFD_UNIT_METALLIC_ROUGHNESS) uniform sampler2D t_metallicRoughness;
 layout(binding = LFD_UNIT_NORMAL) uniform sampler2D t_normal;
@@ -31,7 +39,7 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
 
     // Base colour and alpha (texture is GL_SRGB8_ALPHA8: the fetch returns linear values).
     vec4 baseColor = m.baseColorFactor;
-    if (useTextures && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE) != 0u)
+    if (useTextures && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE & LFD_TEXTURE_MASK) != 0u)
         baseColor *= LFD_SAMPLE(t_baseColor, p.uv);
     // note: BLEND is drawn as opaque (no sorting of transparent surfaces).
     if (m.alphaMode == LFD_ALPHA_MASK && baseColor.a < m.emissiveCutoff.w)
@@ -44,7 +52,7 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
         n = -n;
 
     // Normal map (tangent space, glTF convention: B = cross(N, T) * w).
-    if (useTextures && (m.flags & LFD_MATERIAL_NORMAL_TEXTURE) != 0u &&
+    if (useTextures && (m.flags & LFD_MATERIAL_NORMAL_TEXTURE & LFD_TEXTURE_MASK) != 0u &&
         (streams & LFD_STREAM_TANGENT) != 0u) {
         vec3 t = p.tangent.xyz - n * dot(n, p.tangent.xyz);
         if (dot(t, t) > 1e-12) {
@@ -60,7 +68,7 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
     s.baseColor = baseColor.rgb;
     s.metallic = m.params.x;
     s.roughness = m.params.y;
-    if (useTextures && (m.flags & LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE) != 0u) {
+    if (useTextures && (m.flags & LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE & LFD_TEXTURE_MASK) != 0u) {
         vec4 mr = LFD_SAMPLE(t_metallicRoughness, p.uv);
         s.roughness *= mr.g;
         s.metallic *= mr.b;
@@ -68,10 +76,10 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
     s.roughness = clamp(s.roughness, 0.0, 1.0);
     s.metallic = clamp(s.metallic, 0.0, 1.0);
     s.occlusion = 1.0;
-    if (useTextures && (m.flags & LFD_MATERIAL_OCCLUSION_TEXTURE) != 0u)
+    if (useTextures && (m.flags & LFD_MATERIAL_OCCLUSION_TEXTURE & LFD_TEXTURE_MASK) != 0u)
         s.occlusion = 1.0 + m.params.w * (LFD_SAMPLE(t_occlusion, p.uv).r - 1.0);
     s.emissive = m.emissiveCutoff.rgb;
-    if (useTextures && (m.flags & LFD_MATERIAL_EMISSIVE_TEXTURE) != 0u)
+    if (useTextures && (m.flags & LFD_MATERIAL_EMISSIVE_TEXTURE & LFD_TEXTURE_MASK) != 0u)
         s.emissive *= LFD_SAMPLE(t_emissive, p.uv).rgb;
     s.normal = n;
 

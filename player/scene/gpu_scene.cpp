@@ -33,17 +33,21 @@ bindings::MaterialGpu toGpu(const Material& m)
     g.baseColorFactor = m.baseColorFactor;
     g.emissiveCutoff = glm::vec4(m.emissiveFactor, m.alphaCutoff);
     g.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
-    g.flags = (m.baseColorTexture != kNone ? bindings::kMaterialBaseColorTexture : 0u) |
-              (m.metallicRoughnessTexture != kNone ? bindings::kMaterialMetallicRoughnessTexture : 0u) |
-              (m.normalTexture != kNone ? bindings::kMaterialNormalTexture : 0u) |
-              (m.occlusionTexture != kNone ? bindings::kMaterialOcclusionTexture : 0u) |
-              (m.emissiveTexture != kNone ? bindings::kMaterialEmissiveTexture : 0u) |
-              (m.doubleSided ? bindings::kMaterialDoubleSided : 0u);
+    g.flags = materialTextureFlags(m) | (m.doubleSided ? bindings::kMaterialDoubleSided : 0u);
     g.alphaMode = uint32_t(m.alphaMode);
     return g;
 }
 
 } // namespace
+
+uint32_t materialTextureFlags(const Material& m)
+{
+    return (m.baseColorTexture != kNone ? bindings::kMaterialBaseColorTexture : 0u) |
+           (m.metallicRoughnessTexture != kNone ? bindings::kMaterialMetallicRoughnessTexture : 0u) |
+           (m.normalTexture != kNone ? bindings::kMaterialNormalTexture : 0u) |
+           (m.occlusionTexture != kNone ? bindings::kMaterialOcclusionTexture : 0u) |
+           (m.emissiveTexture != kNone ? bindings::kMaterialEmissiveTexture : 0u);
+}
 
 GpuScene::GpuScene(const Scene& scene) : scene_(scene)
 {

@@ -20,6 +20,9 @@ struct DrawItem {
     int32_t material = -1;
 };
 
+// The LFD_MATERIAL_*_TEXTURE bits of a material: the textures it samples.
+uint32_t materialTextureFlags(const Material& material);
+
 class GpuScene {
 public:
     explicit GpuScene(const Scene& scene); // needs a current GL context

@@ -23,6 +23,7 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -238,10 +239,49 @@ TEST_F(LfdprVisibilityTest, CompactPointsAndReportedMemory)
     for (const auto& [key, value] : renderer->extraStats())
         stats[key] = value;
     for (const char* key : {"points", "bytes_per_point", "point_buffer_bytes", "triangle_buffer_bytes",
-                            "view_buffer_bytes", "frame_gpu_bytes", "point_regenerations", "index_repairs"})
+                            "view_buffer_bytes", "shade_work_bytes", "frame_gpu_bytes", "point_regenerations",
+                            "index_repairs", "shading_passes"})
         EXPECT_TRUE(stats.count(key)) << key;
-    EXPECT_EQ(stats["frame_gpu_bytes"],
-              stats["point_buffer_bytes"] + stats["triangle_buffer_bytes"] + stats["view_buffer_bytes"]);
+    EXPECT_EQ(stats["frame_gpu_bytes"], stats["point_buffer_bytes"] + stats["triangle_buffer_bytes"] +
+                                            stats["view_buffer_bytes"] + stats["shade_work_bytes"]);
+    // The shading work: per group a dispatch, and a tile list over 8 x 8 tiles of every
+    // view (12 x 9 tiles per view here) - a small fraction of the per-pixel buffers.
+    EXPECT_GT(stats["shade_work_bytes"], 0.0);
+    EXPECT_LT(stats["shade_work_bytes"], 0.5 * stats["view_buffer_bytes"] + 8192.0);
+    EXPECT_GE(stats["shading_passes"], 1.0);
+}
+
+// Shading visits only the tiles that hold a pixel of each group: a scene of several
+// textured and untextured materials must come out as mvr draws it, with one shading
+// dispatch per group, and pixels of a material must not be shaded with another's
+// textures (a tile holding two materials is listed for both, each shading its own).
+TEST_F(LfdprVisibilityTest, ShadingGroupsShadeEachMaterialWithItsOwnTextures)
+{
+    const DisplayProfile profile = smallProfile(4, 96, 72);
+    // Two textured materials side by side (the cube's checker and a second, green-white
+    // checker on the sphere, with an emissive texture), plus untextured ones.
+    Scene scene = cubeAndSphereScene();
+    scene.textures.push_back(checkerTexture(64, 4, {30, 200, 60, 255}, {240, 240, 240, 255}, true));
+    scene.materials[1].baseColorTexture = int32_t(scene.textures.size() - 1);
+    scene.materials[1].emissiveTexture = int32_t(scene.textures.size() - 1);
+    scene.materials[1].emissiveFactor = {0.2f, 0.2f, 0.2f};
+    finishScene(scene);
+    auto lfdpr = player::createLfdprRenderer();
+    auto mvr = player::createRenderer("mvr");
+    const Frame a = render(*lfdpr, scene, profile);
+    const Frame b = render(*mvr, scene, profile);
+    std::map<std::string, double> stats;
+    for (const auto& [key, value] : lfdpr->extraStats())
+        stats[key] = value;
+    size_t textured = 0;
+    for (const Material& m : scene.materials)
+        textured += player::materialTextureFlags(m) != 0;
+    EXPECT_EQ(textured, 2u);
+    EXPECT_EQ(stats["shading_passes"], double(textured + 1)) << "untextured group + one per textured material";
+    for (size_t v = 0; v < a.views.size(); ++v) {
+        EXPECT_GT(player::ssimLuma(a.views[v], b.views[v]), 0.99) << "view " << v;
+        EXPECT_LT(player::rmse(a.views[v], b.views[v]), 3.0) << "view " << v;
+    }
 }
 
 TEST_F(LfdprVisibilityTest, Int64AndSingle32BitPassGiveTheSameImage)
@@ -291,14 +331,22 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_visibility.comp", "comp", {"LFDPR_INT64 1"}},
         {"lfdpr_shade.comp", "comp", {}},
         {"lfdpr_shade.comp", "comp", {"LFDPR_INT64 1"}},
+        // Shading programs are compiled per shading group's textures: none, and a subset.
+        {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u"}},
+        {"lfdpr_shade.comp", "comp", {"LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
+        {"lfdpr_classify.comp", "comp", {}},
+        {"lfdpr_classify.comp", "comp", {"LFDPR_INT64 1"}},
+        {"lfdpr_shade_dispatch.comp", "comp", {}},
     };
     const std::filesystem::path dir = testOutputDir("shader_variants");
     size_t checked = 0;
     for (const Variant& v : variants) {
         const gl::PreprocessedShader source = gl::preprocessShader(v.file, v.defines);
         std::string name = v.file;
-        for (const std::string& d : v.defines)
-            name += "." + d.substr(0, d.find(' '));
+        for (std::string d : v.defines) {
+            std::replace(d.begin(), d.end(), ' ', '=');
+            name += "." + d;
+        }
         const std::filesystem::path path = dir / (name + "." + v.stage);
         std::ofstream(path) << source.text;
         const std::filesystem::path log = dir / (name + ".log");

@@ -14,9 +14,10 @@ struct LfdprConstants {
     uint32_t groupSize;
     // Visibility pipeline.
     unsigned ssboRecords, ssboIndices, ssboPositions, ssboNormals, ssboTangents, ssboUvs, ssboDraws;
-    unsigned ssboLarge, ssboLargeDispatch, ssboVisCounters, ssboMaterialIds;
+    unsigned ssboLarge, ssboLargeDispatch, ssboVisCounters, ssboMaterialIds, ssboShadeWork, ssboMaterialGroups;
     unsigned uboCameraLine;
-    int locDraw, locTriangles, locShadeMaterial, locLargeBase;
+    int locDraw, locTriangles, locShadeMaterial, locLargeBase, locShadeGroup, locShadeGroups;
+    uint32_t shadeTile, maxShadeGroups, shadeDispatchWidth;
     uint32_t recordBytes, compactPointBytes, visCounterBytes;
     uint32_t optionLfdSampling, optionTextureSplatting, optionMvMipmapping;
 

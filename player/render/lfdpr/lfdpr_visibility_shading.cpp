@@ -6,56 +6,103 @@
 #include "shader_library.h"
 #include "view_targets.h"
 
+#include "lfd/scene.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace lfd::player {
 
+namespace {
+
+std::vector<std::string> atomicsDefines(bool int64)
+{
+    return int64 ? std::vector<std::string>{"LFDPR_INT64 1"} : std::vector<std::string>{};
+}
+
+GLuint makeBuffer(size_t bytes, GLbitfield flags = 0)
+{
+    GLuint buffer = 0;
+    glCreateBuffers(1, &buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr, flags);
+    return buffer;
+}
+
+uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
+
+// LFDPR_SHADE_WORK_BUFFER: LfdprShadeCountersGpu (repairCount first), then the dispatches.
+constexpr GLintptr kDispatchOffset = 16;
+
+} // namespace
+
 LfdprVisibilityShading::LfdprVisibilityShading(bool int64) : int64_(int64)
 {
-    const std::vector<std::string> defines =
-        int64 ? std::vector<std::string>{"LFDPR_INT64 1"} : std::vector<std::string>{};
-    splatProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines);
+    const std::vector<std::string> defines = atomicsDefines(int64);
     try {
-        shadeProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines);
+        splatProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines);
+        classifyProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines);
+        dispatchProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}});
+        // The untextured group's program is always needed; built now so a shader error
+        // surfaces at construction, not in the middle of a frame.
+        shadeProgram(0u);
     } catch (...) {
         glDeleteProgram(splatProgram_);
+        glDeleteProgram(classifyProgram_);
+        glDeleteProgram(dispatchProgram_);
+        for (const auto& [mask, program] : shadePrograms_)
+            glDeleteProgram(program);
         throw;
     }
 }
 
 LfdprVisibilityShading::~LfdprVisibilityShading()
 {
-    const GLuint buffers[] = {depth_, index_, materialIds_};
-    glDeleteBuffers(3, buffers);
+    const GLuint buffers[] = {depth_, index_, pixelStates_, shadeWork_, materialGroups_};
+    glDeleteBuffers(5, buffers);
     glDeleteProgram(splatProgram_);
-    glDeleteProgram(shadeProgram_);
+    glDeleteProgram(classifyProgram_);
+    glDeleteProgram(dispatchProgram_);
+    for (const auto& [mask, program] : shadePrograms_)
+        glDeleteProgram(program);
+}
+
+unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask)
+{
+    if (const auto it = shadePrograms_.find(textureMask); it != shadePrograms_.end())
+        return it->second;
+    std::vector<std::string> defines = atomicsDefines(int64_);
+    char mask[48];
+    std::snprintf(mask, sizeof(mask), "LFD_TEXTURE_MASK 0x%Xu", textureMask);
+    defines.emplace_back(mask);
+    const GLuint program = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines);
+    shadePrograms_[textureMask] = program;
+    return program;
 }
 
 void LfdprVisibilityShading::resize(uint32_t viewCount, uint32_t width, uint32_t height)
 {
     if (viewCount == views_ && width == width_ && height == height_ && depth_)
         return;
-    const GLuint old[] = {depth_, index_, materialIds_};
+    const GLuint old[] = {depth_, index_, pixelStates_};
     glDeleteBuffers(3, old);
     views_ = viewCount;
     width_ = width;
     height_ = height;
+    const uint32_t tile = LfdprConstants::get().shadeTile;
+    tileCount_ = divideUp(width, tile) * divideUp(height, tile) * viewCount;
     const size_t pixels = std::max<size_t>(size_t(viewCount) * width * height, 1);
-    auto make = [](size_t bytes) {
-        GLuint buffer = 0;
-        glCreateBuffers(1, &buffer);
-        glNamedBufferStorage(buffer, GLsizeiptr(bytes), nullptr, 0);
-        return buffer;
-    };
-    depth_ = make(pixels * (int64_ ? 8 : 4));
-    index_ = int64_ ? 0 : make(pixels * 4);
-    materialIds_ = make(pixels * 4);
+    depth_ = makeBuffer(pixels * (int64_ ? 8 : 4));
+    index_ = int64_ ? 0 : makeBuffer(pixels * 4);
+    pixelStates_ = makeBuffer(pixels * 4);
+    shadeWorkBytes_ = 0; // the tile lists depend on the tile count: sized again
 }
 
 size_t LfdprVisibilityShading::viewBufferBytes() const { return size_t(views_) * width_ * height_ * 12; }
+
+size_t LfdprVisibilityShading::shadeWorkBytes() const { return shadeWorkBytes_ + materialGroupsBytes_; }
 
 void LfdprVisibilityShading::splat(uint32_t points) const
 {
@@ -79,53 +126,113 @@ void LfdprVisibilityShading::splat(uint32_t points) const
 void LfdprVisibilityShading::splatPass(uint32_t points, uint32_t pass) const
 {
     const LfdprConstants& k = LfdprConstants::get();
-    const uint32_t groups = (points + k.groupSize - 1) / k.groupSize;
+    const uint32_t groups = divideUp(points, k.groupSize);
     const uint32_t x = std::min<uint32_t>(groups, 65535u);
     glUseProgram(splatProgram_);
     if (!int64_)
         glProgramUniform1ui(splatProgram_, k.locPass, pass);
-    glDispatchCompute(x, (groups + x - 1) / x, 1);
+    glDispatchCompute(x, divideUp(groups, x), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(0);
 }
 
-uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targets,
-                                       const std::vector<int32_t>& texturedMaterials, uint32_t points,
-                                       unsigned counters) const
+void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials)
 {
     const LfdprConstants& k = LfdprConstants::get();
+    const uint32_t shared = k.maxShadeGroups - 1; // dispatch slots for textured materials
+
+    // Step 1: the groups, each with the textures its program samples.
+    groups_.clear();
+    groups_.push_back({kNone, scene.gpuMaterialIndex(kNone), 0u});
+    const std::vector<Material>& materials = scene.cpu().materials;
+    groupOfMaterial_.assign(materials.size() + 1, 0u); // + the default material, stored last
+    for (size_t i = 0; i < texturedMaterials.size(); ++i) {
+        const int32_t m = texturedMaterials[i];
+        groups_.push_back({m, scene.gpuMaterialIndex(m), materialTextureFlags(materials[size_t(m)])});
+        groupOfMaterial_[scene.gpuMaterialIndex(m)] = 1u + uint32_t(i % shared);
+    }
+    groupCount_ = uint32_t(std::min<size_t>(groups_.size(), k.maxShadeGroups));
+
+    // Step 2: the buffers (grown, never shrunk, so a steady scene allocates nothing).
+    const size_t groupBytes = groupOfMaterial_.size() * sizeof(uint32_t);
+    if (groupBytes > materialGroupsBytes_) {
+        glDeleteBuffers(1, &materialGroups_);
+        materialGroups_ = makeBuffer(groupBytes, GL_DYNAMIC_STORAGE_BIT);
+        materialGroupsBytes_ = groupBytes;
+    }
+    glNamedBufferSubData(materialGroups_, 0, GLsizeiptr(groupBytes), groupOfMaterial_.data());
+    const size_t workBytes = kDispatchOffset + size_t(k.maxShadeGroups) * 16 + size_t(groupCount_) * tileCount_ * 4;
+    if (workBytes > shadeWorkBytes_) {
+        glDeleteBuffers(1, &shadeWork_);
+        shadeWork_ = makeBuffer(workBytes);
+        shadeWorkBytes_ = workBytes;
+    }
+}
+
+void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pass)
+{
+    const LfdprConstants& k = LfdprConstants::get();
+
+    // Step 1: empty tile lists, then classify every pixel (pass 2: the repaired ones).
+    const GLuint zero = 0;
+    glClearNamedBufferSubData(shadeWork_, GL_R32UI, 0, kDispatchOffset + GLsizeiptr(groupCount_) * 16,
+                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glUseProgram(classifyProgram_);
+    glProgramUniform1ui(classifyProgram_, k.locPass, pass);
+    glDispatchCompute(views_, divideUp(width_, k.shadeTile), divideUp(height_, k.shadeTile)); // (view, tile x, tile y)
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+    // Step 2: each group's indirect dispatch from its tile count.
+    glUseProgram(dispatchProgram_);
+    glProgramUniform1ui(dispatchProgram_, k.locShadeGroups, groupCount_);
+    glDispatchCompute(divideUp(groupCount_, 64), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+
+    // Step 3: one dispatch per group over its tiles, its textures bound. Groups shade
+    // disjoint pixels, so no barrier is needed between them.
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, shadeWork_);
+    const uint32_t shared = k.maxShadeGroups - 1;
+    for (size_t g = 0; g < groups_.size(); ++g) {
+        const Group& group = groups_[g];
+        const uint32_t slot = g == 0 ? 0u : 1u + uint32_t((g - 1) % shared);
+        const GLuint program = shadeProgram(group.textureMask);
+        glUseProgram(program);
+        glProgramUniform1ui(program, bindings::kLocStreams, scene.cpu().vertices.mask());
+        glProgramUniform1ui(program, k.locPass, pass);
+        glProgramUniform1ui(program, k.locShadeGroup, slot);
+        glProgramUniform1ui(program, k.locShadeMaterial, group.gpuMaterial);
+        scene.bindMaterialTextures(group.material);
+        glDispatchComputeIndirect(kDispatchOffset + GLintptr(slot) * 16);
+        ++dispatches_;
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glUseProgram(0);
+}
+
+uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targets,
+                                       const std::vector<int32_t>& texturedMaterials, uint32_t points)
+{
+    const LfdprConstants& k = LfdprConstants::get();
+    updateGroups(scene, texturedMaterials);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboMaterialIds, materialIds_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboMaterialIds, pixelStates_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboShadeWork, shadeWork_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboMaterialGroups, materialGroups_);
     glBindImageTexture(k.imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
-    glProgramUniform1ui(shadeProgram_, bindings::kLocStreams, scene.cpu().vertices.mask());
+    dispatches_ = 0;
+    classifyAndShade(scene, 0);
 
-    // Pass 0 (or 2 after a repair) classifies and shades untextured materials and the
-    // first textured one; pass 1 then shades each further textured material.
-    auto shadePasses = [&](GLuint firstPass) {
-        glUseProgram(shadeProgram_);
-        const size_t passes = std::max<size_t>(texturedMaterials.size(), 1);
-        for (size_t i = 0; i < passes; ++i) {
-            const int32_t material = texturedMaterials.empty() ? kNone : texturedMaterials[i];
-            const GLuint gpuMaterial = texturedMaterials.empty() ? 0xFFFFFFFFu : scene.gpuMaterialIndex(material);
-            glProgramUniform1ui(shadeProgram_, k.locPass, i == 0 ? firstPass : 1u);
-            glProgramUniform1ui(shadeProgram_, k.locShadeMaterial, gpuMaterial);
-            scene.bindMaterialTextures(material);
-            glDispatchCompute((width_ + 7) / 8, views_, (height_ + 7) / 8); // (x tile, view, row tile)
-            glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-        }
-        glUseProgram(0);
-    };
-    shadePasses(0);
-
-    // The 32-bit path's rare repair: the index pass, then the flagged pixels' shading.
+    // The 32-bit path's rare repair: the index pass, then the flagged pixels again.
     uint32_t repairs = 0;
     if (!int64_) {
-        glGetNamedBufferSubData(counters, 5 * sizeof(uint32_t), sizeof(repairs), &repairs);
+        glGetNamedBufferSubData(shadeWork_, 0, sizeof(repairs), &repairs); // shadeCounters.repairCount
         if (repairs > 0) {
             splatPass(points, 1);
-            shadePasses(2);
+            classifyAndShade(scene, 2);
         }
     }
     // The EIA pass samples the array, read-back copies it.

@@ -1,11 +1,15 @@
 // LFDPR visibility splatting and per-pixel shading (the visibility pipeline;
-// shaders/lfdpr_visibility.comp, shaders/lfdpr_shade.comp): the per-view depth and point
-// index buffers for either atomics path, the splat pass(es), and the shading passes that
-// write the visible pixels (or the background) into the ViewTargets colour array.
+// shaders/lfdpr_visibility.comp, lfdpr_classify.comp, lfdpr_shade_dispatch.comp,
+// lfdpr_shade.comp): the per-view depth and point index buffers for either atomics path,
+// the splat pass(es), and shading in three steps - classify every view pixel (background,
+// or the shading group of its point's material, listing each tile once per group it
+// holds), size each group's dispatch on the GPU, then one indirect dispatch per group over
+// its tiles only, with a program compiled for that group's textures.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 namespace lfd::player {
@@ -24,28 +28,47 @@ public:
 
     bool int64() const { return int64_; }
     void resize(uint32_t viewCount, uint32_t width, uint32_t height);
-    // 8 bytes per view pixel (depth + point index) plus 4 (the material id).
+    // 8 bytes per view pixel (depth + point index) plus 4 (the pixel's shading state).
     size_t viewBufferBytes() const;
+    // The shading work lists: per group a dispatch and a list of tiles.
+    size_t shadeWorkBytes() const;
 
     // Clears the view buffers and splats `points` points into every view (one pass on
     // either path). The caller has bound the scene, the LFDPR buffers and the constants.
     void splat(uint32_t points) const;
-    // Shades every visible pixel into targets: one pass per textured material the scene
-    // draws with (`texturedMaterials`, scene material indices; the first pass also writes
-    // the background and shades untextured materials). On the 32-bit path, pixels whose
-    // point index lost a race to a nearer point (counted in the counter buffer `counters`)
-    // are repaired - the index pass over all `points`, then their shading - and their
-    // number is returned (0 on the 64-bit path).
+    // Shades every visible pixel into targets and writes the background elsewhere. Shading
+    // groups: 0 = every untextured material, then one per textured material the scene
+    // draws with (`texturedMaterials`, scene material indices). On the 32-bit path, pixels
+    // whose point index lost a race to a nearer point are repaired - the index pass over
+    // all `points`, then their classification and shading - and their number is returned
+    // (0 on the 64-bit path).
     uint32_t shade(const GpuScene& scene, ViewTargets& targets, const std::vector<int32_t>& texturedMaterials,
-                   uint32_t points, unsigned counters) const;
+                   uint32_t points);
+    // Shading dispatches of the last shade() (groups with their programs; repairs add more).
+    uint32_t lastShadingDispatches() const { return dispatches_; }
 
 private:
+    struct Group {
+        int32_t material;     // kNone for group 0 (untextured materials)
+        uint32_t gpuMaterial; // u_shadeMaterial
+        uint32_t textureMask; // LFD_TEXTURE_MASK of its program
+    };
     void splatPass(uint32_t points, uint32_t pass) const;
+    void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
+    void classifyAndShade(const GpuScene& scene, uint32_t pass);
+    unsigned shadeProgram(uint32_t textureMask);
 
     bool int64_;
-    unsigned splatProgram_ = 0, shadeProgram_ = 0;
-    unsigned depth_ = 0, index_ = 0, materialIds_ = 0; // 64-bit path: depth_ holds the words
-    uint32_t views_ = 0, width_ = 0, height_ = 0;
+    unsigned splatProgram_ = 0, classifyProgram_ = 0, dispatchProgram_ = 0;
+    std::map<uint32_t, unsigned> shadePrograms_; // by LFD_TEXTURE_MASK
+    unsigned depth_ = 0, index_ = 0, pixelStates_ = 0; // 64-bit path: depth_ holds the words
+    unsigned shadeWork_ = 0, materialGroups_ = 0;
+    size_t shadeWorkBytes_ = 0, materialGroupsBytes_ = 0;
+    std::vector<Group> groups_;
+    std::vector<uint32_t> groupOfMaterial_; // per GPU material
+    uint32_t groupCount_ = 0;            // dispatch slots in use (<= LFDPR_MAX_SHADE_GROUPS)
+    uint32_t views_ = 0, width_ = 0, height_ = 0, tileCount_ = 0;
+    uint32_t dispatches_ = 0;
 };
 
 } // namespace lfd::player

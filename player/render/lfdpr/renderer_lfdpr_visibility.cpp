@@ -143,7 +143,7 @@ public:
         shading_.splat(stored);
         timer.end();
         timer.begin(stage::kResolve);
-        info_.repairs = shading_.shade(scene, targets, texturedMaterials_, stored, counters_);
+        info_.repairs = shading_.shade(scene, targets, texturedMaterials_, stored);
         timer.end();
 
         // Step 4: what happened.
@@ -171,7 +171,9 @@ public:
             {"point_buffer_bytes", double(info_.pointBufferBytes)},
             {"triangle_buffer_bytes", double(info_.triangleBufferBytes)},
             {"view_buffer_bytes", double(info_.viewBufferBytes)},
-            {"frame_gpu_bytes", double(info_.pointBufferBytes + info_.triangleBufferBytes + info_.viewBufferBytes)},
+            {"frame_gpu_bytes", double(info_.pointBufferBytes + info_.triangleBufferBytes + info_.viewBufferBytes +
+                                       shading_.shadeWorkBytes())},
+            {"shade_work_bytes", double(shading_.shadeWorkBytes())},
             {"point_capacity", double(info_.pointCapacity)},
             {"overflow_frames", double(info_.overflowFrames)},
             {"point_regenerations", double(info_.regenerations)},
@@ -181,7 +183,7 @@ public:
             {"triangles_oversized", double(info_.trianglesOversized)},
             {"triangles_coarsened", double(trianglesCoarsened_)},
             {"triangles_large", double(info_.trianglesLarge)},
-            {"shading_passes", double(std::max<size_t>(texturedMaterials_.size(), 1))},
+            {"shading_passes", double(shading_.lastShadingDispatches())},
             {"lfd_sampling", options_.lfdBiasedSampling ? 1.0 : 0.0},
             {"texture_splatting", options_.textureSplatting ? 1.0 : 0.0},
             {"pipeline_paper", 0.0},
