@@ -15,7 +15,10 @@
 //
 // Alpha-masked materials (glTF MASK): a cell whose base-colour alpha at the finest LOD
 // any view needs (eq. minLOD) is below the cutoff emits no point, so the visibility pass
-// never needs the material's textures.
+// never needs the material's textures. That test is compiled in only for draws of masked
+// materials (LFDPR_ALPHA_TEST): a software rasteriser (llvmpipe) runs an untaken branch
+// under a lane mask at full price, so every other draw's cells would pay for a texture
+// fetch they never make.
 #include "scene_bindings.glsl"
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"
@@ -57,7 +60,6 @@ layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) coherent buffer VisCounters {
 // The triangle being sampled: setup plus what the alpha test needs.
 struct Sampled {
     LfdTriangleSetup s;
-    bool alphaTest;
     float cutoff;
     float alphaLod;
     vec4 baseFactor;
@@ -73,10 +75,10 @@ bool setUp(uint primitive, out Sampled t)
     if (!lfdSetupTriangle(p0, p1, p2, lfdOutsideHullBits(p0), lfdOutsideHullBits(p1), lfdOutsideHullBits(p2),
                           u_material, u_node, u_streams, draw.firstTriangle + primitive, t.s))
         return false;
+#ifdef LFDPR_ALPHA_TEST
     MaterialGpu m = materials[u_material];
     t.cutoff = m.emissiveCutoff.w;
     t.baseFactor = m.baseColorFactor;
-    t.alphaTest = m.alphaMode == LFD_ALPHA_MASK;
     bool textured = (u_streams & LFD_STREAM_UV) != 0u && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE) != 0u;
     t.uv0 = textured ? sceneUvs[vertices.x] : vec2(0.0);
     t.uv1 = textured ? sceneUvs[vertices.y] : vec2(0.0);
@@ -86,6 +88,7 @@ bool setUp(uint primitive, out Sampled t)
         ivec2 size = textureSize(t_baseColor, 0);
         t.alphaLod = lfdLod(t.s.vpuvMin, float(size.x) * float(size.y));
     }
+#endif
     return true;
 }
 
@@ -94,8 +97,9 @@ bool emits(Sampled t, vec2 q)
 {
     if (!lfdPixelOverlapsTriangle(q, t.s.q0, t.s.q1, t.s.q2))
         return false;
-    if (!t.alphaTest)
-        return true;
+#ifndef LFDPR_ALPHA_TEST
+    return true;
+#else
     float alpha = t.baseFactor.a;
     if (t.alphaLod >= 0.0) {
         vec3 w = lfdClampedBarycentric(t.s.q0, t.s.q1, t.s.q2, q);
@@ -103,6 +107,7 @@ bool emits(Sampled t, vec2 q)
         alpha *= textureLod(t_baseColor, uv, t.alphaLod).a;
     }
     return alpha >= t.cutoff;
+#endif
 }
 
 uint writeRecord(uint primitive, Sampled t)

@@ -299,6 +299,46 @@ TEST_F(LfdprVisibilityTest, Int64AndSingle32BitPassGiveTheSameImage)
         EXPECT_EQ(player::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
 }
 
+// Alpha-masked materials (glTF MASK): cells whose alpha is below the cutoff emit no
+// point (point generation compiles that test in only for draws of masked materials): a
+// checker whose every other square is transparent keeps about half the cube's points, the
+// holes show, and they match mvr's where the cut-out squares are large enough to be
+// resolved (both sample alpha differently at the squares' minified edges: mvr per pixel
+// centre, lfdpr per sampling cell).
+TEST_F(LfdprVisibilityTest, AlphaMaskedCellsEmitNoPointsAndShowTheirHoles)
+{
+    const DisplayProfile profile = smallProfile(4, 192, 144);
+    Scene opaque = cubeAndSphereScene();
+    opaque.textures[0] = checkerTexture(128, 32, {230, 200, 60, 255}, {40, 60, 160, 0}, true);
+    finishScene(opaque);
+    Scene masked = opaque;
+    masked.materials[0].alphaMode = AlphaMode::Mask;
+    masked.materials[0].alphaCutoff = 0.5f;
+
+    auto lfdpr = player::createLfdprRenderer();
+    auto mvr = player::createRenderer("mvr");
+    const Frame solid = render(*lfdpr, opaque, profile);
+    const Frame cut = render(*lfdpr, masked, profile);
+    const Frame reference = render(*mvr, masked, profile);
+    ASSERT_EQ(cut.pointsPerTriangle.size(), solid.pointsPerTriangle.size());
+    uint64_t cubeSolid = 0, cubeCut = 0, othersSolid = 0, othersCut = 0;
+    const size_t cubeTriangles = 12; // the first draw: the checker cube
+    for (size_t t = 0; t < cut.pointsPerTriangle.size(); ++t) {
+        (t < cubeTriangles ? cubeSolid : othersSolid) += solid.pointsPerTriangle[t];
+        (t < cubeTriangles ? cubeCut : othersCut) += cut.pointsPerTriangle[t];
+    }
+    EXPECT_NEAR(double(cubeCut) / double(cubeSolid), 0.5, 0.15) << "half the checker is transparent";
+    EXPECT_EQ(othersCut, othersSolid) << "opaque materials keep every point";
+    for (size_t v = 0; v < cut.views.size(); ++v) {
+        EXPECT_GT(player::ssimLuma(cut.views[v], reference.views[v]), 0.9) << "view " << v;
+        EXPECT_LT(player::rmse(cut.views[v], reference.views[v]), 12.0) << "view " << v;
+        EXPECT_GT(player::rmse(cut.views[v], solid.views[v]), 2.0) << "the holes must show, view " << v;
+    }
+    const std::filesystem::path dir = testOutputDir("alpha_mask");
+    player::writeImage(dir / "lfdpr_masked.png", cut.views[0]);
+    player::writeImage(dir / "mvr_masked.png", reference.views[0]);
+}
+
 // ---- Every shader variant through glslangValidator (no GL context needed) -------------
 
 TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
@@ -327,6 +367,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_resolve.comp", "comp", {"LFDPR_INT64 1"}},
         {"lfdpr_points.comp", "comp", {}},
         {"lfdpr_points.comp", "comp", {"LFDPR_LARGE_PASS 1"}},
+        {"lfdpr_points.comp", "comp", {"LFDPR_ALPHA_TEST 1"}},
+        {"lfdpr_points.comp", "comp", {"LFDPR_ALPHA_TEST 1", "LFDPR_LARGE_PASS 1"}},
         {"lfdpr_visibility.comp", "comp", {}},
         {"lfdpr_visibility.comp", "comp", {"LFDPR_INT64 1"}},
         {"lfdpr_shade.comp", "comp", {}},

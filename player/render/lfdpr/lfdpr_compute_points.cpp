@@ -5,27 +5,49 @@
 #include "scene_bindings.h"
 #include "shader_library.h"
 
+#include "lfd/scene.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <string>
 
 namespace lfd::player {
 
+namespace {
+
+bool alphaTested(const GpuScene& scene, int32_t material)
+{
+    return material != kNone && scene.cpu().materials[size_t(material)].alphaMode == AlphaMode::Mask;
+}
+
+} // namespace
+
 LfdprComputePointGeneration::LfdprComputePointGeneration()
 {
-    program_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}});
     try {
-        largeProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, {"LFDPR_LARGE_PASS 1"});
+        for (int alpha = 0; alpha < 2; ++alpha)
+            for (int large = 0; large < 2; ++large) {
+                std::vector<std::string> defines;
+                if (alpha)
+                    defines.emplace_back("LFDPR_ALPHA_TEST 1");
+                if (large)
+                    defines.emplace_back("LFDPR_LARGE_PASS 1");
+                programs_[alpha][large] = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, defines);
+            }
     } catch (...) {
-        glDeleteProgram(program_);
+        for (const auto& pair : programs_)
+            for (unsigned program : pair)
+                glDeleteProgram(program);
         throw;
     }
 }
 
 LfdprComputePointGeneration::~LfdprComputePointGeneration()
 {
-    glDeleteProgram(program_);
-    glDeleteProgram(largeProgram_);
+    for (const auto& pair : programs_)
+        for (unsigned program : pair)
+            glDeleteProgram(program);
 }
 
 void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<uint32_t>& largeBase,
@@ -45,13 +67,14 @@ void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<u
     // Step 1: one invocation per triangle, draw by draw (each with its material's
     // textures, for the alpha test of masked materials). Groups beyond the guaranteed
     // 65535 in x spill into y.
-    glUseProgram(program_);
     const std::vector<DrawItem>& draws = scene.draws();
     for (uint32_t d = 0; d < draws.size(); ++d) {
         const uint32_t triangles = draws[d].indexCount / 3;
         if (triangles == 0)
             continue;
-        setDrawUniforms(program_, draws[d], d);
+        const unsigned program = programs_[alphaTested(scene, draws[d].material)][0];
+        glUseProgram(program);
+        setDrawUniforms(program, draws[d], d);
         scene.bindMaterialTextures(draws[d].material);
         const uint32_t groups = (triangles + k.groupSize - 1) / k.groupSize;
         const uint32_t x = std::min<uint32_t>(groups, 65535u);
@@ -61,12 +84,13 @@ void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<u
 
     // Step 2: the large triangles each draw queued, one workgroup each (indirect: the
     // counts stay on the GPU).
-    glUseProgram(largeProgram_);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, largeDispatch);
     for (uint32_t d = 0; d < draws.size(); ++d) {
         if (draws[d].indexCount < 3)
             continue;
-        setDrawUniforms(largeProgram_, draws[d], d);
+        const unsigned program = programs_[alphaTested(scene, draws[d].material)][1];
+        glUseProgram(program);
+        setDrawUniforms(program, draws[d], d);
         scene.bindMaterialTextures(draws[d].material);
         glDispatchComputeIndirect(GLintptr(d) * 4 * sizeof(GLuint));
     }

@@ -13,7 +13,7 @@ class GpuScene;
 
 class LfdprComputePointGeneration {
 public:
-    LfdprComputePointGeneration(); // builds both programs
+    LfdprComputePointGeneration(); // builds the programs (per pass, with and without alpha test)
     ~LfdprComputePointGeneration();
     LfdprComputePointGeneration(const LfdprComputePointGeneration&) = delete;
     LfdprComputePointGeneration& operator=(const LfdprComputePointGeneration&) = delete;
@@ -24,7 +24,9 @@ public:
     void run(const GpuScene& scene, const std::vector<uint32_t>& largeBase, unsigned largeDispatch) const;
 
 private:
-    unsigned program_ = 0, largeProgram_ = 0;
+    // [alpha test][large pass]: draws of alpha-masked materials use the programs with the
+    // alpha test (LFDPR_ALPHA_TEST), all others the ones without.
+    unsigned programs_[2][2] = {{0, 0}, {0, 0}};
 };
 
 } // namespace lfd::player
