@@ -202,7 +202,7 @@ void main()
     LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
     if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != viewDepth[pixel]) {
         pixelStates[pixel] = LFDPR_PIXEL_REPAIR;
-        viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp u_pass 1 sets it again
+        viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp LFDPR_INDEX_PASS sets it again
         atomicAdd(shadeCounters.repairCount, 1u);
         return;
     }

@@ -16,11 +16,12 @@
 //
 // Depth key: lfdPlaneDepthKey (smaller = nearer; 0xFFFFFFFF = empty).
 // LFDPR_INT64: atomicMin on (key << 32 | point index) (GL_NV_shader_atomic_int64).
-// Otherwise 32-bit words, u_pass 0: atomicMin on the key, and the invocation that lowered
-// it stores its point index with a plain store. A nearer point racing a farther one can
-// leave the farther one's index behind; lfdpr_shade.comp checks every pixel's index
-// against its key and flags the few that disagree, and only then u_pass 1 runs: where the
-// key equals the minimum, atomicMin on the point index. The image is the same either way:
+// Otherwise 32-bit words: atomicMin on the key, and the invocation that lowered it stores
+// its point index with a plain store. A nearer point racing a farther one can leave the
+// farther one's index behind; lfdpr_shade.comp checks every pixel's index against its key
+// and flags the few that disagree, and only then the index pass runs (LFDPR_INDEX_PASS, a
+// program of its own: llvmpipe would run an untaken branch for it in every pixel): where
+// the key equals the minimum, atomicMin on the point index. The image is the same either way:
 // a pixel's winner is a point of the nearest triangle there.
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
@@ -56,7 +57,6 @@ layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewDepth {
 layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
     uint viewIndex[];
 };
-layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
 #endif
 
 void main()
@@ -136,15 +136,14 @@ void main()
                 if (key < nearKey || key > farKey)
                     continue; // clipped by the near or far plane
                 uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewPixels.x), viewCount);
-#ifdef LFDPR_INT64
+#if defined(LFDPR_INT64)
                 atomicMin(viewWords[pixel], (uint64_t(key) << 32) | uint64_t(index));
-#else
-                if (u_pass == 0u) {
-                    if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
-                        viewIndex[pixel] = index;
-                } else if (viewDepth[pixel] == key) {
+#elif defined(LFDPR_INDEX_PASS)
+                if (viewDepth[pixel] == key)
                     atomicMin(viewIndex[pixel], index);
-                }
+#else
+                if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
+                    viewIndex[pixel] = index;
 #endif
             }
         }

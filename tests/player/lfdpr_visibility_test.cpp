@@ -371,6 +371,7 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_points.comp", "comp", {"LFDPR_ALPHA_TEST 1", "LFDPR_LARGE_PASS 1"}},
         {"lfdpr_visibility.comp", "comp", {}},
         {"lfdpr_visibility.comp", "comp", {"LFDPR_INT64 1"}},
+        {"lfdpr_visibility.comp", "comp", {"LFDPR_INDEX_PASS 1"}},
         {"lfdpr_shade.comp", "comp", {}},
         {"lfdpr_shade.comp", "comp", {"LFDPR_INT64 1"}},
         // Shading programs are compiled per shading group's textures: none, and a subset.

@@ -43,6 +43,8 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64) : int64_(int64)
     const std::vector<std::string> defines = atomicsDefines(int64);
     try {
         splatProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines);
+        if (!int64)
+            indexProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"});
         classifyProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines);
         dispatchProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}});
         // The untextured group's program is always needed; built now so a shader error
@@ -50,6 +52,7 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64) : int64_(int64)
         shadeProgram(0u);
     } catch (...) {
         glDeleteProgram(splatProgram_);
+        glDeleteProgram(indexProgram_);
         glDeleteProgram(classifyProgram_);
         glDeleteProgram(dispatchProgram_);
         for (const auto& [mask, program] : shadePrograms_)
@@ -63,6 +66,7 @@ LfdprVisibilityShading::~LfdprVisibilityShading()
     const GLuint buffers[] = {depth_, index_, pixelStates_, shadeWork_, materialGroups_};
     glDeleteBuffers(5, buffers);
     glDeleteProgram(splatProgram_);
+    glDeleteProgram(indexProgram_);
     glDeleteProgram(classifyProgram_);
     glDeleteProgram(dispatchProgram_);
     for (const auto& [mask, program] : shadePrograms_)
@@ -120,17 +124,15 @@ void LfdprVisibilityShading::splat(uint32_t points) const
         return;
 
     // Step 2: splat (the 32-bit path's index pass runs only to repair, in shade()).
-    splatPass(points, 0);
+    splatPass(points, splatProgram_);
 }
 
-void LfdprVisibilityShading::splatPass(uint32_t points, uint32_t pass) const
+void LfdprVisibilityShading::splatPass(uint32_t points, unsigned program) const
 {
     const LfdprConstants& k = LfdprConstants::get();
     const uint32_t groups = divideUp(points, k.groupSize);
     const uint32_t x = std::min<uint32_t>(groups, 65535u);
-    glUseProgram(splatProgram_);
-    if (!int64_)
-        glProgramUniform1ui(splatProgram_, k.locPass, pass);
+    glUseProgram(program);
     glDispatchCompute(x, divideUp(groups, x), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glUseProgram(0);
@@ -231,7 +233,7 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
     if (!int64_) {
         glGetNamedBufferSubData(shadeWork_, 0, sizeof(repairs), &repairs); // shadeCounters.repairCount
         if (repairs > 0) {
-            splatPass(points, 1);
+            splatPass(points, indexProgram_);
             classifyAndShade(scene, 2);
         }
     }

@@ -53,13 +53,14 @@ private:
         uint32_t gpuMaterial; // u_shadeMaterial
         uint32_t textureMask; // LFD_TEXTURE_MASK of its program
     };
-    void splatPass(uint32_t points, uint32_t pass) const;
+    void splatPass(uint32_t points, unsigned program) const;
     void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
     void classifyAndShade(const GpuScene& scene, uint32_t pass);
     unsigned shadeProgram(uint32_t textureMask);
 
     bool int64_;
-    unsigned splatProgram_ = 0, classifyProgram_ = 0, dispatchProgram_ = 0;
+    unsigned splatProgram_ = 0, indexProgram_ = 0; // 32-bit path: the depth pass, the index pass
+    unsigned classifyProgram_ = 0, dispatchProgram_ = 0;
     std::map<uint32_t, unsigned> shadePrograms_; // by LFD_TEXTURE_MASK
     unsigned depth_ = 0, index_ = 0, pixelStates_ = 0; // 64-bit path: depth_ holds the words
     unsigned shadeWork_ = 0, materialGroups_ = 0;
