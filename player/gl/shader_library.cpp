@@ -283,4 +283,12 @@ long shaderDefineValue(std::string_view file, std::string_view name)
     throw GlError("shaders/" + std::string(file) + ": no #define " + std::string(name));
 }
 
+void dispatchCovering(unsigned program, uint32_t x, uint32_t y, uint32_t z)
+{
+    GLint local[3] = {1, 1, 1};
+    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, local);
+    auto groups = [](uint32_t n, GLint size) { return (n + uint32_t(size) - 1) / uint32_t(size); };
+    glDispatchCompute(groups(x, local[0]), groups(y, local[1]), groups(z, local[2]));
+}
+
 } // namespace lfd::gl

@@ -162,7 +162,7 @@ public:
                 glUniform1ui(2, s);
                 glUniform1ui(3, GstdOptions::kSubViews);
                 glUniform2fv(4, GLsizei(options_.samples), &offsets_[size_t(s) * options_.samples].x);
-                glDispatchCompute((width + 7) / 8, (height + 7) / 8, 1);
+                gl::dispatchCovering(reconstruct_, width, height, 1); // one invocation per view pixel
                 // The accumulator is read by the next dispatch; the high-res texture is
                 // drawn into again next (ordered by GL for framebuffer writes).
                 glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

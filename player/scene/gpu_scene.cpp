@@ -9,11 +9,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace lfd::player {
 
 namespace {
+
+// The baker's per-triangle statistics are uploaded as they are stored, so lfd::TriangleStats
+// (formats/) must be the generated TriangleStatsGpu byte for byte.
+static_assert(sizeof(TriangleStats) == sizeof(bindings::TriangleStatsGpu));
+static_assert(offsetof(TriangleStats, areaWorld) == offsetof(bindings::TriangleStatsGpu, areaWorld));
+static_assert(offsetof(TriangleStats, areaTexture) == offsetof(bindings::TriangleStatsGpu, areaTexture));
+static_assert(offsetof(TriangleStats, texelCount) == offsetof(bindings::TriangleStatsGpu, texelCount));
+static_assert(offsetof(TriangleStats, sizeUv) == offsetof(bindings::TriangleStatsGpu, sizeUv));
+static_assert(offsetof(TriangleStats, texPerWorld) == offsetof(bindings::TriangleStatsGpu, texPerWorld));
+static_assert(offsetof(TriangleStats, flags) == offsetof(bindings::TriangleStatsGpu, flags));
 
 GLuint makeBuffer(const void* data, size_t bytes, GLbitfield flags, size_t& total)
 {

@@ -68,7 +68,7 @@ void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<u
             continue;
         setDrawUniforms(largeProgram_, draws[d], d);
         scene.bindMaterialTextures(draws[d].material);
-        glDispatchComputeIndirect(GLintptr(d) * 4 * sizeof(GLuint));
+        glDispatchComputeIndirect(GLintptr(d) * GLintptr(k.largeDispatchBytes));
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
