@@ -55,10 +55,12 @@ struct ShaderStageSource {
     std::string file; // embedded file name
 };
 
-// Compiles and links a program; throws GlError (one line, first error, file:line).
+// Compiles and links a program; throws GlError (one line, first error, file:line). The
+// caller owns the returned name: hold it in a gl::Program (gl_handles.h).
 unsigned buildProgram(const std::vector<ShaderStageSource>& stages,
                       const std::vector<std::string>& defines = {});
-// Compiles one preprocessed stage; returns the shader name or throws GlError.
+// Compiles one preprocessed stage; returns the shader name (owned by the caller, as a
+// gl::Shader) or throws GlError.
 unsigned compileShader(unsigned type, const PreprocessedShader& source);
 
 // Integer value of `#define NAME value` in an embedded file (tests check C++ mirrors).

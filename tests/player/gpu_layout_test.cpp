@@ -13,6 +13,7 @@
 // * A tampered table (two vec4 members swapped) must fail the same check: the check can
 //   fail.
 // * The generator refuses layouts C++ cannot mirror, and pads where GLSL aligns.
+#include "gl_handles.h"
 #include "gl_test_support.h"
 
 #include "lfdpr_bindings_gpu.h"
@@ -137,18 +138,17 @@ std::string probeSource(const Target& t)
     return s.str();
 }
 
-GLuint buildProbe(const std::string& source)
+gl::Program buildProbe(const std::string& source)
 {
     const gl::ShaderLookup lookup = [&](std::string_view name) -> std::optional<std::string> {
         if (name == "layout_probe.comp")
             return source;
         return std::string(gl::shaderSource(name));
     };
-    const GLuint shader = gl::compileShader(GL_COMPUTE_SHADER, gl::preprocessShader("layout_probe.comp", lookup));
-    const GLuint program = glCreateProgram();
+    const gl::Shader shader(gl::compileShader(GL_COMPUTE_SHADER, gl::preprocessShader("layout_probe.comp", lookup)));
+    gl::Program program(glCreateProgram());
     glAttachShader(program, shader);
     glLinkProgram(program);
-    glDeleteShader(shader);
     GLint linked = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &linked);
     EXPECT_EQ(linked, GL_TRUE) << source;
@@ -241,10 +241,9 @@ TEST_F(GpuLayoutTest, EveryStructAndBlockMatchesTheDriverMemberByMember)
     for (const gl::GpuLayoutFile* file : kLayoutFiles)
         for (const Target& t : targets(*file)) {
             SCOPED_TRACE(std::string(file->file) + ": " + t.layout->cppName);
-            const GLuint program = buildProbe(probeSource(t));
+            const gl::Program program = buildProbe(probeSource(t));
             for (const std::string& mismatch : layoutMismatches(program, t))
                 ADD_FAILURE() << mismatch;
-            glDeleteProgram(program);
             checked += t.layout->members.size();
         }
     std::printf("[ numbers  ] %zu members of %zu + %zu structs and blocks checked\n", checked,
@@ -275,7 +274,7 @@ TEST_F(GpuLayoutTest, SwappedOrMissingMembersFailTheCheck)
         return Target{};
     }();
     ASSERT_NE(real.layout, nullptr);
-    const GLuint program = buildProbe(probeSource(real));
+    const gl::Program program = buildProbe(probeSource(real));
     EXPECT_TRUE(layoutMismatches(program, real).empty());
 
     std::vector<gl::GpuMember> swapped(real.layout->members.begin(), real.layout->members.end());
@@ -296,7 +295,6 @@ TEST_F(GpuLayoutTest, SwappedOrMissingMembersFailTheCheck)
     const std::vector<std::string> missing = layoutMismatches(program, broken);
     ASSERT_EQ(missing.size(), 1u);
     EXPECT_NE(missing[0].find("member count"), std::string::npos) << missing[0];
-    glDeleteProgram(program);
 }
 
 // ---- Every block of every program the renderers build -------------------------------------
@@ -426,7 +424,7 @@ TEST_F(GpuLayoutTest, EveryBlockOfEveryProgramHasTheCppBindingAndSize)
     size_t checked = 0;
     for (const ProgramCase& c : programCases(caps())) {
         SCOPED_TRACE(c.label);
-        const GLuint program = gl::buildProgram(c.stages, c.defines);
+        const gl::Program program(gl::buildProgram(c.stages, c.defines));
         for (const GLenum interface : {GLenum(GL_SHADER_STORAGE_BLOCK), GLenum(GL_UNIFORM_BLOCK)}) {
             GLint count = 0;
             glGetProgramInterfaceiv(program, interface, GL_ACTIVE_RESOURCES, &count);
@@ -465,7 +463,6 @@ TEST_F(GpuLayoutTest, EveryBlockOfEveryProgramHasTheCppBindingAndSize)
                         << name << ": size";
             }
         }
-        glDeleteProgram(program);
     }
     std::printf("[ numbers  ] %zu active blocks checked\n", checked);
     EXPECT_GT(checked, 40u);

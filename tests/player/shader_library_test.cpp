@@ -1,5 +1,6 @@
 // Shader library: embedding, #include resolution, error mapping back to file:line, and
 // programs linking. (The C++ side of the bindings files is checked in gpu_layout_test.cpp.)
+#include "gl_handles.h"
 #include "gl_test_support.h"
 
 #include "shader_library.h"
@@ -93,8 +94,7 @@ class ShaderCompileTest : public GlTest {};
 std::string compileError(const std::string& main, const std::map<std::string, std::string>& files)
 {
     try {
-        const GLuint shader = gl::compileShader(GL_FRAGMENT_SHADER, gl::preprocessShader(main, lookupWith(files)));
-        glDeleteShader(shader);
+        const gl::Shader shader(gl::compileShader(GL_FRAGMENT_SHADER, gl::preprocessShader(main, lookupWith(files))));
     } catch (const gl::GlError& e) {
         return e.what();
     }
@@ -151,9 +151,8 @@ TEST_F(ShaderCompileTest, EveryRasterProgramLinks)
     for (const char* vert : {"mvr.vert", "mvr_layered.vert"}) {
         if (std::string(vert) == "mvr_layered.vert" && !caps().layerFromVertexShader)
             continue;
-        const GLuint program = gl::buildProgram({{GL_VERTEX_SHADER, vert}, {GL_FRAGMENT_SHADER, "mvr.frag"}});
-        EXPECT_NE(program, 0u);
-        glDeleteProgram(program);
+        const gl::Program program(gl::buildProgram({{GL_VERTEX_SHADER, vert}, {GL_FRAGMENT_SHADER, "mvr.frag"}}));
+        EXPECT_NE(program.get(), 0u);
     }
 }
 

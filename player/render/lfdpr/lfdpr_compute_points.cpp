@@ -12,20 +12,9 @@
 namespace lfd::player {
 
 LfdprComputePointGeneration::LfdprComputePointGeneration()
+    : program_(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}})),
+      largeProgram_(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, {"LFDPR_LARGE_PASS 1"}))
 {
-    program_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}});
-    try {
-        largeProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, {"LFDPR_LARGE_PASS 1"});
-    } catch (...) {
-        glDeleteProgram(program_);
-        throw;
-    }
-}
-
-LfdprComputePointGeneration::~LfdprComputePointGeneration()
-{
-    glDeleteProgram(program_);
-    glDeleteProgram(largeProgram_);
 }
 
 void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<uint32_t>& largeBase,

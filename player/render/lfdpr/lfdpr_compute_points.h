@@ -4,6 +4,8 @@
 // list and its per-draw dispatch words, counters) and the frame constants.
 #pragma once
 
+#include "gl_handles.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -14,9 +16,6 @@ class GpuScene;
 class LfdprComputePointGeneration {
 public:
     LfdprComputePointGeneration(); // builds both programs
-    ~LfdprComputePointGeneration();
-    LfdprComputePointGeneration(const LfdprComputePointGeneration&) = delete;
-    LfdprComputePointGeneration& operator=(const LfdprComputePointGeneration&) = delete;
 
     // largeBase[d]: first slot of draw d in the large-triangle list (its triangles before
     // it); largeDispatch: the per-draw indirect dispatch words (uvec4 each, cleared to
@@ -24,7 +23,7 @@ public:
     void run(const GpuScene& scene, const std::vector<uint32_t>& largeBase, unsigned largeDispatch) const;
 
 private:
-    unsigned program_ = 0, largeProgram_ = 0;
+    gl::Program program_, largeProgram_;
 };
 
 } // namespace lfd::player

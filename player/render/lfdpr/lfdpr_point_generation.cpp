@@ -89,31 +89,24 @@ LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, ui
 }
 
 LfdprPointGeneration::LfdprPointGeneration()
-{
-    program_ = gl::buildProgram({{GL_VERTEX_SHADER, "lfdpr_points.vert"},
+    : program_(gl::buildProgram({{GL_VERTEX_SHADER, "lfdpr_points.vert"},
                                  {GL_GEOMETRY_SHADER, "lfdpr_points.geom"},
-                                 {GL_FRAGMENT_SHADER, "lfdpr_points.frag"}});
-    // The C++ mirror of the frame block must match the driver's layout.
+                                 {GL_FRAGMENT_SHADER, "lfdpr_points.frag"}})),
+      framebuffer_(gl::createFramebuffer())
+{
+    // The generated frame block must have the driver's size here too (the layout test checks
+    // it member by member on the test driver; this guards the driver actually running).
     const GLuint block = glGetUniformBlockIndex(program_, "LfdprFrameBlock");
     GLint size = 0;
     if (block != GL_INVALID_INDEX)
         glGetActiveUniformBlockiv(program_, block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
-    if (size != GLint(sizeof(LfdprFrameGpu))) {
-        glDeleteProgram(program_);
+    if (size != GLint(sizeof(LfdprFrameGpu)))
         throw gl::GlError("shaders/lfdpr_bindings.glsl: LfdprFrameBlock is " + std::to_string(size) +
                           " bytes, C++ LfdprFrameGpu is " + std::to_string(sizeof(LfdprFrameGpu)));
-    }
     // The sampling viewport: a framebuffer with no attachments, LFDPR_TILE_SIZE square.
     const GLint tile = GLint(LfdprConstants::get().tileSize);
-    glCreateFramebuffers(1, &framebuffer_);
     glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, tile);
     glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, tile);
-}
-
-LfdprPointGeneration::~LfdprPointGeneration()
-{
-    glDeleteFramebuffers(1, &framebuffer_);
-    glDeleteProgram(program_);
 }
 
 uint64_t LfdprPointGeneration::recordCount(const GpuScene& scene)

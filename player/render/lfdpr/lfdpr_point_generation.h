@@ -6,6 +6,7 @@
 #pragma once
 
 #include "frame.h"
+#include "gl_handles.h"
 #include "lfdpr_bindings_gpu.h"
 
 #include <glm/glm.hpp>
@@ -35,11 +36,8 @@ LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, ui
 class LfdprPointGeneration {
 public:
     LfdprPointGeneration(); // builds the program and the attachment-less framebuffer
-    ~LfdprPointGeneration();
-    LfdprPointGeneration(const LfdprPointGeneration&) = delete;
-    LfdprPointGeneration& operator=(const LfdprPointGeneration&) = delete;
 
-    unsigned program() const { return program_; }
+    unsigned program() const { return program_.get(); }
     // Number of triangle records the scene needs (sum over draws; instanced meshes count
     // once per node).
     static uint64_t recordCount(const GpuScene& scene);
@@ -47,8 +45,8 @@ public:
     void run(const GpuScene& scene) const;
 
 private:
-    unsigned program_ = 0;
-    unsigned framebuffer_ = 0;
+    gl::Program program_;
+    gl::Framebuffer framebuffer_;
 };
 
 } // namespace lfd::player

@@ -18,37 +18,21 @@ LfdprViewGeneration::LfdprViewGeneration(bool int64) : int64_(int64)
 {
     const std::vector<std::string> defines =
         int64 ? std::vector<std::string>{"LFDPR_INT64 1"} : std::vector<std::string>{};
-    dispatchProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}});
-    splatProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_splat.comp"}}, defines);
-    resolveProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_resolve.comp"}}, defines);
-}
-
-LfdprViewGeneration::~LfdprViewGeneration()
-{
-    const GLuint buffers[] = {depth_, color_};
-    glDeleteBuffers(2, buffers);
-    glDeleteProgram(dispatchProgram_);
-    glDeleteProgram(splatProgram_);
-    glDeleteProgram(resolveProgram_);
+    dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}}));
+    splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_splat.comp"}}, defines));
+    resolveProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_resolve.comp"}}, defines));
 }
 
 void LfdprViewGeneration::resize(uint32_t viewCount, uint32_t width, uint32_t height)
 {
     if (viewCount == views_ && width == width_ && height == height_ && depth_)
         return;
-    const GLuint old[] = {depth_, color_};
-    glDeleteBuffers(2, old);
     views_ = viewCount;
     width_ = width;
     height_ = height;
     const size_t pixels = std::max<size_t>(size_t(viewCount) * width * height, 1);
-    glCreateBuffers(1, &depth_);
-    glNamedBufferStorage(depth_, GLsizeiptr(pixels * (int64_ ? 8 : 4)), nullptr, 0);
-    color_ = 0;
-    if (!int64_) {
-        glCreateBuffers(1, &color_);
-        glNamedBufferStorage(color_, GLsizeiptr(pixels * 4), nullptr, 0);
-    }
+    depth_ = gl::createBuffer(pixels * (int64_ ? sizeof(uint64_t) : sizeof(uint32_t)));
+    color_ = int64_ ? gl::Buffer() : gl::createBuffer(pixels * sizeof(uint32_t));
 }
 
 size_t LfdprViewGeneration::viewBufferBytes() const { return size_t(views_) * width_ * height_ * 8; }

@@ -6,6 +6,7 @@
 #include "frame_stages.h"
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
+#include "gl_handles.h"
 #include "gpu_timer.h"
 #include "lfdpr_constants.h"
 #include "lfdpr_counters.h"
@@ -25,15 +26,6 @@ namespace lfd::player {
 
 namespace {
 
-// A device-local buffer of `bytes` (at least 16, so bindings stay valid).
-unsigned makeBuffer(size_t bytes, GLbitfield flags = 0)
-{
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr, flags);
-    return buffer;
-}
-
 class LfdprRendererImpl final : public LfdprRenderer {
 public:
     explicit LfdprRendererImpl(const LfdprOptions& options)
@@ -46,17 +38,11 @@ public:
             std::max<uint32_t>(options.maxPointCapacity, 1),
             std::max<uint64_t>(uint64_t(std::max<GLint64>(maxBlockBytes, 0)) / k_.pointBytes, 1)));
         pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
-        points_ = makeBuffer(size_t(pointCapacity_) * k_.pointBytes);
-        counters_ = makeBuffer(k_.counterBytes, GL_DYNAMIC_STORAGE_BIT);
-        frameUbo_ = makeBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
+        points_ = gl::createBuffer(size_t(pointCapacity_) * k_.pointBytes);
+        counters_ = gl::createBuffer(k_.counterBytes, GL_DYNAMIC_STORAGE_BIT);
+        frameUbo_ = gl::createBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
         info_.int64Atomics = views_.int64();
         info_.bytesPerPoint = k_.pointBytes;
-    }
-
-    ~LfdprRendererImpl() override
-    {
-        const GLuint buffers[] = {points_, counters_, frameUbo_, records_, sampling_, viewInverse_};
-        glDeleteBuffers(6, buffers);
     }
 
     std::string name() const override { return "lfdpr-paper"; }
@@ -146,18 +132,15 @@ private:
             throw std::invalid_argument("lfdpr: view targets do not match the frame's profile");
         // Points: grow after an overflow, to the needed count * 1.25.
         if (nextCapacity_ > pointCapacity_) {
-            glDeleteBuffers(1, &points_);
             pointCapacity_ = nextCapacity_;
-            points_ = makeBuffer(size_t(pointCapacity_) * k_.pointBytes);
+            points_ = gl::createBuffer(size_t(pointCapacity_) * k_.pointBytes);
         }
         // Triangle records: one per triangle of every draw (never overflows).
         const uint64_t records = LfdprPointGeneration::recordCount(scene);
         if (records > recordCapacity_ || !records_) {
-            glDeleteBuffers(1, &records_);
-            glDeleteBuffers(1, &sampling_);
             recordCapacity_ = std::max<uint64_t>(records, 1);
-            records_ = makeBuffer(recordCapacity_ * k_.triangleRecordBytes);
-            sampling_ = makeBuffer(recordCapacity_ * k_.triangleSamplingBytes);
+            records_ = gl::createBuffer(recordCapacity_ * k_.triangleRecordBytes);
+            sampling_ = gl::createBuffer(recordCapacity_ * k_.triangleSamplingBytes);
         }
         views_.resize(targets.viewCount(), targets.width(), targets.height());
     }
@@ -169,9 +152,8 @@ private:
         for (const ViewCamera& camera : frame.cameras)
             inverses.push_back(glm::mat4(glm::inverse(camera.clipFromDisplay * frame.displayFromScene)));
         if (inverses.size() > viewInverseCapacity_ || !viewInverse_) {
-            glDeleteBuffers(1, &viewInverse_);
             viewInverseCapacity_ = std::max<size_t>(inverses.size(), 1);
-            viewInverse_ = makeBuffer(viewInverseCapacity_ * k_.viewInverseBytes, GL_DYNAMIC_STORAGE_BIT);
+            viewInverse_ = gl::createBuffer(viewInverseCapacity_ * k_.viewInverseBytes, GL_DYNAMIC_STORAGE_BIT);
         }
         if (!inverses.empty())
             glNamedBufferSubData(viewInverse_, 0, GLsizeiptr(inverses.size() * sizeof(glm::mat4)),
@@ -217,7 +199,7 @@ private:
     FrameUniforms uniforms_;
     LfdprPointGeneration pointGeneration_;
     LfdprViewGeneration views_;
-    unsigned points_ = 0, counters_ = 0, frameUbo_ = 0, records_ = 0, sampling_ = 0, viewInverse_ = 0;
+    gl::Buffer points_, counters_, frameUbo_, records_, sampling_, viewInverse_;
     uint32_t pointCapacity_ = 0, nextCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t recordCapacity_ = 0, trianglesCoarsened_ = 0;
     size_t viewInverseCapacity_ = 0;
