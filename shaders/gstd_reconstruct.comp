@@ -7,6 +7,7 @@
 // mean). Sub-views are averaged in linear light: the first stores its estimate in the
 // accumulator, the last adds its own, divides by the sub-view count, encodes sRGB and
 // writes the view layer (the values every renderer stores).
+// The C++ side dispatches with gl::dispatchCovering, which reads this local size back.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #define GSTD_MAX_SAMPLES 64

@@ -1,8 +1,10 @@
 // LFDPR buffers: binding points, uniform locations and std430/std140 layouts shared by the
-// point-generation and view-generation stages. The C++ side reads the #defines from the
-// embedded source (gl::shaderDefineValue), so numbers are never written down twice; the
-// C++ structs that are uploaded (LfdprFrameGpu) are checked against the block size the
-// driver reports when the programs are built.
+// point-generation and view-generation stages. This file is the only definition: the
+// build generates the C++ side from it (lfdpr_bindings_gpu.h: every #define as a constant,
+// every struct and fixed-member block as a C++ struct with these offsets; see
+// player/gl/gpu_layout_gen.cpp), and tests/player/gpu_layout_test.cpp checks every member
+// against the offsets, strides and sizes the driver reports. Sizes are never written here:
+// C++ takes sizeof of the generated structs.
 //
 // Requires scene_bindings.glsl first (LFD_SSBO_* 0..3 and LFD_UBO_FRAME 0 are taken).
 
@@ -41,14 +43,10 @@
 // overlap is resolved by the depth test (same plane) and the colour minimum.
 #define LFDPR_SPLAT_OVERLAP 1.02
 
-#define LFDPR_POINT_BYTES 48
-#define LFDPR_TRIANGLE_RECORD_BYTES 96
-#define LFDPR_TRIANGLE_SAMPLING_BYTES 96
-#define LFDPR_COUNTER_BYTES 32
-#define LFDPR_VIEW_INVERSE_BYTES 64
+// Invocations per workgroup of the point-indexed compute passes (local_size_x).
 #define LFDPR_GROUP_SIZE 64
 
-// One point (std430, 48 bytes): position, its triangle record, and the texture values
+// One point (std430): position, its triangle record, and the texture values
 // fetched at LOD_min and LOD_max (paper: tv_min, tv_max), packed 8 bits per channel.
 // Normal-mapped surfaces store the two perturbed normals instead of the two normal-map
 // texels (the tangent frame is applied at fetch time, so no frame is stored per point).
@@ -65,7 +63,7 @@ struct PointGpu {
     uint emissiveMax;
 };
 
-// One triangle as view generation sees it (std430, 96 bytes), indexed by draw record base
+// One triangle as view generation sees it (std430), indexed by draw record base
 // + gl_PrimitiveID: scene-space vertices for the inside-triangle test, the sampling axes
 // and spacings (the splat size), and the multiview-mipmapping range.
 struct TriangleRecordGpu {
@@ -77,7 +75,7 @@ struct TriangleRecordGpu {
     vec4 mip;   // x size_vpuv^min, y size_vpuv^max (eqs. minVPUVSize, maxVPUVSize), zw 0
 };
 
-// What the point fragment shader needs besides the record (std430, 96 bytes).
+// What the point fragment shader needs besides the record (std430).
 struct TriangleSamplingGpu {
     vec4 origin;   // xyz scene point of sampling coordinates (0, 0), w unused
     vec4 q01;      // sampling coordinates of p0 (xy) and p1 (zw)
@@ -87,20 +85,22 @@ struct TriangleSamplingGpu {
     uvec4 tangents; // xyz octahedral vertex tangents (scene), w bit i: tangent i has w < 0
 };
 
+// Counters of the paper's pipeline (C++: LfdprCountersGpu, read back by name).
 #ifndef LFDPR_VISIBILITY_PIPELINE // the visibility pipeline has its own counters
 layout(std430, binding = LFDPR_SSBO_COUNTERS) coherent buffer LfdprCounters {
     uint pointCount;       // points generated (may exceed the capacity: overflow)
     uint triangleCount;    // triangles that emitted points
     uint oversizedCount;   // triangles larger than one sampling tile (tiled in the GS)
     uint coarsenedCount;   // ... larger than LFDPR_MAX_TILES tiles (sampled coarser)
-    uint dispatchX;        // view-generation dispatch arguments (glDispatchComputeIndirect)
+    uint dispatchX;        // view-generation dispatch arguments (glDispatchComputeIndirect
+                           // at offsetof(LfdprCountersGpu, dispatchX))
     uint dispatchY;
     uint dispatchZ;
     uint counterPad;
 } counters;
 #endif
 
-// Frame constants of point generation (std140, 208 bytes; C++: LfdprFrameGpu).
+// Frame constants of point generation (C++: LfdprFrameGpu).
 layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
     vec4 displayX;     // xyz unit display x axis in scene space, w = view pixel width (scene units)
     vec4 displayY;     // xyz unit display y axis, w = view pixel height (scene units)
@@ -153,9 +153,6 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 // LFDPR_SSBO_MATERIAL_IDS markers besides shading groups.
 #define LFDPR_PIXEL_SHADED 0xFFFFFFFFu // written (or background)
 #define LFDPR_PIXEL_REPAIR 0xFFFFFFFEu // index disagrees with the depth key: redone
-#define LFDPR_RECORD_BYTES 16
-#define LFDPR_COMPACT_POINT_BYTES 8
-#define LFDPR_VIS_COUNTER_BYTES 32
 
 // Word of view pixel (x, y) of `view` in the visibility pipeline's per-pixel buffers:
 // views interleaved per pixel, so the 48 splats of one point (same row, nearby columns:
@@ -165,7 +162,13 @@ uint lfdViewWord(uint view, uint x, uint y, uint width, uint viewCount)
     return (y * width + x) * viewCount + view;
 }
 
-// One emitting triangle (std430, 16 bytes): which triangle (the vertices, attributes,
+// One point of the visibility pipeline (std430): its triangle record and its sampling cell.
+struct LfdprPointGpu {
+    uint record; // LfdprRecordGpu index
+    uint cell;   // sampling cell: x | y << 16
+};
+
+// One emitting triangle (std430): which triangle (the vertices, attributes,
 // node and material come from the scene) and its final sampling spacings.
 struct LfdprRecordGpu {
     uint draw;       // LfdprDrawGpu index
@@ -173,7 +176,7 @@ struct LfdprRecordGpu {
     vec2 spacing;    // along T_align's U and V (texture splatting, coarsening applied)
 };
 
-// One draw (std430, 16 bytes).
+// One draw (std430).
 struct LfdprDrawGpu {
     uint node;
     uint material;      // GPU material index
@@ -181,8 +184,8 @@ struct LfdprDrawGpu {
     uint pad;
 };
 
-// Counters of the visibility pipeline (std430, 32 bytes; read back after point generation
-// to size the visibility dispatch and to redo the frame after an overflow).
+// Counters of the visibility pipeline (std430; read back by name after point generation to
+// size the visibility dispatch and to redo the frame after an overflow).
 struct LfdprVisCountersGpu {
     uint pointCount;     // points generated (may exceed the capacity: generation is redone)
     uint recordCount;    // emitting triangles
@@ -215,7 +218,7 @@ struct LfdprShadeCountersGpu {
 // Views the camera-line block holds offsets for (4 per vec4).
 #define LFDPR_MAX_VIEWS 256
 
-// Camera-line coherence (std140, 1104 bytes; C++: LfdprCameraLineGpu). Every view camera
+// Camera-line coherence (C++: LfdprCameraLineGpu). Every view camera
 // lies on one line parallel to the screen and shares the screen rectangle, so clip y, z
 // and w rows are the same in every view and clip x is affine in the camera's offset e
 // along the line: x_clip(view) = dot(row0, p) + e(view) * dot(row0PerOffset, p).

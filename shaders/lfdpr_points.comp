@@ -42,7 +42,7 @@ layout(std430, binding = LFDPR_SSBO_UVS) readonly buffer SceneUvs {
     vec2 sceneUvs[];
 };
 layout(std430, binding = LFDPR_SSBO_POINTS) writeonly buffer Points {
-    uvec2 points[];
+    LfdprPointGpu points[];
 };
 layout(std430, binding = LFDPR_SSBO_RECORDS) writeonly buffer Records {
     LfdprRecordGpu records[];
@@ -162,7 +162,7 @@ void main()
         for (uint x = 0u; x < ex; ++x)
             if (emits(t, vec2(x, y) + 0.5)) {
                 if (first < capacity)
-                    points[first] = uvec2(record, x | (y << 16));
+                    points[first] = LfdprPointGpu(record, x | (y << 16));
                 ++first;
             }
 }
@@ -210,7 +210,7 @@ void main()
     for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))
         if (emits(t, vec2(c % ex, c / ex) + 0.5)) {
             if (index < capacity)
-                points[index] = uvec2(s_record, (c % ex) | ((c / ex) << 16));
+                points[index] = LfdprPointGpu(s_record, (c % ex) | ((c / ex) << 16));
             ++index;
         }
 }

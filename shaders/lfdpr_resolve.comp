@@ -8,6 +8,7 @@
 #include "scene_bindings.glsl"
 #include "lfdpr_bindings.glsl"
 
+// The C++ side dispatches with gl::dispatchCovering, which reads this local size back.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(binding = LFDPR_IMAGE_VIEWS, rgba8) uniform writeonly image2DArray u_views;

@@ -1,6 +1,8 @@
 // Binding points, attribute locations and GPU struct layouts shared by every renderer.
-// This file is the single definition: player/scene_bindings.h mirrors it for C++, and
-// tests/player/shader_library_test.cpp checks every value against the C++ side.
+// This file is the single definition: the build generates the C++ side from it
+// (scene_bindings_gpu.h, included by player/scene/scene_bindings.h; see
+// player/gl/gpu_layout_gen.cpp), and tests/player/gpu_layout_test.cpp checks every member
+// against the offsets, strides and sizes the driver reports.
 
 // Vertex attribute locations; each stream has its own vertex buffer, bound at the
 // vertex-buffer binding index equal to its location.
@@ -50,7 +52,7 @@
 #define LFD_STREAM_TANGENT 4
 #define LFD_STREAM_UV 8
 
-// glTF metallic-roughness material (std430, 64 bytes).
+// glTF metallic-roughness material (std430).
 struct MaterialGpu {
     vec4 baseColorFactor;
     vec4 emissiveCutoff; // xyz emissiveFactor, w alphaCutoff
@@ -61,19 +63,20 @@ struct MaterialGpu {
     uint pad1;
 };
 
-// Per-node transforms for the current frame (std430, 128 bytes).
+// Per-node transforms for the current frame (std430).
 struct NodeGpu {
     mat4 sceneFromObject;
     mat4 normalFromObject; // inverse transpose of the upper 3x3, padded to mat4
 };
 
-// One LFD view camera (std430, 80 bytes).
+// One LFD view camera (std430).
 struct ViewGpu {
     mat4 clipFromScene;
     vec4 eyeScene; // xyz camera position in scene space, for view-dependent shading
 };
 
-// Per-triangle statistics from the baker (std430, 24 bytes; = lfd::TriangleStats).
+// Per-triangle statistics from the baker (std430; uploaded as lfd::TriangleStats, which
+// the layout test checks member by member against this struct).
 struct TriangleStatsGpu {
     float areaWorld;
     float areaTexture;
@@ -96,7 +99,7 @@ layout(std430, binding = LFD_SSBO_TRIANGLE_STATS) readonly buffer TriangleStatsB
     TriangleStatsGpu triangleStats[];
 };
 
-// Frame constants (std140, 80 bytes).
+// Frame constants (C++: FrameGpu).
 layout(std140, binding = LFD_UBO_FRAME) uniform FrameBlock {
     vec4 lightDirScene; // xyz unit vector towards the light, in scene space
     vec4 lightColor;    // rgb irradiance scale of the directional light

@@ -1,10 +1,10 @@
 #include "view_targets.h"
 
 #include "gl_context.h"
+#include "row_order.h"
 
 #include <epoxy/gl.h>
 
-#include <cstring>
 #include <string>
 
 namespace lfd::player {
@@ -24,13 +24,13 @@ ViewTargets::ViewTargets(uint32_t viewCount, uint32_t width, uint32_t height)
 
     // Colour: RGBA8 holding sRGB-encoded values written by the shaders (not GL_SRGB8, so
     // no conversion happens on write or read and readback bytes are display values).
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &color_);
+    color_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
     glTextureStorage3D(color_, 1, GL_RGBA8, GLsizei(width), GLsizei(height), GLsizei(viewCount));
     glTextureParameteri(color_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(color_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTextureParameteri(color_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(color_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glCreateTextures(GL_TEXTURE_2D_ARRAY, 1, &depth_);
+    depth_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
     glTextureStorage3D(depth_, 1, GL_DEPTH_COMPONENT32F, GLsizei(width), GLsizei(height),
                        GLsizei(viewCount));
 
@@ -41,26 +41,17 @@ ViewTargets::ViewTargets(uint32_t viewCount, uint32_t width, uint32_t height)
             throw gl::GlError(std::string("view targets: ") + what + " framebuffer incomplete (0x" +
                               std::to_string(status) + ")");
     };
-    glCreateFramebuffers(1, &layeredFbo_);
+    layeredFbo_ = gl::createFramebuffer();
     glNamedFramebufferTexture(layeredFbo_, GL_COLOR_ATTACHMENT0, color_, 0);
     glNamedFramebufferTexture(layeredFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
     check(layeredFbo_, "layered");
-    layerFbos_.resize(viewCount);
-    glCreateFramebuffers(GLsizei(viewCount), layerFbos_.data());
+    layerFbos_.reserve(viewCount);
     for (uint32_t i = 0; i < viewCount; ++i) {
+        layerFbos_.push_back(gl::createFramebuffer());
         glNamedFramebufferTextureLayer(layerFbos_[i], GL_COLOR_ATTACHMENT0, color_, 0, GLint(i));
         glNamedFramebufferTextureLayer(layerFbos_[i], GL_DEPTH_ATTACHMENT, depth_, 0, GLint(i));
         check(layerFbos_[i], "per-view");
     }
-}
-
-ViewTargets::~ViewTargets()
-{
-    if (!layerFbos_.empty())
-        glDeleteFramebuffers(GLsizei(layerFbos_.size()), layerFbos_.data());
-    glDeleteFramebuffers(1, &layeredFbo_);
-    glDeleteTextures(1, &color_);
-    glDeleteTextures(1, &depth_);
 }
 
 size_t ViewTargets::bytes() const
@@ -86,11 +77,7 @@ std::vector<uint8_t> ViewTargets::readView(uint32_t view) const
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureSubImage(color_, 0, 0, 0, GLint(view), GLsizei(width_), GLsizei(height_), 1,
                          GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(glOrder.size()), glOrder.data());
-    // GL rows run bottom to top; images run top to bottom.
-    std::vector<uint8_t> image(glOrder.size());
-    for (uint32_t y = 0; y < height_; ++y)
-        std::memcpy(&image[size_t(y) * row], &glOrder[size_t(height_ - 1 - y) * row], row);
-    return image;
+    return gl::flipRows(glOrder, row); // GL order to image order
 }
 
 } // namespace lfd::player

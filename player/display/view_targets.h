@@ -3,6 +3,8 @@
 // Every renderer writes here; the EIA builder, quilt and view PNGs read from here.
 #pragma once
 
+#include "gl_handles.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -12,18 +14,15 @@ namespace lfd::player {
 class ViewTargets {
 public:
     ViewTargets(uint32_t viewCount, uint32_t width, uint32_t height);
-    ~ViewTargets();
-    ViewTargets(const ViewTargets&) = delete;
-    ViewTargets& operator=(const ViewTargets&) = delete;
 
     uint32_t viewCount() const { return viewCount_; }
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
-    unsigned colorArray() const { return color_; } // GL texture name, GL_RGBA8
-    unsigned depthArray() const { return depth_; } // GL texture name, GL_DEPTH_COMPONENT32F
+    unsigned colorArray() const { return color_.get(); } // GL texture name, GL_RGBA8
+    unsigned depthArray() const { return depth_.get(); } // GL texture name, GL_DEPTH_COMPONENT32F
     // Framebuffer with all layers attached (layered rendering) and per-layer framebuffers.
-    unsigned layeredFramebuffer() const { return layeredFbo_; }
-    unsigned layerFramebuffer(uint32_t view) const { return layerFbos_[view]; }
+    unsigned layeredFramebuffer() const { return layeredFbo_.get(); }
+    unsigned layerFramebuffer(uint32_t view) const { return layerFbos_[view].get(); }
     size_t bytes() const; // GPU memory of colour + depth
 
     void clear(const float rgba[4]);
@@ -32,8 +31,9 @@ public:
 
 private:
     uint32_t viewCount_, width_, height_;
-    unsigned color_ = 0, depth_ = 0, layeredFbo_ = 0;
-    std::vector<unsigned> layerFbos_;
+    gl::Texture color_, depth_;
+    gl::Framebuffer layeredFbo_;
+    std::vector<gl::Framebuffer> layerFbos_;
 };
 
 } // namespace lfd::player

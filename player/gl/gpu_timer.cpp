@@ -29,41 +29,29 @@ double StageTimes::max() const { return ms.empty() ? 0.0 : *std::max_element(ms.
 
 struct GpuTimer::Pending {
     std::string stage;
-    GLuint begin = 0;
-    GLuint end = 0; // 0 while the stage is open
+    gl::Query begin;
+    gl::Query end; // empty while the stage is open
 };
 
 GpuTimer::GpuTimer() = default;
+GpuTimer::~GpuTimer() = default; // Pending is complete here
 
-GpuTimer::~GpuTimer()
+gl::Query GpuTimer::takeQuery()
 {
-    for (Pending* p : pending_) {
-        glDeleteQueries(1, &p->begin);
-        if (p->end)
-            glDeleteQueries(1, &p->end);
-        delete p;
-    }
-    if (!freeQueries_.empty())
-        glDeleteQueries(GLsizei(freeQueries_.size()), freeQueries_.data());
+    if (freeQueries_.empty())
+        return gl::createQuery(GL_TIMESTAMP);
+    gl::Query q = std::move(freeQueries_.back());
+    freeQueries_.pop_back();
+    return q;
 }
 
 void GpuTimer::begin(std::string_view stage)
 {
     collect(false);
-    auto query = [this] {
-        if (freeQueries_.empty()) {
-            GLuint q = 0;
-            glCreateQueries(GL_TIMESTAMP, 1, &q);
-            return q;
-        }
-        const GLuint q = freeQueries_.back();
-        freeQueries_.pop_back();
-        return q;
-    };
-    auto* p = new Pending{std::string(stage), query(), 0};
+    auto p = std::make_unique<Pending>(Pending{std::string(stage), takeQuery(), gl::Query()});
     glQueryCounter(p->begin, GL_TIMESTAMP);
-    pending_.push_back(p);
-    open_.push_back(p);
+    open_.push_back(p.get());
+    pending_.push_back(std::move(p));
 }
 
 void GpuTimer::end()
@@ -72,12 +60,7 @@ void GpuTimer::end()
         throw gl::GlError("GpuTimer::end() without a matching begin()");
     Pending* p = open_.back();
     open_.pop_back();
-    if (freeQueries_.empty()) {
-        glCreateQueries(GL_TIMESTAMP, 1, &p->end);
-    } else {
-        p->end = freeQueries_.back();
-        freeQueries_.pop_back();
-    }
+    p->end = takeQuery();
     glQueryCounter(p->end, GL_TIMESTAMP);
 }
 
@@ -94,7 +77,7 @@ void GpuTimer::collect(bool wait)
 {
     size_t done = 0;
     for (; done < pending_.size(); ++done) {
-        Pending* p = pending_[done];
+        Pending* p = pending_[done].get();
         if (!p->end)
             break;
         if (!wait) {
@@ -107,9 +90,8 @@ void GpuTimer::collect(bool wait)
         glGetQueryObjectui64v(p->begin, GL_QUERY_RESULT, &t0);
         glGetQueryObjectui64v(p->end, GL_QUERY_RESULT, &t1);
         stages_[p->stage].ms.push_back(t1 > t0 ? double(t1 - t0) * 1e-6 : 0.0);
-        freeQueries_.push_back(p->begin);
-        freeQueries_.push_back(p->end);
-        delete p;
+        freeQueries_.push_back(std::move(p->begin));
+        freeQueries_.push_back(std::move(p->end));
     }
     pending_.erase(pending_.begin(), pending_.begin() + std::ptrdiff_t(done));
 }

@@ -5,7 +5,10 @@
 // necessary; finish() collects everything outstanding.
 #pragma once
 
+#include "gl_handles.h"
+
 #include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,8 +27,6 @@ class GpuTimer {
 public:
     GpuTimer();
     ~GpuTimer();
-    GpuTimer(const GpuTimer&) = delete;
-    GpuTimer& operator=(const GpuTimer&) = delete;
 
     void begin(std::string_view stage); // stages may nest; end() closes the innermost
     void end();
@@ -34,9 +35,10 @@ public:
 
 private:
     struct Pending;
-    std::vector<Pending*> pending_;
-    std::vector<unsigned> freeQueries_;
-    std::vector<Pending*> open_; // begun, not yet ended (innermost last)
+    std::vector<std::unique_ptr<Pending>> pending_; // submission order
+    std::vector<gl::Query> freeQueries_;             // read back, ready for reuse
+    std::vector<Pending*> open_;                     // begun, not yet ended (innermost last)
+    gl::Query takeQuery();
     void collect(bool wait);
     std::map<std::string, StageTimes> stages_;
 };

@@ -1,5 +1,7 @@
 #include "shader_library.h"
 
+#include "gl_handles.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -193,18 +195,17 @@ std::string mapCompilerMessage(const std::string& logLine, const std::vector<std
 
 unsigned compileShader(unsigned type, const PreprocessedShader& source)
 {
-    const GLuint shader = glCreateShader(type);
+    Shader shader(glCreateShader(type));
     const char* text = source.text.c_str();
     glShaderSource(shader, 1, &text, nullptr);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (ok == GL_TRUE)
-        return shader;
+        return shader.release();
 
     // Report the first error (warnings only if there is no error line), one line.
     const std::string log = infoLog(shader, false);
-    glDeleteShader(shader);
     std::istringstream lines(log);
     std::string line, first, firstError;
     int errors = 0;
@@ -235,36 +236,27 @@ unsigned compileShader(unsigned type, const PreprocessedShader& source)
 unsigned buildProgram(const std::vector<ShaderStageSource>& stages,
                       const std::vector<std::string>& defines)
 {
-    std::vector<GLuint> shaders;
+    std::vector<Shader> shaders;
     std::string names;
-    try {
-        for (const ShaderStageSource& stage : stages) {
-            shaders.push_back(compileShader(stage.type, preprocessShader(stage.file, defines)));
-            names += (names.empty() ? "" : " + ") + ("shaders/" + stage.file);
-        }
-    } catch (...) {
-        for (GLuint s : shaders)
-            glDeleteShader(s);
-        throw;
+    for (const ShaderStageSource& stage : stages) {
+        shaders.emplace_back(compileShader(stage.type, preprocessShader(stage.file, defines)));
+        names += (names.empty() ? "" : " + ") + ("shaders/" + stage.file);
     }
-    const GLuint program = glCreateProgram();
-    for (GLuint s : shaders)
+    Program program(glCreateProgram());
+    for (const Shader& s : shaders)
         glAttachShader(program, s);
     glLinkProgram(program);
-    for (GLuint s : shaders) {
+    for (const Shader& s : shaders)
         glDetachShader(program, s);
-        glDeleteShader(s);
-    }
     GLint ok = GL_FALSE;
     glGetProgramiv(program, GL_LINK_STATUS, &ok);
     if (ok != GL_TRUE) {
         std::string log = infoLog(program, true);
-        glDeleteProgram(program);
         const size_t end = log.find('\n');
         log = log.substr(0, end);
         throw GlError(names + ": link failed: " + log);
     }
-    return program;
+    return program.release();
 }
 
 long shaderDefineValue(std::string_view file, std::string_view name)
@@ -281,6 +273,14 @@ long shaderDefineValue(std::string_view file, std::string_view name)
             return std::stol(value, nullptr, 0);
     }
     throw GlError("shaders/" + std::string(file) + ": no #define " + std::string(name));
+}
+
+void dispatchCovering(unsigned program, uint32_t x, uint32_t y, uint32_t z)
+{
+    GLint local[3] = {1, 1, 1};
+    glGetProgramiv(program, GL_COMPUTE_WORK_GROUP_SIZE, local);
+    auto groups = [](uint32_t n, GLint size) { return (n + uint32_t(size) - 1) / uint32_t(size); };
+    glDispatchCompute(groups(x, local[0]), groups(y, local[1]), groups(z, local[2]));
 }
 
 } // namespace lfd::gl

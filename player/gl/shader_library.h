@@ -10,6 +10,7 @@
 #include "gl_context.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -54,13 +55,20 @@ struct ShaderStageSource {
     std::string file; // embedded file name
 };
 
-// Compiles and links a program; throws GlError (one line, first error, file:line).
+// Compiles and links a program; throws GlError (one line, first error, file:line). The
+// caller owns the returned name: hold it in a gl::Program (gl_handles.h).
 unsigned buildProgram(const std::vector<ShaderStageSource>& stages,
                       const std::vector<std::string>& defines = {});
-// Compiles one preprocessed stage; returns the shader name or throws GlError.
+// Compiles one preprocessed stage; returns the shader name (owned by the caller, as a
+// gl::Shader) or throws GlError.
 unsigned compileShader(unsigned type, const PreprocessedShader& source);
 
 // Integer value of `#define NAME value` in an embedded file (tests check C++ mirrors).
 long shaderDefineValue(std::string_view file, std::string_view name);
+
+// Dispatches the current compute program over at least x * y * z invocations: the group
+// counts come from the program's own local size (GL_COMPUTE_WORK_GROUP_SIZE), so the
+// size is written only in the shader's layout(local_size_*) line.
+void dispatchCovering(unsigned program, uint32_t x, uint32_t y, uint32_t z);
 
 } // namespace lfd::gl

@@ -9,11 +9,9 @@
 namespace lfd::player {
 
 RasterDraw::RasterDraw(const char* vertexShader)
+    : program_(gl::buildProgram({{GL_VERTEX_SHADER, vertexShader}, {GL_FRAGMENT_SHADER, "mvr.frag"}}))
 {
-    program_ = gl::buildProgram({{GL_VERTEX_SHADER, vertexShader}, {GL_FRAGMENT_SHADER, "mvr.frag"}});
 }
-
-RasterDraw::~RasterDraw() { glDeleteProgram(program_); }
 
 void RasterDraw::beginFrame(const GpuScene& scene, const FrameSetup& frame)
 {

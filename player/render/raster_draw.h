@@ -4,6 +4,7 @@
 #pragma once
 
 #include "frame_uniforms.h"
+#include "gl_handles.h"
 #include "renderer.h"
 
 namespace lfd::player {
@@ -11,11 +12,8 @@ namespace lfd::player {
 class RasterDraw {
 public:
     explicit RasterDraw(const char* vertexShader); // compiles vertexShader + mvr.frag
-    ~RasterDraw();
-    RasterDraw(const RasterDraw&) = delete;
-    RasterDraw& operator=(const RasterDraw&) = delete;
 
-    unsigned program() const { return program_; }
+    unsigned program() const { return program_.get(); }
     // Uploads the frame's views/constants and sets program, VAO, buffers, depth state.
     void beginFrame(const GpuScene& scene, const FrameSetup& frame);
     // Issues every DrawItem with `instances` instances (1 for mvr, N for mvr-layered).
@@ -23,7 +21,7 @@ public:
     void endFrame() const;
 
 private:
-    unsigned program_ = 0;
+    gl::Program program_;
     FrameUniforms uniforms_;
 };
 

@@ -10,6 +10,7 @@
 
 #include "frame_stages.h"
 #include "gl_context.h"
+#include "gl_handles.h"
 #include "gpu_timer.h"
 #include "raster_draw.h"
 #include "scene_bindings.h"
@@ -82,14 +83,13 @@ bool anisotropySupported()
 class GstdRenderer final : public Renderer {
 public:
     explicit GstdRenderer(const GstdOptions& options)
-        : options_(options), offsets_(gstdSampleOffsets(options)), draw_("mvr.vert")
+        : options_(options), offsets_(gstdSampleOffsets(options)), draw_("mvr.vert"),
+          reconstruct_(gl::buildProgram({{GL_COMPUTE_SHADER, "gstd_reconstruct.comp"}})),
+          sampler_(gl::createSampler())
     {
-        reconstruct_ = gl::buildProgram({{GL_COMPUTE_SHADER, "gstd_reconstruct.comp"}});
-
         // The scene textures' sampling for this renderer only: a sampler object bound to
         // the material units overrides the textures' own state (GpuScene's trilinear
         // REPEAT) while gstd draws, adding anisotropic filtering (paper section 5).
-        glCreateSamplers(1, &sampler_);
         glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
         glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -103,13 +103,6 @@ public:
             std::fprintf(stderr, "gstd: warning: no anisotropic filtering in this driver "
                                  "(GL_EXT_texture_filter_anisotropic); textures are trilinear\n");
         }
-    }
-
-    ~GstdRenderer() override
-    {
-        glDeleteProgram(reconstruct_);
-        glDeleteSamplers(1, &sampler_);
-        releaseTargets();
     }
 
     std::string name() const override { return "gstd"; }
@@ -162,7 +155,7 @@ public:
                 glUniform1ui(2, s);
                 glUniform1ui(3, GstdOptions::kSubViews);
                 glUniform2fv(4, GLsizei(options_.samples), &offsets_[size_t(s) * options_.samples].x);
-                glDispatchCompute((width + 7) / 8, (height + 7) / 8, 1);
+                gl::dispatchCovering(reconstruct_, width, height, 1); // one invocation per view pixel
                 // The accumulator is read by the next dispatch; the high-res texture is
                 // drawn into again next (ordered by GL for framebuffer writes).
                 glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -202,37 +195,38 @@ private:
         // sRGB storage: mvr.frag writes sRGB-encoded values (GL_FRAMEBUFFER_SRGB stays
         // off, so they are stored as written), and the reconstruction's bilinear fetches
         // decode to linear light before filtering.
-        glCreateTextures(GL_TEXTURE_2D, 1, &highRes_);
+        highRes_ = gl::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(highRes_, 1, GL_SRGB8_ALPHA8, GLsizei(highW), GLsizei(highH));
         glTextureParameteri(highRes_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
         glTextureParameteri(highRes_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTextureParameteri(highRes_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         glTextureParameteri(highRes_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glCreateTextures(GL_TEXTURE_2D, 1, &highResDepth_);
+        highResDepth_ = gl::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(highResDepth_, 1, GL_DEPTH_COMPONENT32F, GLsizei(highW), GLsizei(highH));
-        glCreateFramebuffers(1, &highResFbo_);
+        highResFbo_ = gl::createFramebuffer();
         glNamedFramebufferTexture(highResFbo_, GL_COLOR_ATTACHMENT0, highRes_, 0);
         glNamedFramebufferTexture(highResFbo_, GL_DEPTH_ATTACHMENT, highResDepth_, 0);
         if (glCheckNamedFramebufferStatus(highResFbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw gl::GlError("gstd: high-resolution framebuffer incomplete");
-        glCreateTextures(GL_TEXTURE_2D, 1, &accum_);
+        accum_ = gl::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(accum_, 1, GL_RGBA32F, GLsizei(width), GLsizei(height));
     }
 
     void releaseTargets()
     {
-        if (highResFbo_)
-            glDeleteFramebuffers(1, &highResFbo_);
-        const GLuint textures[3] = {highRes_, highResDepth_, accum_};
-        glDeleteTextures(3, textures);
-        highResFbo_ = highRes_ = highResDepth_ = accum_ = 0;
+        highResFbo_.reset();
+        highRes_.reset();
+        highResDepth_.reset();
+        accum_.reset();
     }
 
     GstdOptions options_;
     std::vector<glm::vec2> offsets_;
     RasterDraw draw_;
-    GLuint reconstruct_ = 0, sampler_ = 0;
-    GLuint highRes_ = 0, highResDepth_ = 0, highResFbo_ = 0, accum_ = 0;
+    gl::Program reconstruct_;
+    gl::Sampler sampler_;
+    gl::Texture highRes_, highResDepth_, accum_; // the high-resolution target, the accumulator
+    gl::Framebuffer highResFbo_;
     uint32_t width_ = 0, height_ = 0;
     float anisotropy_ = 1.0f;
 };

@@ -11,18 +11,7 @@ namespace lfd::player {
 
 glm::dvec3 lightDirectionDisplay() { return glm::normalize(glm::dvec3(-0.35, 0.6, 0.7)); }
 
-FrameUniforms::FrameUniforms()
-{
-    glCreateBuffers(1, &frame_);
-    glNamedBufferStorage(frame_, sizeof(bindings::FrameGpu), nullptr, GL_DYNAMIC_STORAGE_BIT);
-}
-
-FrameUniforms::~FrameUniforms()
-{
-    glDeleteBuffers(1, &frame_);
-    if (views_)
-        glDeleteBuffers(1, &views_);
-}
+FrameUniforms::FrameUniforms() : frame_(gl::createBuffer(sizeof(bindings::FrameGpu), GL_DYNAMIC_STORAGE_BIT)) {}
 
 void FrameUniforms::upload(const FrameSetup& frame)
 {
@@ -32,12 +21,8 @@ void FrameUniforms::upload(const FrameSetup& frame)
     for (size_t i = 0; i < n; ++i)
         views[i] = {frame.clipFromScene[i], glm::vec4(frame.eyeScene[i], 1.0f)};
     if (n > viewCapacity_ || !views_) {
-        if (views_)
-            glDeleteBuffers(1, &views_);
-        glCreateBuffers(1, &views_);
         viewCapacity_ = std::max<size_t>(n, 1);
-        glNamedBufferStorage(views_, GLsizeiptr(viewCapacity_ * sizeof(bindings::ViewGpu)), nullptr,
-                             GL_DYNAMIC_STORAGE_BIT);
+        views_ = gl::createBuffer(viewCapacity_ * sizeof(bindings::ViewGpu), GL_DYNAMIC_STORAGE_BIT);
     }
     if (n)
         glNamedBufferSubData(views_, 0, GLsizeiptr(n * sizeof(bindings::ViewGpu)), views.data());

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "frame.h"
+#include "gl_handles.h"
 
 #include <glm/glm.hpp>
 
@@ -21,15 +22,12 @@ inline constexpr float kAmbientIntensity = 0.25f;
 class FrameUniforms {
 public:
     FrameUniforms();
-    ~FrameUniforms();
-    FrameUniforms(const FrameUniforms&) = delete;
-    FrameUniforms& operator=(const FrameUniforms&) = delete;
 
     // Uploads the frame's views and constants and binds both buffers.
     void upload(const FrameSetup& frame);
 
 private:
-    unsigned views_ = 0, frame_ = 0;
+    gl::Buffer views_, frame_;
     size_t viewCapacity_ = 0;
 };
 

@@ -9,22 +9,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace lfd::player {
 
 namespace {
 
-GLuint makeBuffer(const void* data, size_t bytes, GLbitfield flags, size_t& total)
+// The baker's per-triangle statistics are uploaded as they are stored, so lfd::TriangleStats
+// (formats/) must be the generated TriangleStatsGpu byte for byte.
+static_assert(sizeof(TriangleStats) == sizeof(bindings::TriangleStatsGpu));
+static_assert(offsetof(TriangleStats, areaWorld) == offsetof(bindings::TriangleStatsGpu, areaWorld));
+static_assert(offsetof(TriangleStats, areaTexture) == offsetof(bindings::TriangleStatsGpu, areaTexture));
+static_assert(offsetof(TriangleStats, texelCount) == offsetof(bindings::TriangleStatsGpu, texelCount));
+static_assert(offsetof(TriangleStats, sizeUv) == offsetof(bindings::TriangleStatsGpu, sizeUv));
+static_assert(offsetof(TriangleStats, texPerWorld) == offsetof(bindings::TriangleStatsGpu, texPerWorld));
+static_assert(offsetof(TriangleStats, flags) == offsetof(bindings::TriangleStatsGpu, flags));
+
+// A buffer counted in the scene's GPU bytes (gl::createBuffer keeps at least 16 bytes, so
+// every SSBO binding stays valid for empty scenes).
+gl::Buffer makeBuffer(const void* data, size_t bytes, GLbitfield flags, size_t& total)
 {
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    // note: zero-sized storage is an error in GL; keep a 16-byte buffer so every SSBO
-    // binding stays valid for empty scenes.
-    glNamedBufferStorage(buffer, GLsizeiptr(std::max<size_t>(bytes, 16)), bytes ? data : nullptr,
-                         flags);
     total += std::max<size_t>(bytes, 16);
-    return buffer;
+    return gl::createBuffer(bytes, flags, data);
 }
 
 bindings::MaterialGpu toGpu(const Material& m)
@@ -52,15 +59,13 @@ uint32_t materialTextureFlags(const Material& m)
 GpuScene::GpuScene(const Scene& scene) : scene_(scene)
 {
     // Step 1: one vertex buffer per present stream, bound at binding index = location.
-    glCreateVertexArrays(1, &vao_);
+    vao_ = gl::createVertexArray();
     auto addStream = [&](unsigned location, const void* data, size_t count, GLint components,
                          size_t stride) {
         if (count == 0)
             return;
-        const GLuint vbo = makeBuffer(data, count * stride, 0, gpuBytes_);
-        vbos_.push_back(vbo);
-        streamVbos_[location] = vbo;
-        glVertexArrayVertexBuffer(vao_, location, vbo, 0, GLsizei(stride));
+        streamVbos_[location] = makeBuffer(data, count * stride, 0, gpuBytes_);
+        glVertexArrayVertexBuffer(vao_, location, streamVbos_[location], 0, GLsizei(stride));
         glVertexArrayAttribFormat(vao_, location, components, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(vao_, location, location);
         glEnableVertexArrayAttrib(vao_, location);
@@ -75,14 +80,13 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene)
 
     // Step 2: textures with the pack's full mip chain; colour textures decode sRGB in the
     // sampler, data textures stay linear. Trilinear filtering, glTF's default REPEAT wrap.
-    textures_.resize(scene_.textures.size(), 0);
+    textures_.reserve(scene_.textures.size());
     for (size_t t = 0; t < scene_.textures.size(); ++t) {
         Texture& tex = scene_.textures[t];
         if (tex.mips.empty() || tex.texels.empty())
             throw gl::GlError("pack texture " + std::to_string(t) + " (" + tex.name +
                               ") has no texels to upload");
-        GLuint name = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &name);
+        gl::Texture name = gl::createTexture(GL_TEXTURE_2D);
         const GLsizei levels = GLsizei(tex.mips.size());
         glTextureStorage2D(name, levels, tex.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8,
                            GLsizei(tex.mips[0].width), GLsizei(tex.mips[0].height));
@@ -98,7 +102,7 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene)
         glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_REPEAT);
         glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        textures_[t] = name;
+        textures_.push_back(std::move(name));
         // The texels live on the GPU now; keep the metadata only.
         std::vector<uint8_t>().swap(tex.texels);
     }
@@ -134,17 +138,6 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene)
     update(0.0);
 }
 
-GpuScene::~GpuScene()
-{
-    if (!vbos_.empty())
-        glDeleteBuffers(GLsizei(vbos_.size()), vbos_.data());
-    if (!textures_.empty())
-        glDeleteTextures(GLsizei(textures_.size()), textures_.data());
-    const GLuint buffers[] = {ibo_, materialSsbo_, statsSsbo_, nodeSsbo_};
-    glDeleteBuffers(4, buffers);
-    glDeleteVertexArrays(1, &vao_);
-}
-
 void GpuScene::update(double time)
 {
     sceneFromNode_ = nodeWorldMatrices(scene_, float(time));
@@ -166,7 +159,7 @@ unsigned GpuScene::texture(int32_t index) const
 {
     if (index < 0 || size_t(index) >= textures_.size())
         return 0;
-    return textures_[size_t(index)];
+    return textures_[size_t(index)].get();
 }
 
 void GpuScene::bindMaterialTextures(int32_t material) const

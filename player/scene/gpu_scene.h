@@ -4,9 +4,13 @@
 // per (node, primitive) so renderers can issue them (or multi-draw) in one place.
 #pragma once
 
+#include "gl_handles.h"
+
 #include "lfd/scene.h"
 
 #include <glm/glm.hpp>
+
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -26,7 +30,6 @@ uint32_t materialTextureFlags(const Material& material);
 class GpuScene {
 public:
     explicit GpuScene(const Scene& scene); // needs a current GL context
-    ~GpuScene();
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;
 
@@ -36,28 +39,29 @@ public:
     const Scene& cpu() const { return scene_; } // metadata (textures' texels released after upload)
     const std::vector<DrawItem>& draws() const { return draws_; }
     const std::vector<glm::mat4>& sceneFromNode() const { return sceneFromNode_; }
-    unsigned vertexArray() const { return vao_; }
-    unsigned indexBuffer() const { return ibo_; }
+    unsigned vertexArray() const { return vao_.get(); }
+    unsigned indexBuffer() const { return ibo_.get(); }
     // The vertex buffer of stream `location` (LFD_ATTRIB_*), 0 when the pack has none.
-    unsigned streamBuffer(unsigned location) const { return location < 4 ? streamVbos_[location] : 0u; }
+    unsigned streamBuffer(unsigned location) const { return location < 4 ? streamVbos_[location].get() : 0u; }
     unsigned texture(int32_t index) const; // 0 for kNone
     // Binds the material's five textures to their units (LFD_UNIT_*; absent ones as 0, the
     // shaders branch on the material flags). material = kNone: the default material.
     void bindMaterialTextures(int32_t material) const;
     // Index of `material` in the materials SSBO (kNone: the default material, stored last).
     uint32_t gpuMaterialIndex(int32_t material) const;
-    unsigned materialBuffer() const { return materialSsbo_; }
-    unsigned triangleStatsBuffer() const { return statsSsbo_; }
-    unsigned nodeTransformBuffer() const { return nodeSsbo_; }
+    unsigned materialBuffer() const { return materialSsbo_.get(); }
+    unsigned triangleStatsBuffer() const { return statsSsbo_.get(); }
+    unsigned nodeTransformBuffer() const { return nodeSsbo_.get(); }
     size_t gpuBytes() const { return gpuBytes_; }
 
 private:
     Scene scene_;
     std::vector<DrawItem> draws_;
     std::vector<glm::mat4> sceneFromNode_;
-    std::vector<unsigned> vbos_, textures_;
-    unsigned streamVbos_[4] = {0, 0, 0, 0};
-    unsigned vao_ = 0, ibo_ = 0, materialSsbo_ = 0, statsSsbo_ = 0, nodeSsbo_ = 0;
+    std::vector<gl::Texture> textures_;
+    std::array<gl::Buffer, 4> streamVbos_; // by LFD_ATTRIB_* location; empty when absent
+    gl::VertexArray vao_;
+    gl::Buffer ibo_, materialSsbo_, statsSsbo_, nodeSsbo_;
     size_t gpuBytes_ = 0;
 };
 

@@ -1,12 +1,22 @@
-// lfd-play end to end: a small pack written with lfd::writePack, run headless through the
-// real executable; output files, sizes, stats keys; bad input gives one stderr line,
+// lfd-play (and lfd-bench) end to end: a small pack written with lfd::writePack, run
+// headless through the real executable. Every image a tool writes is checked for content:
+// against the headless render of the same frame in this process (the shared harness, from
+// the same pack and profile) or, for the EIA, against the CPU reference interleaving of the
+// written views - and never blank, so a black or background-only output fails even where
+// the reference would be broken the same way. Stats keys; bad input gives one stderr line,
 // a non-zero status and no output files.
 #include "gl_test_support.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
 
+#include "eia_builder.h"
+#include "frame_uniforms.h"
 #include "image_output.h"
+#include "quilt.h"
+#include "renderer_gstd.h"
+#include "simulated_viewer.h"
 
+#include "lfd/display_profile.h"
 #include "lfd/pack.h"
 
 #include "skip_or_fail.h"
@@ -74,6 +84,57 @@ std::vector<std::string> outputsIn(const fs::path& dir)
     return names;
 }
 
+// lfd-play's defaults: frame k is at k / 60 s on a 10 s turntable.
+constexpr double kFps = 60.0, kTurntablePeriod = 10.0;
+
+// The frame lfd-play wrote for `frame`, rendered here from the same pack and profile.
+RenderedFrame referenceFrame(const std::string& renderer, const fs::path& pack, const DisplayProfile& profile,
+                             uint32_t frame)
+{
+    return renderFrame(renderer, readPack(pack), profile,
+                       {.time = double(frame) / kFps, .turntablePeriod = kTurntablePeriod, .eia = true});
+}
+
+std::vector<std::vector<uint8_t>> pixelsOf(const std::vector<player::Image>& images)
+{
+    std::vector<std::vector<uint8_t>> out;
+    for (const player::Image& image : images)
+        out.push_back(image.pixels);
+    return out;
+}
+
+player::Image readView(const fs::path& dir, uint32_t view)
+{
+    char name[32];
+    std::snprintf(name, sizeof(name), "view_%03u.png", view);
+    return player::readImage(dir / name, 4);
+}
+
+// The checks can fail: a black image, a background-only one and one shifted by a pixel
+// are each refused, by the same functions that pass the real outputs below.
+TEST(CliOutputChecks, BlankOrWrongImagesFail)
+{
+    player::Image reference{64, 48, 4, std::vector<uint8_t>(64 * 48 * 4, 255)};
+    for (uint32_t y = 0; y < 48; ++y)
+        for (uint32_t x = 0; x < 64; ++x)
+            for (uint32_t c = 0; c < 3; ++c)
+                reference.pixels[(y * 64 + x) * 4 + c] = uint8_t((x * 4 + y * 3 + c * 50) % 256);
+    EXPECT_EQ(imageMismatch(reference, reference, 0), "");
+    player::Image black = reference, background = reference, shifted = reference;
+    for (size_t i = 0; i < black.pixels.size(); i += 4) {
+        std::fill_n(&black.pixels[i], 3, uint8_t(0));
+        std::fill_n(&background.pixels[i], 3, uint8_t(std::lround(player::kBackground[0] * 255.0f)));
+    }
+    std::rotate(shifted.pixels.begin(), shifted.pixels.begin() + 4, shifted.pixels.end());
+    EXPECT_NE(imageMismatch(black, reference, 1), "");
+    EXPECT_NE(imageMismatch(background, reference, 1), "");
+    EXPECT_NE(imageMismatch(shifted, reference, 1), "");
+    // Blank on both sides (a renderer broken for the tool and the reference alike).
+    EXPECT_NE(imageMismatch(black, black, 1), "");
+    EXPECT_NE(imageMismatch(background, background, 1), "");
+    EXPECT_NE(blankReason(background).find("(13, 13, 13)"), std::string::npos) << blankReason(background);
+}
+
 class CliTest : public GlTest {
 protected:
     void SetUp() override
@@ -103,7 +164,7 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("OpenGL"), std::string::npos) << "start-up line names the GL driver: " << r.out;
 
-    const player::Image eia = player::readImage(out / "eia.png");
+    const player::Image eia = player::readImage(out / "eia.png", 4);
     EXPECT_EQ(eia.width, 384u);
     EXPECT_EQ(eia.height, 216u);
     // 4 views of 96x72 on a 16:9 panel: the quilt layout chooses its tiles; find the file.
@@ -124,9 +185,30 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
         EXPECT_EQ(view.height, 72u);
     }
     EXPECT_FALSE(fs::exists(out / "views" / "view_004.png"));
-    const player::Image viewer = player::readImage(out / "viewer.png");
+    const player::Image viewer = player::readImage(out / "viewer.png", 4);
     EXPECT_EQ(viewer.width, 96u);
     EXPECT_EQ(viewer.height, 72u);
+
+    // Content: the last of 3 frames (time 2 / 60 s), rendered here from the same pack;
+    // the same driver and code give the same bytes (1 level of slack for PNG round trips
+    // elsewhere: none is expected here).
+    const DisplayProfile profile =
+        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
+    const RenderedFrame reference = referenceFrame("mvr", pack_, profile, 2);
+    std::vector<player::Image> views;
+    for (uint32_t v = 0; v < 4; ++v) {
+        views.push_back(readView(out / "views", v));
+        EXPECT_EQ(imageMismatch(views[v], reference.views[v], 1), "") << "view " << v;
+    }
+    EXPECT_EQ(imageMismatch(eia, reference.eia, 1), "") << "EIA";
+    const player::Image cpuEia{384, 216, 4, player::buildEiaCpu(profile, pixelsOf(views), 96, 72)};
+    EXPECT_EQ(imageMismatch(eia, cpuEia, 0), "") << "EIA against the CPU interleaving of the written views";
+    const player::QuiltLayout layout = player::chooseQuiltLayout(profile);
+    const player::Image expectedQuilt{layout.width(), layout.height(), 4,
+                                      player::assembleQuilt(layout, pixelsOf(reference.views))};
+    EXPECT_EQ(imageMismatch(player::readImage(quilt, 4), expectedQuilt, 1), "") << "quilt";
+    const player::Image expectedViewer{96, 72, 4, player::simulateViewer(profile, reference.eia.pixels, 1.5)};
+    EXPECT_EQ(imageMismatch(viewer, expectedViewer, 1), "") << "simulated viewer";
 
     const nlohmann::json stats = nlohmann::json::parse(readText(out / "stats.json"));
     for (const char* key : {"renderer", "views", "view_width", "view_height", "frames", "gpu", "view_generation_ms",
@@ -168,9 +250,12 @@ TEST_F(CliTest, LayeredRendererAndExplicitFrame)
     ASSERT_EQ(runPlay(dir_, common + " --renderer mvr --frames 1 --frame 30 --views-out " + q(a)).status, 0);
     const RunResult r = runPlay(dir_, common + " --renderer mvr-layered --frames 2 --frame 30 --views-out " + q(b));
     ASSERT_EQ(r.status, 0) << r.err;
-    for (const char* name : {"view_000.png", "view_003.png"}) {
-        const player::Image va = player::readImage(a / name), vb = player::readImage(b / name);
-        EXPECT_LE(player::maxAbsDiff(va, vb), 1) << name;
+    const DisplayProfile profile =
+        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 64, 48);
+    const RenderedFrame frame30 = referenceFrame("mvr", pack_, profile, 30);
+    for (uint32_t v = 0; v < 4; ++v) {
+        EXPECT_EQ(imageMismatch(readView(a, v), frame30.views[v], 1), "") << "mvr, view " << v;
+        EXPECT_EQ(imageMismatch(readView(b, v), frame30.views[v], 1), "") << "mvr-layered, view " << v;
     }
     // A different frame shows the turntable at another angle.
     const fs::path c = dir_ / "c";
@@ -180,12 +265,20 @@ TEST_F(CliTest, LayeredRendererAndExplicitFrame)
 
 TEST_F(CliTest, DefaultPrototypeProfileGivesAFullPanelEia)
 {
-    const fs::path eia = dir_ / "eia.png";
-    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --views 8 --view-size 120x90 --out " + q(eia));
+    const fs::path eia = dir_ / "eia.png", views = dir_ / "views";
+    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --views 8 --view-size 120x90 --out " + q(eia) +
+                                          " --views-out " + q(views));
     ASSERT_EQ(r.status, 0) << r.err;
-    const player::Image image = player::readImage(eia);
+    const player::Image image = player::readImage(eia, 4);
     EXPECT_EQ(image.width, 3840u);
     EXPECT_EQ(image.height, 2160u);
+    // Content: the prototype's interleaving of the views lfd-play wrote beside it.
+    const DisplayProfile profile = withViews(prototypeDisplayProfile(), 8, 120, 90);
+    std::vector<player::Image> written;
+    for (uint32_t v = 0; v < 8; ++v)
+        written.push_back(readView(views, v));
+    const player::Image cpuEia{3840, 2160, 4, player::buildEiaCpu(profile, pixelsOf(written), 120, 90)};
+    EXPECT_EQ(imageMismatch(image, cpuEia, 0), "");
 }
 
 // Each bad input: non-zero status, exactly one stderr line naming the culprit, no files.
@@ -232,8 +325,25 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
     const fs::path out = dir_ / "out";
     fs::create_directories(out);
     const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 96x72";
-    const RunResult r = runPlay(dir_, common + " --renderer lfdpr --stats " + q(out / "lfdpr.json"));
+    const RunResult r = runPlay(dir_, common + " --renderer lfdpr --stats " + q(out / "lfdpr.json") + " --out " +
+                                          q(out / "lfdpr_eia.png") + " --views-out " + q(out / "lfdpr_views"));
     ASSERT_EQ(r.status, 0) << r.err;
+    // Content: lfdpr's frame 0 rendered here (identical on llvmpipe). RMSE rather than
+    // equality: a driver's 32-bit visibility path may resolve a depth tie to either point
+    // between runs, so a pixel may differ where two points meet.
+    const DisplayProfile profile =
+        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
+    const RenderedFrame reference = referenceFrame("lfdpr", pack_, profile, 0);
+    for (uint32_t v = 0; v < 4; ++v) {
+        const player::Image view = readView(out / "lfdpr_views", v);
+        EXPECT_EQ(blankReason(view), "") << "view " << v;
+        EXPECT_LT(player::rmse(view, reference.views[v]), 1.0) << "view " << v;
+    }
+    const player::Image eia = player::readImage(out / "lfdpr_eia.png", 4);
+    EXPECT_EQ(blankReason(eia), "");
+    std::printf("[ numbers  ] lfd-play --renderer lfdpr: EIA RMSE %.3f, max difference %d against lfdpr here\n",
+                player::rmse(eia, reference.eia), player::maxAbsDiff(eia, reference.eia));
+    EXPECT_LT(player::rmse(eia, reference.eia), 1.0);
     const nlohmann::json stats = nlohmann::json::parse(readText(out / "lfdpr.json"));
     for (const char* key : {"points", "bytes_per_point", "point_generation_ms", "view_generation_ms", "eia_ms",
                             "total_ms", "point_buffer_bytes", "view_buffer_bytes", "atomics"})
@@ -266,7 +376,13 @@ TEST_F(CliTest, GstdRendererHeadlessWithFactor)
     EXPECT_EQ(stats["gstd_samples"], 32.0);
     EXPECT_EQ(stats["gstd_sub_views"], 2.0);
     EXPECT_GE(stats["anisotropy"].get<double>(), 1.0);
-    EXPECT_TRUE(fs::exists(out / "gstd_views" / "view_003.png"));
+    // Content: gstd is seeded, so the views are the ones rendered here with factor 2.
+    const DisplayProfile profile =
+        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
+    const RenderedFrame reference = renderFrame(*player::createGstdRenderer({.factor = 2}), readPack(pack_), profile,
+                                                {.turntablePeriod = kTurntablePeriod});
+    for (uint32_t v = 0; v < 4; ++v)
+        EXPECT_EQ(imageMismatch(readView(out / "gstd_views", v), reference.views[v], 1), "") << "view " << v;
 
     const RunResult bad = runPlay(dir_, common + " --renderer gstd --gstd-factor 0");
     EXPECT_NE(bad.status, 0);
@@ -287,6 +403,17 @@ TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
     EXPECT_NE(r.out.find("lfdpr/mvr-layered:"), std::string::npos) << r.out;
     for (const char* file : {"bench.json", "bench.csv", "speed_vs_error.svg", "lfdpr_eia.png", "mvr_eia.png"})
         EXPECT_TRUE(fs::exists(out / file)) << file;
+    // Content: the quality frame (frame 0) rendered here; lfdpr's EIA close to mvr's
+    // (measured on llvmpipe: RMSE 0.64; the visibility pipeline shades like mvr).
+    const DisplayProfile profile =
+        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
+    const RenderedFrame mvr = referenceFrame("mvr", pack_, profile, 0);
+    EXPECT_EQ(imageMismatch(player::readImage(out / "mvr_eia.png", 4), mvr.eia, 1), "") << "mvr EIA";
+    const player::Image lfdprEia = player::readImage(out / "lfdpr_eia.png", 4);
+    EXPECT_EQ(blankReason(lfdprEia), "");
+    const double lfdprRmse = player::rmse(lfdprEia, mvr.eia);
+    std::printf("[ numbers  ] lfd-bench EIA RMSE: lfdpr against mvr rendered here %.3f\n", lfdprRmse);
+    EXPECT_LT(lfdprRmse, 3.0) << "lfdpr against mvr";
     const nlohmann::json bench = nlohmann::json::parse(readText(out / "bench.json"));
     EXPECT_FALSE(bench.dump().find("\"lfdpr\"") == std::string::npos) << "bench.json names lfdpr";
     // gstd is the default reference; every renderer's quality carries FLIP next to RMSE, SSIM.

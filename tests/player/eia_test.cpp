@@ -6,6 +6,7 @@
 #include "gl_test_support.h"
 #include "gpu_timer.h"
 #include "image_output.h"
+#include "row_order.h"
 #include "simulated_viewer.h"
 #include "shader_library.h"
 #include "view_targets.h"
@@ -57,11 +58,8 @@ uint8_t subpixelValue(const std::vector<uint8_t>& eia, uint32_t panelWidth, uint
 // Uploads image-order RGBA8 views into the GL view array (GL row 0 = bottom).
 void uploadViews(ViewTargets& targets, const std::vector<std::vector<uint8_t>>& views) {
     const uint32_t w = targets.width(), h = targets.height();
-    std::vector<uint8_t> flipped(size_t(w) * h * 4);
     for (uint32_t v = 0; v < targets.viewCount(); ++v) {
-        for (uint32_t y = 0; y < h; ++y)
-            std::copy_n(&views[v][size_t(h - 1 - y) * w * 4], size_t(w) * 4,
-                        &flipped[size_t(y) * w * 4]);
+        const std::vector<uint8_t> flipped = lfd::gl::flipRows(views[v], size_t(w) * 4);
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         glTextureSubImage3D(targets.colorArray(), 0, 0, 0, GLint(v), GLsizei(w), GLsizei(h), 1,
                             GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());

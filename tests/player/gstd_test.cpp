@@ -23,7 +23,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -79,28 +78,10 @@ Scene tiltedCheckerScene(double degrees)
     return scene;
 }
 
-struct GstdFrame {
-    std::vector<Image> views;
-    double seconds = 0.0;
-};
-
-GstdFrame renderGstd(const Scene& scene, const DisplayProfile& profile, const GstdOptions& options = {})
+// gstd with `options`, one still frame (time 0).
+RenderedFrame renderGstd(const Scene& scene, const DisplayProfile& profile, const GstdOptions& options = {})
 {
-    const auto start = std::chrono::steady_clock::now();
-    player::GpuScene gpu(scene);
-    gpu.update(0.0);
-    const player::FrameSetup frame =
-        player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds), 0.0, 0.0);
-    player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
-    player::GpuTimer timer;
-    player::createGstdRenderer(options)->render(gpu, frame, targets, timer);
-    timer.finish();
-    GstdFrame out;
-    for (uint32_t i = 0; i < profile.viewCount; ++i)
-        out.views.push_back({profile.viewWidth, profile.viewHeight, 4, targets.readView(i)});
-    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return out;
+    return renderFrame(*player::createGstdRenderer(options), scene, profile);
 }
 
 double srgbToLinear(uint8_t c)
@@ -132,7 +113,7 @@ std::vector<Image> supersampledMvr(const Scene& scene, const DisplayProfile& pro
 {
     const DisplayProfile high = withViews(profile, profile.viewCount * subViews, profile.viewWidth * factor,
                                           profile.viewHeight * factor);
-    const RenderedViews sub = renderScene(scene, "mvr", high, 0.0, 0.0);
+    const RenderedFrame sub = renderFrame("mvr", scene, high);
     std::vector<Image> out;
     const uint32_t w = profile.viewWidth, h = profile.viewHeight, hw = high.viewWidth;
     for (uint32_t v = 0; v < profile.viewCount; ++v) {
@@ -210,8 +191,8 @@ TEST_F(GstdTest, ConvergesTowardsSupersampledMvr)
     const Scene scene = tiltedCheckerScene(70.0);
     const std::vector<Image> truth = supersampledMvr(scene, profile, 8, 2);
     const std::vector<Image> spatialTruth = supersampledMvr(scene, profile, 8, 1);
-    const GstdFrame gstd = renderGstd(scene, profile);
-    const RenderedViews mvr = renderScene(scene, "mvr", profile, 0.0, 0.0);
+    const RenderedFrame gstd = renderGstd(scene, profile);
+    const RenderedFrame mvr = renderFrame("mvr", scene, profile);
     const fs::path dir = testOutputDir("gstd_convergence");
     std::printf("[ numbers  ] gstd: %u views of %ux%u in %.2f s\n", profile.viewCount, profile.viewWidth,
                 profile.viewHeight, gstd.seconds);
@@ -248,7 +229,7 @@ TEST_F(GstdTest, AnisotropicFilteringSharpensGrazingTextures)
     aniso.factor = 1;
     GstdOptions trilinear = aniso;
     trilinear.maxAnisotropy = 1.0f;
-    const GstdFrame a = renderGstd(scene, profile, aniso), t = renderGstd(scene, profile, trilinear);
+    const RenderedFrame a = renderGstd(scene, profile, aniso), t = renderGstd(scene, profile, trilinear);
     for (uint32_t v = 0; v < profile.viewCount; ++v) {
         const double eA = player::rmse(a.views[v], truth[v]), eT = player::rmse(t.views[v], truth[v]);
         std::printf("[ numbers  ] view %u at 80 degrees vs 8x supersampled mvr: gstd factor 1 RMSE %.2f with 16x "
@@ -263,7 +244,7 @@ TEST_F(GstdTest, TwoRunsAreBitIdentical)
 {
     const DisplayProfile profile = smallProfile(3, 64, 48);
     const Scene scene = cubeAndSphereScene();
-    const GstdFrame a = renderGstd(scene, profile), b = renderGstd(scene, profile);
+    const RenderedFrame a = renderGstd(scene, profile), b = renderGstd(scene, profile);
     for (uint32_t v = 0; v < profile.viewCount; ++v)
         EXPECT_EQ(a.views[v].pixels, b.views[v].pixels) << "view " << v;
     // ... and the views are not empty: the scene covers part of every view.

@@ -33,40 +33,6 @@ using player::LfdprOptions;
 
 class LfdprRendererTest : public GlTest {};
 
-// Renders `frames` frames of `scene` (still, time 0) with one renderer, the same GPU scene
-// and targets throughout, and returns the last frame's views.
-struct Rendered {
-    std::vector<Image> views;
-    std::vector<std::string> stages;
-};
-
-Rendered renderFrames(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile,
-                      int frames = 1, double angle = 0.0)
-{
-    player::GpuScene gpu(scene);
-    const Framing framing = fitSceneToDisplay(profile, scene.bounds);
-    // A turntable period of 2 pi seconds makes `angle` the time.
-    const player::FrameSetup frame = player::makeFrameSetup(profile, framing, angle, 2.0 * 3.14159265358979);
-    player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
-    player::GpuTimer timer;
-    for (int i = 0; i < frames; ++i)
-        renderer.render(gpu, frame, targets, timer);
-    timer.finish();
-    Rendered out;
-    for (const auto& [stage, times] : timer.stages())
-        out.stages.push_back(stage);
-    for (uint32_t i = 0; i < profile.viewCount; ++i)
-        out.views.push_back({profile.viewWidth, profile.viewHeight, 4, targets.readView(i)});
-    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
-    return out;
-}
-
-Rendered renderNamed(const std::string& name, const Scene& scene, const DisplayProfile& profile, double angle = 0.0)
-{
-    std::unique_ptr<player::Renderer> renderer = player::createRenderer(name);
-    return renderFrames(*renderer, scene, profile, 1, angle);
-}
-
 bool isBackground(const uint8_t* p)
 {
     // kBackground 0.05 stored as 13 (sRGB-encoded values are written as is).
@@ -136,8 +102,8 @@ TEST_F(LfdprRendererTest, AgreesWithMvr)
     const Scene scene = cubeAndSphereScene();
     const DisplayProfile profile = smallProfile(6, 160, 120);
     for (double angle : {0.0, 0.9}) {
-        const Rendered lfdpr = renderNamed("lfdpr", scene, profile, angle);
-        const Rendered mvr = renderNamed("mvr", scene, profile, angle);
+        const RenderedFrame lfdpr = renderFrame("lfdpr", scene, profile, atTurntableAngle(angle));
+        const RenderedFrame mvr = renderFrame("mvr", scene, profile, atTurntableAngle(angle));
         for (uint32_t v = 0; v < profile.viewCount; ++v) {
             const size_t covered = coveredPixels(mvr.views[v]);
             ASSERT_GT(covered, size_t(160 * 120 / 10)) << "scene visible";
@@ -168,9 +134,9 @@ TEST_F(LfdprRendererTest, ReportsStagesAndTheAtomicsPathInUse)
     for (const auto pipeline : {LfdprOptions::Pipeline::Visibility, LfdprOptions::Pipeline::Paper}) {
         const bool paper = pipeline == LfdprOptions::Pipeline::Paper;
         auto renderer = player::createLfdprRenderer({.pipeline = pipeline});
-        const Rendered r = renderFrames(*renderer, cubeAndSphereScene(), smallProfile(4, 96, 72));
+        const RenderedFrame r = renderFrame(*renderer, cubeAndSphereScene(), smallProfile(4, 96, 72));
         for (const char* stage : {"point_generation", "view_generation", "resolve"})
-            EXPECT_NE(std::find(r.stages.begin(), r.stages.end(), stage), r.stages.end()) << stage;
+            EXPECT_TRUE(r.stageMs.count(stage)) << stage;
         const player::LfdprFrameInfo& info = renderer->lastFrame();
         EXPECT_EQ(info.int64Atomics, caps().int64Atomics) << "Auto picks 64-bit exactly where it exists";
         EXPECT_GT(info.points, 1000u);
@@ -203,8 +169,8 @@ TEST_F(LfdprRendererTest, Int64AndTwoPass32GiveTheSameImage)
     const DisplayProfile profile = smallProfile(4, 160, 120);
     auto r64 = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::Int64});
     auto r32 = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::TwoPass32});
-    const Rendered a = renderFrames(*r64, scene, profile);
-    const Rendered b = renderFrames(*r32, scene, profile);
+    const RenderedFrame a = renderFrame(*r64, scene, profile);
+    const RenderedFrame b = renderFrame(*r32, scene, profile);
     for (uint32_t v = 0; v < profile.viewCount; ++v)
         EXPECT_EQ(player::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
 }
@@ -239,8 +205,8 @@ TEST_F(LfdprRendererTest, SubPixelTriangleStillMakesAPointAndAPixel)
     scene.bounds = bounds;
 
     auto renderer = player::createLfdprRenderer();
-    const Rendered lfdpr = renderFrames(*renderer, scene, profile);
-    const Rendered mvr = renderNamed("mvr", scene, profile);
+    const RenderedFrame lfdpr = renderFrame(*renderer, scene, profile);
+    const RenderedFrame mvr = renderFrame("mvr", scene, profile);
     EXPECT_GE(renderer->lastFrame().points, 1u);
     EXPECT_LE(renderer->lastFrame().points, 4u) << "one sampling pixel (or its neighbours)";
     for (uint32_t v = 0; v < profile.viewCount; ++v) {
@@ -258,7 +224,7 @@ TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
     const DisplayProfile profile = smallProfile(4, 96, 72);
     const LfdprOptions::Pipeline paper = LfdprOptions::Pipeline::Paper;
     auto reference = player::createLfdprRenderer({.pipeline = paper});
-    const Rendered expected = renderFrames(*reference, scene, profile);
+    const RenderedFrame expected = renderFrame(*reference, scene, profile);
     const uint64_t needed = reference->lastFrame().points;
 
     auto renderer = player::createLfdprRenderer({.pipeline = paper, .initialPointCapacity = 16});
@@ -323,7 +289,7 @@ TEST_F(LfdprRendererTest, AblationSwitchesMoveThePointCount)
     const DisplayProfile profile = smallProfile(4, 160, 120);
     auto points = [&](const Scene& scene, const LfdprOptions& options) {
         auto renderer = player::createLfdprRenderer(options);
-        renderFrames(*renderer, scene, profile);
+        renderFrame(*renderer, scene, profile);
         return renderer->lastFrame().points;
     };
     // LFD-biased sampling: these views' pixels are 4:3 (2.16 x 1.62 mm), so isotropic
@@ -343,8 +309,8 @@ TEST_F(LfdprRendererTest, AblationSwitchesMoveThePointCount)
     EXPECT_LE(splatting, 64u) << "~16 texels, plus conservative edge cells";
     EXPECT_GE(splatting, 16u);
     auto renderer = player::createLfdprRenderer();
-    const Rendered splatted = renderFrames(*renderer, quad, profile);
-    const Rendered mvr = renderNamed("mvr", quad, profile);
+    const RenderedFrame splatted = renderFrame(*renderer, quad, profile);
+    const RenderedFrame mvr = renderFrame("mvr", quad, profile);
     for (uint32_t v = 0; v < profile.viewCount; ++v) {
         const size_t covered = coveredPixels(mvr.views[v]);
         EXPECT_LT(double(coverageDifference(splatted.views[v], mvr.views[v])), 0.01 * double(covered))

@@ -10,17 +10,14 @@
 
 #include "frame.h"
 #include "gpu_scene.h"
-#include "gpu_timer.h"
 #include "image_output.h"
 #include "lfdpr_camera_line.h"
 #include "renderer_lfdpr.h"
 #include "renderer_registry.h"
 #include "shader_library.h"
-#include "view_targets.h"
 
 #include "lfd/framing.h"
 
-#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -96,6 +93,8 @@ TEST(LfdprCameraLine, RefusesCamerasOffTheLine)
 
 class LfdprVisibilityTest : public GlTest {};
 
+// One frame through the shared harness at turntable angle `angle`, plus what an lfdpr
+// renderer reports about it.
 struct Frame {
     std::vector<Image> views;
     player::LfdprFrameInfo info;
@@ -104,21 +103,12 @@ struct Frame {
 
 Frame render(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile, double angle = 0.0)
 {
-    player::GpuScene gpu(scene);
-    const player::FrameSetup frame =
-        player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds), angle, 2.0 * 3.14159265358979);
-    player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
-    player::GpuTimer timer;
-    renderer.render(gpu, frame, targets, timer);
-    timer.finish();
     Frame out;
-    for (uint32_t i = 0; i < profile.viewCount; ++i)
-        out.views.push_back({profile.viewWidth, profile.viewHeight, 4, targets.readView(i)});
+    out.views = renderFrame(renderer, scene, profile, atTurntableAngle(angle)).views;
     if (auto* lfdpr = dynamic_cast<player::LfdprRenderer*>(&renderer)) {
         out.info = lfdpr->lastFrame();
         out.pointsPerTriangle = lfdpr->pointsPerTriangle();
     }
-    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
     return out;
 }
 

@@ -1,5 +1,6 @@
 #include "render_test_util.h"
 
+#include "eia_builder.h"
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
@@ -9,34 +10,60 @@
 #include "lfd/framing.h"
 
 #include <epoxy/gl.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <stdexcept>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <numbers>
 
 namespace lfd::test {
 
-RenderedViews renderScene(const Scene& scene, const std::string& rendererName,
-                          const DisplayProfile& profile, double time, double turntablePeriod)
+RenderRequest atTurntableAngle(double angle)
 {
-    RenderedViews out;
+    return {.time = angle, .turntablePeriod = 2.0 * std::numbers::pi};
+}
+
+RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile,
+                          const RenderRequest& request)
+{
+    const auto start = std::chrono::steady_clock::now();
+    RenderedFrame out;
     player::GpuScene gpu(scene);
-    gpu.update(time);
-    const Framing framing = fitSceneToDisplay(profile, scene.bounds);
-    out.frame = player::makeFrameSetup(profile, framing, time, turntablePeriod);
+    gpu.update(request.time);
+    // The framing lfd-play uses: the scene's bounding sphere at the fill it was baked for.
+    const double fill = scene.settings.framingFill > 0.0f ? double(scene.settings.framingFill) : 1.0;
+    out.setup = player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds, fill), request.time,
+                                       request.turntablePeriod);
     player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
     player::GpuTimer timer;
-    std::unique_ptr<player::Renderer> renderer = player::createRenderer(rendererName);
-    renderer->render(gpu, out.frame, targets, timer);
+    for (int i = 0; i < request.frames; ++i)
+        renderer.render(gpu, out.setup, targets, timer);
+    if (request.eia) {
+        player::EiaBuilder eia(profile);
+        eia.build(targets, player::Reconstruction::None, timer);
+        out.eia = {profile.panelWidth, profile.panelHeight, 4, eia.read()};
+    }
     timer.finish();
     for (const auto& [stage, times] : timer.stages())
-        out.stageMs.emplace_back(stage, times.mean());
+        out.stageMs[stage] = times.mean();
     for (uint32_t i = 0; i < profile.viewCount; ++i)
         out.views.push_back({profile.viewWidth, profile.viewHeight, 4, targets.readView(i)});
-    const GLenum error = glGetError();
-    if (error != GL_NO_ERROR)
-        throw std::runtime_error("GL error " + std::to_string(error) + " while rendering with " + rendererName);
+    for (const auto& [key, value] : renderer.extraStats())
+        out.stats[key] = value;
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << "while rendering with " << renderer.name();
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+RenderedFrame renderFrame(const std::string& rendererName, const Scene& scene, const DisplayProfile& profile,
+                          const RenderRequest& request)
+{
+    const std::unique_ptr<player::Renderer> renderer = player::createRenderer(rendererName);
+    return renderFrame(*renderer, scene, profile, request);
 }
 
 DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height)
@@ -136,6 +163,42 @@ CoverageStats compareCoverage(const player::Image& reference, const player::Imag
             }
         }
     return s;
+}
+
+std::string blankReason(const player::Image& image)
+{
+    const size_t pixels = size_t(image.width) * image.height;
+    if (pixels == 0)
+        return "empty image";
+    std::map<uint32_t, size_t> colours;
+    for (size_t i = 0; i < pixels; ++i) {
+        const uint8_t* p = &image.pixels[i * image.channels];
+        const uint32_t rgb = image.channels >= 3 ? uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 : p[0];
+        ++colours[rgb];
+    }
+    const auto top = std::max_element(colours.begin(), colours.end(),
+                                      [](const auto& a, const auto& b) { return a.second < b.second; });
+    if (double(top->second) <= 0.99 * double(pixels))
+        return "";
+    char text[96];
+    std::snprintf(text, sizeof(text), "blank: %.2f%% of the pixels are (%u, %u, %u)",
+                  100.0 * double(top->second) / double(pixels), top->first & 255u, (top->first >> 8) & 255u,
+                  (top->first >> 16) & 255u);
+    return text;
+}
+
+std::string imageMismatch(const player::Image& written, const player::Image& reference, int tolerance)
+{
+    if (written.width != reference.width || written.height != reference.height ||
+        written.channels != reference.channels)
+        return "size " + std::to_string(written.width) + "x" + std::to_string(written.height) + "x" +
+               std::to_string(written.channels) + ", expected " + std::to_string(reference.width) + "x" +
+               std::to_string(reference.height) + "x" + std::to_string(reference.channels);
+    const int diff = player::maxAbsDiff(written, reference);
+    if (diff > tolerance)
+        return "differs from the reference by up to " + std::to_string(diff) + " (tolerance " +
+               std::to_string(tolerance) + "), RMSE " + std::to_string(player::rmse(written, reference));
+    return blankReason(written);
 }
 
 player::Image boxDownsample(const player::Image& image, uint32_t factor)

@@ -1,25 +1,48 @@
-// Renders an in-memory scene with a named renderer and reads every view back (tests).
+// The one way tests render (and the measurements their comparisons share): a scene uploaded
+// as lfd-play uploads it (player::GpuScene), framed as the baker assumed (the scene's fill,
+// as player::FramePipeline frames it), rendered by a renderer for some frames at one time,
+// every view - and the EIA when asked - read back in image order (row 0 = top).
 #pragma once
 
 #include "frame.h"
 #include "image_output.h"
+#include "renderer.h"
 
 #include "lfd/scene.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
 namespace lfd::test {
 
-struct RenderedViews {
-    player::FrameSetup frame;
-    std::vector<player::Image> views; // RGBA8, image order (row 0 = top)
-    std::vector<std::pair<std::string, double>> stageMs; // GpuTimer stages of the frame
+struct RenderRequest {
+    double time = 0.0;            // animation and turntable time, seconds
+    double turntablePeriod = 0.0; // seconds per revolution; 0: still
+    int frames = 1;               // frames rendered into the same targets; the last is read back
+    bool eia = false;             // also interleave the EIA (no reconstruction) and read it back
 };
 
-// Needs a current GL context. `profile` already carries the view count and size.
-RenderedViews renderScene(const Scene& scene, const std::string& renderer,
-                          const DisplayProfile& profile, double time, double turntablePeriod);
+struct RenderedFrame {
+    player::FrameSetup setup;
+    std::vector<player::Image> views;      // RGBA8, image order, view 0 = leftmost camera
+    player::Image eia;                     // panel size, image order; empty unless asked for
+    std::map<std::string, double> stageMs; // GpuTimer stage -> mean ms over the frames
+    std::map<std::string, double> stats;   // the renderer's extraStats() after the last frame
+    double seconds = 0.0;                  // wall time: upload, frames and read-back
+};
+
+// A frame at turntable angle `angle` (radians): a period of 2 pi seconds makes the time the
+// angle.
+RenderRequest atTurntableAngle(double angle);
+
+// Needs a current GL context (GlTest); a GL error during the frame fails the test.
+// `profile` already carries the view count and size.
+RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile,
+                          const RenderRequest& request = {});
+// Same with a renderer built by name through the registry (as lfd-play builds it).
+RenderedFrame renderFrame(const std::string& renderer, const Scene& scene, const DisplayProfile& profile,
+                          const RenderRequest& request = {});
 
 // The prototype profile with small views, for fast tests.
 DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height);
@@ -34,6 +57,16 @@ double maskedRmse(const player::Image& a, const player::Image& b, const std::vec
 // SSIM (luma) over the bounding box of `mask`, grown by the 5-pixel SSIM window radius,
 // so a mostly empty background does not dilute differences; 1 for an empty mask.
 double ssimOverMaskBox(const player::Image& a, const player::Image& reference, const std::vector<uint8_t>& mask);
+
+// ---- Checks of an image someone else produced (a tool's output file) ------------------
+
+// Why `image` shows nothing, or "" when it shows something: blank when more than 99% of its
+// pixels have one colour (all black, all background, any flat fill).
+std::string blankReason(const player::Image& image);
+// Why `written` is not `reference`, or "" when it is: different sizes, or a channel that
+// differs by more than `tolerance` (0..255); then blankReason(written), so two equally
+// blank images (a broken renderer on both sides) fail too.
+std::string imageMismatch(const player::Image& written, const player::Image& reference, int tolerance);
 
 // factor x factor box filter of RGBA8 bytes (downsamples a supersampled reference render).
 player::Image boxDownsample(const player::Image& image, uint32_t factor);

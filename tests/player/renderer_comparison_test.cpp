@@ -10,18 +10,13 @@
 
 #include "bake.h"
 
-#include "eia_builder.h"
-#include "gpu_scene.h"
-#include "gpu_timer.h"
 #include "image_output.h"
 #include "renderer_registry.h"
 #include "renderer_lfdpr.h"
-#include "view_targets.h"
 
 #include "lfd/display_profile.h"
 #include "lfd/framing.h"
 
-#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -164,54 +159,16 @@ Scene texturedQuadScene(Texture texture)
 
 // ---- Rendering ------------------------------------------------------------------------
 
-struct Rendered {
-    std::vector<Image> views; // image order
-    Image eia;                // empty unless asked for
-    uint64_t points = 0;      // lfdpr's "points" stat (0 for raster renderers)
-};
+// Every frame here is one still frame (time 0) of the shared harness (renderFrame); with
+// the EIA where `withEia`.
+using Rendered = RenderedFrame;
 
-// Renders one frame (time 0, turntable still unless `period` > 0) of `scene` with
-// `renderer` and reads every view back; the EIA too when `withEia`.
-Rendered render(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile,
-                bool withEia = false, double time = 0.0, double period = 0.0)
-{
-    player::GpuScene gpu(scene);
-    gpu.update(time);
-    const Framing framing = fitSceneToDisplay(profile, scene.bounds);
-    const player::FrameSetup frame = player::makeFrameSetup(profile, framing, time, period);
-    player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
-    player::GpuTimer timer;
-    renderer.render(gpu, frame, targets, timer);
-    Rendered out;
-    if (withEia) {
-        player::EiaBuilder eia(profile);
-        eia.build(targets, player::Reconstruction::None, timer);
-        out.eia = {profile.panelWidth, profile.panelHeight, 4, eia.read()};
-    }
-    timer.finish();
-    for (uint32_t i = 0; i < profile.viewCount; ++i)
-        out.views.push_back({profile.viewWidth, profile.viewHeight, 4, targets.readView(i)});
-    for (const auto& [key, value] : renderer.extraStats())
-        if (key == "points")
-            out.points = uint64_t(value);
-    const GLenum error = glGetError();
-    if (error != GL_NO_ERROR)
-        throw std::runtime_error("GL error " + std::to_string(error) + " while rendering with " + renderer.name());
-    return out;
-}
-
-Rendered render(const std::string& name, const Scene& scene, const DisplayProfile& profile, bool withEia = false,
-                double time = 0.0, double period = 0.0)
-{
-    // createRenderer, not createLfdprRenderer: "lfdpr" must be registered by name.
-    std::unique_ptr<player::Renderer> renderer = player::createRenderer(name);
-    return render(*renderer, scene, profile, withEia, time, period);
-}
+RenderRequest withEia() { return {.eia = true}; }
 
 uint64_t lfdprPoints(const player::LfdprOptions& options, const Scene& scene, const DisplayProfile& profile)
 {
     std::unique_ptr<player::LfdprRenderer> renderer = player::createLfdprRenderer(options);
-    render(*renderer, scene, profile);
+    renderFrame(*renderer, scene, profile);
     EXPECT_FALSE(renderer->lastFrame().overflowed) << "points were dropped: the count is not trustworthy";
     return renderer->lastFrame().points;
 }
@@ -237,8 +194,8 @@ void expectSameBackground(const Image& a, const Image& reference, const std::str
 void expectSameCoverage(const Scene& scene, const std::string& label)
 {
     const DisplayProfile profile = comparisonProfile(5, 160, 120);
-    const Rendered mvr = render("mvr", scene, profile);
-    const Rendered lfdpr = render("lfdpr", scene, profile);
+    const Rendered mvr = renderFrame("mvr", scene, profile);
+    const Rendered lfdpr = renderFrame("lfdpr", scene, profile);
     CoverageStats total;
     double worstView = 0.0;
     for (size_t v = 0; v < mvr.views.size(); ++v) {
@@ -250,9 +207,9 @@ void expectSameCoverage(const Scene& scene, const std::string& label)
     }
     std::printf("[ numbers  ] coverage %s: %zu covered px (%zu interior) over %zu views, %u points; "
                 "hole rate %.4f%% (worst view %.4f%%), extra-coverage rate %.4f%%\n",
-                label.c_str(), total.covered, total.interior, mvr.views.size(), unsigned(lfdpr.points),
+                label.c_str(), total.covered, total.interior, mvr.views.size(), unsigned(lfdpr.stats.at("points")),
                 100.0 * total.holeRate(), 100.0 * worstView, 100.0 * total.extraRate());
-    EXPECT_GT(lfdpr.points, 0u);
+    EXPECT_GT(lfdpr.stats.at("points"), 0.0);
     EXPECT_LT(total.holeRate(), 0.005) << label;
     EXPECT_LT(worstView, 0.01) << label << ": one view has holes";
     EXPECT_LT(total.extraRate(), 0.005) << label;
@@ -328,12 +285,12 @@ const DisplayProfile& agreementProfile()
 
 Agreement lfdprAgreement(const Scene& scene, const std::string& label, const std::string& outName)
 {
-    const Rendered mvr = render("mvr", scene, agreementProfile(), true);
-    const Rendered lfdpr = render("lfdpr", scene, agreementProfile(), true);
+    const Rendered mvr = renderFrame("mvr", scene, agreementProfile(), withEia());
+    const Rendered lfdpr = renderFrame("lfdpr", scene, agreementProfile(), withEia());
     expectSameBackground(lfdpr.views[0], mvr.views[0], label + " view 0");
     expectSameBackground(lfdpr.eia, mvr.eia, label + " EIA");
     const Agreement a = agreement(lfdpr, mvr);
-    printAgreement(label + " (lfdpr vs mvr, " + std::to_string(lfdpr.points) + " points)", a);
+    printAgreement(label + " (lfdpr vs mvr, " + std::to_string(uint64_t(lfdpr.stats.at("points"))) + " points)", a);
     // Images to look at when a threshold trips.
     const std::filesystem::path dir = testOutputDir("renderer_comparison_" + outName);
     const size_t centre = mvr.views.size() / 2;
@@ -350,7 +307,8 @@ Agreement brokenAgreement(const Scene& scene, void (*breakScene)(Scene&))
 {
     Scene broken = scene;
     breakScene(broken);
-    return agreement(render("mvr", broken, agreementProfile(), true), render("mvr", scene, agreementProfile(), true));
+    return agreement(renderFrame("mvr", broken, agreementProfile(), withEia()),
+                     renderFrame("mvr", scene, agreementProfile(), withEia()));
 }
 
 // Textured scene: test_scenes' cube, red sphere and default-material box with a coarser
@@ -513,7 +471,7 @@ TEST_F(RendererComparisonTest, MultiviewMipmappingLowersErrorOnMinifiedTexture)
     const Scene scene = texturedQuadScene(checkerTexture(1024, 1, {250, 250, 250, 255}, {10, 10, 10, 255}, false));
     const DisplayProfile profile = comparisonProfile(4, 160, 120);
     const DisplayProfile fine = comparisonProfile(4, 640, 480);
-    const Rendered reference4x = render("mvr", scene, fine);
+    const Rendered reference4x = renderFrame("mvr", scene, fine);
     // Multiview mipmapping is the paper pipeline's; the visibility pipeline filters every
     // texture per pixel (textureGrad), so it must do at least as well as the paper's.
     player::LfdprOptions withMip, withoutMip, visibility;
@@ -522,10 +480,10 @@ TEST_F(RendererComparisonTest, MultiviewMipmappingLowersErrorOnMinifiedTexture)
     auto lfdprWith = player::createLfdprRenderer(withMip);
     auto lfdprWithout = player::createLfdprRenderer(withoutMip);
     auto lfdprVisibility = player::createLfdprRenderer(visibility);
-    const Rendered a = render(*lfdprWith, scene, profile);
-    const Rendered b = render(*lfdprWithout, scene, profile);
-    const Rendered c = render(*lfdprVisibility, scene, profile);
-    const Rendered mvr = render("mvr", scene, profile);
+    const Rendered a = renderFrame(*lfdprWith, scene, profile);
+    const Rendered b = renderFrame(*lfdprWithout, scene, profile);
+    const Rendered c = renderFrame(*lfdprVisibility, scene, profile);
+    const Rendered mvr = renderFrame("mvr", scene, profile);
 
     double errWith = 0.0, errWithout = 0.0, errMvr = 0.0, errVisibility = 0.0;
     for (size_t v = 0; v < a.views.size(); ++v) {

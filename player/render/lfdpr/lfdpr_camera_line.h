@@ -6,6 +6,7 @@
 #pragma once
 
 #include "frame.h"
+#include "lfdpr_bindings_gpu.h"
 
 #include <glm/glm.hpp>
 
@@ -13,18 +14,11 @@
 
 namespace lfd::player {
 
-inline constexpr uint32_t kLfdprMaxViews = 256; // LFDPR_MAX_VIEWS
+inline constexpr uint32_t kLfdprMaxViews = lfdpr_bindings::kMaxViews;
 
-// std140 mirror of LfdprCameraLineBlock (shaders/lfdpr_bindings.glsl).
-struct LfdprCameraLineGpu {
-    glm::vec4 row0;          // clip x row of view 0 (scene space)
-    glm::vec4 row0PerOffset; // d row0 / d offset
-    glm::vec4 row1;          // clip y row, every view
-    glm::vec4 row3;          // clip w row, every view
-    glm::vec4 wRange;        // near w, far w, 0, 0
-    glm::vec4 viewOffsets[kLfdprMaxViews / 4]; // view i: component i % 4 of element i / 4
-};
-static_assert(sizeof(LfdprCameraLineGpu) == 1104);
+// The camera-line uniform block (LfdprCameraLineBlock), generated from
+// shaders/lfdpr_bindings.glsl: view i's offset is component i % 4 of viewOffsets[i / 4].
+using lfdpr_bindings::LfdprCameraLineGpu;
 
 struct LfdprCameraLine {
     LfdprCameraLineGpu gpu;

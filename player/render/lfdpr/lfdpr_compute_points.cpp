@@ -25,29 +25,15 @@ bool alphaTested(const GpuScene& scene, int32_t material)
 
 LfdprComputePointGeneration::LfdprComputePointGeneration()
 {
-    try {
-        for (int alpha = 0; alpha < 2; ++alpha)
-            for (int large = 0; large < 2; ++large) {
-                std::vector<std::string> defines;
-                if (alpha)
-                    defines.emplace_back("LFDPR_ALPHA_TEST 1");
-                if (large)
-                    defines.emplace_back("LFDPR_LARGE_PASS 1");
-                programs_[alpha][large] = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, defines);
-            }
-    } catch (...) {
-        for (const auto& pair : programs_)
-            for (unsigned program : pair)
-                glDeleteProgram(program);
-        throw;
-    }
-}
-
-LfdprComputePointGeneration::~LfdprComputePointGeneration()
-{
-    for (const auto& pair : programs_)
-        for (unsigned program : pair)
-            glDeleteProgram(program);
+    for (int alpha = 0; alpha < 2; ++alpha)
+        for (int large = 0; large < 2; ++large) {
+            std::vector<std::string> defines;
+            if (alpha)
+                defines.emplace_back("LFDPR_ALPHA_TEST 1");
+            if (large)
+                defines.emplace_back("LFDPR_LARGE_PASS 1");
+            programs_[alpha][large] = gl::Program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, defines));
+        }
 }
 
 void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<uint32_t>& largeBase,
@@ -92,7 +78,7 @@ void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<u
         glUseProgram(program);
         setDrawUniforms(program, draws[d], d);
         scene.bindMaterialTextures(draws[d].material);
-        glDispatchComputeIndirect(GLintptr(d) * 4 * sizeof(GLuint));
+        glDispatchComputeIndirect(GLintptr(d) * GLintptr(k.largeDispatchBytes));
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

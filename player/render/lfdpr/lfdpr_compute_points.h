@@ -4,6 +4,8 @@
 // list and its per-draw dispatch words, counters) and the frame constants.
 #pragma once
 
+#include "gl_handles.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -14,9 +16,6 @@ class GpuScene;
 class LfdprComputePointGeneration {
 public:
     LfdprComputePointGeneration(); // builds the programs (per pass, with and without alpha test)
-    ~LfdprComputePointGeneration();
-    LfdprComputePointGeneration(const LfdprComputePointGeneration&) = delete;
-    LfdprComputePointGeneration& operator=(const LfdprComputePointGeneration&) = delete;
 
     // largeBase[d]: first slot of draw d in the large-triangle list (its triangles before
     // it); largeDispatch: the per-draw indirect dispatch words (uvec4 each, cleared to
@@ -26,7 +25,7 @@ public:
 private:
     // [alpha test][large pass]: draws of alpha-masked materials use the programs with the
     // alpha test (LFDPR_ALPHA_TEST), all others the ones without.
-    unsigned programs_[2][2] = {{0, 0}, {0, 0}};
+    gl::Program programs_[2][2];
 };
 
 } // namespace lfd::player

@@ -1,7 +1,13 @@
-// LFDPR binding points, locations and sizes, read once from the embedded
-// shaders/lfdpr_bindings.glsl (the definition), so C++ never writes a number twice and the
-// shader source is parsed once per renderer, not per frame.
+// LFDPR binding points, uniform locations, options and sizes in one place for the
+// renderers. Every value comes from the C++ side generated from shaders/lfdpr_bindings.glsl
+// at build time (lfdpr_bindings_gpu.h, namespace lfdpr_bindings), and every size is sizeof
+// of a generated struct the layout test checks member by member against the driver; so
+// no number is written twice and nothing parses shader text at run time.
 #pragma once
+
+#include "lfdpr_bindings_gpu.h"
+
+#include <glm/glm.hpp>
 
 #include <cstdint>
 
@@ -9,19 +15,49 @@ namespace lfd::player {
 
 struct LfdprConstants {
     // Paper pipeline and shared.
-    unsigned ssboPoints, ssboCounters, ssboViewDepth, ssboViewColor, uboFrame, imageViews;
-    int locPass;
-    uint32_t groupSize;
+    unsigned ssboPoints = lfdpr_bindings::kSsboPoints, ssboTriangles = lfdpr_bindings::kSsboTriangles,
+             ssboSampling = lfdpr_bindings::kSsboSampling, ssboCounters = lfdpr_bindings::kSsboCounters,
+             ssboViewDepth = lfdpr_bindings::kSsboViewDepth, ssboViewColor = lfdpr_bindings::kSsboViewColor,
+             ssboViewInverse = lfdpr_bindings::kSsboViewInverse, uboFrame = lfdpr_bindings::kUboFrame,
+             imageViews = lfdpr_bindings::kImageViews;
+    int locPass = lfdpr_bindings::kLocPass, locRecordBase = lfdpr_bindings::kLocRecordBase,
+        locFirstTriangle = lfdpr_bindings::kLocFirstTriangle;
+    uint32_t groupSize = lfdpr_bindings::kGroupSize; // local_size_x of the point-indexed passes
+    uint32_t tileSize = lfdpr_bindings::kTileSize;   // the paper pipeline's sampling viewport
+    uint32_t pointBytes = sizeof(lfdpr_bindings::PointGpu);
+    uint32_t triangleRecordBytes = sizeof(lfdpr_bindings::TriangleRecordGpu);
+    uint32_t triangleSamplingBytes = sizeof(lfdpr_bindings::TriangleSamplingGpu);
+    uint32_t counterBytes = sizeof(lfdpr_bindings::LfdprCountersGpu);
+    uint32_t viewInverseBytes = sizeof(glm::mat4); // ViewInverse: mat4 sceneFromClip[]
     // Visibility pipeline.
-    unsigned ssboRecords, ssboIndices, ssboPositions, ssboNormals, ssboTangents, ssboUvs, ssboDraws;
-    unsigned ssboLarge, ssboLargeDispatch, ssboVisCounters, ssboMaterialIds, ssboShadeWork, ssboMaterialGroups;
-    unsigned uboCameraLine;
-    int locDraw, locTriangles, locShadeMaterial, locLargeBase, locShadeGroup, locShadeGroups;
-    uint32_t shadeTile, maxShadeGroups, shadeDispatchWidth;
-    uint32_t recordBytes, compactPointBytes, visCounterBytes;
-    uint32_t optionLfdSampling, optionTextureSplatting, optionMvMipmapping;
+    unsigned ssboRecords = lfdpr_bindings::kSsboRecords, ssboIndices = lfdpr_bindings::kSsboIndices,
+             ssboPositions = lfdpr_bindings::kSsboPositions, ssboNormals = lfdpr_bindings::kSsboNormals,
+             ssboTangents = lfdpr_bindings::kSsboTangents, ssboUvs = lfdpr_bindings::kSsboUvs,
+             ssboDraws = lfdpr_bindings::kSsboDraws;
+    unsigned ssboLarge = lfdpr_bindings::kSsboLarge, ssboLargeDispatch = lfdpr_bindings::kSsboLargeDispatch,
+             ssboVisCounters = lfdpr_bindings::kSsboVisCounters, ssboMaterialIds = lfdpr_bindings::kSsboMaterialIds,
+             ssboShadeWork = lfdpr_bindings::kSsboShadeWork, ssboMaterialGroups = lfdpr_bindings::kSsboMaterialGroups;
+    unsigned uboCameraLine = lfdpr_bindings::kUboCameraLine;
+    int locDraw = lfdpr_bindings::kLocDraw, locTriangles = lfdpr_bindings::kLocTriangles,
+        locShadeMaterial = lfdpr_bindings::kLocShadeMaterial, locLargeBase = lfdpr_bindings::kLocLargeBase,
+        locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups;
+    // Shading in tiles per shading group (lfdpr_classify.comp, lfdpr_shade.comp).
+    uint32_t shadeTile = lfdpr_bindings::kShadeTile, maxShadeGroups = lfdpr_bindings::kMaxShadeGroups,
+             shadeDispatchWidth = lfdpr_bindings::kShadeDispatchWidth;
+    uint32_t shadeCounterBytes = sizeof(lfdpr_bindings::LfdprShadeCountersGpu);
+    uint32_t recordBytes = sizeof(lfdpr_bindings::LfdprRecordGpu);
+    uint32_t compactPointBytes = sizeof(lfdpr_bindings::LfdprPointGpu);
+    uint32_t visCounterBytes = sizeof(lfdpr_bindings::LfdprVisCountersGpu);
+    uint32_t largeDispatchBytes = sizeof(glm::uvec4); // LargeDispatch: uvec4 per draw
+    uint32_t optionLfdSampling = lfdpr_bindings::kOptionLfdSampling,
+             optionTextureSplatting = lfdpr_bindings::kOptionTextureSplatting,
+             optionMvMipmapping = lfdpr_bindings::kOptionMvMipmapping;
 
-    static const LfdprConstants& get(); // parsed on first use
+    static const LfdprConstants& get()
+    {
+        static constexpr LfdprConstants constants{};
+        return constants;
+    }
 };
 
 } // namespace lfd::player

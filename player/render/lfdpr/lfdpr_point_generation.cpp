@@ -1,6 +1,7 @@
 #include "lfdpr_point_generation.h"
 
 #include "gpu_scene.h"
+#include "lfdpr_constants.h"
 #include "scene_bindings.h"
 #include "shader_library.h"
 
@@ -12,12 +13,6 @@
 #include <limits>
 
 namespace lfd::player {
-
-namespace {
-
-long define(const char* name) { return gl::shaderDefineValue("lfdpr_bindings.glsl", name); }
-
-} // namespace
 
 std::array<glm::dvec4, 6> unionFrustumPlanesDisplay(const FrameSetup& frame, double slackMm)
 {
@@ -94,31 +89,24 @@ LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, ui
 }
 
 LfdprPointGeneration::LfdprPointGeneration()
-{
-    program_ = gl::buildProgram({{GL_VERTEX_SHADER, "lfdpr_points.vert"},
+    : program_(gl::buildProgram({{GL_VERTEX_SHADER, "lfdpr_points.vert"},
                                  {GL_GEOMETRY_SHADER, "lfdpr_points.geom"},
-                                 {GL_FRAGMENT_SHADER, "lfdpr_points.frag"}});
-    // The C++ mirror of the frame block must match the driver's layout.
+                                 {GL_FRAGMENT_SHADER, "lfdpr_points.frag"}})),
+      framebuffer_(gl::createFramebuffer())
+{
+    // The generated frame block must have the driver's size here too (the layout test checks
+    // it member by member on the test driver; this guards the driver actually running).
     const GLuint block = glGetUniformBlockIndex(program_, "LfdprFrameBlock");
     GLint size = 0;
     if (block != GL_INVALID_INDEX)
         glGetActiveUniformBlockiv(program_, block, GL_UNIFORM_BLOCK_DATA_SIZE, &size);
-    if (size != GLint(sizeof(LfdprFrameGpu))) {
-        glDeleteProgram(program_);
+    if (size != GLint(sizeof(LfdprFrameGpu)))
         throw gl::GlError("shaders/lfdpr_bindings.glsl: LfdprFrameBlock is " + std::to_string(size) +
                           " bytes, C++ LfdprFrameGpu is " + std::to_string(sizeof(LfdprFrameGpu)));
-    }
     // The sampling viewport: a framebuffer with no attachments, LFDPR_TILE_SIZE square.
-    const GLint tile = GLint(define("LFDPR_TILE_SIZE"));
-    glCreateFramebuffers(1, &framebuffer_);
+    const GLint tile = GLint(LfdprConstants::get().tileSize);
     glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_WIDTH, tile);
     glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, tile);
-}
-
-LfdprPointGeneration::~LfdprPointGeneration()
-{
-    glDeleteFramebuffers(1, &framebuffer_);
-    glDeleteProgram(program_);
 }
 
 uint64_t LfdprPointGeneration::recordCount(const GpuScene& scene)
@@ -131,9 +119,8 @@ uint64_t LfdprPointGeneration::recordCount(const GpuScene& scene)
 
 void LfdprPointGeneration::run(const GpuScene& scene) const
 {
-    const GLint tile = GLint(define("LFDPR_TILE_SIZE"));
-    const GLint locRecordBase = GLint(define("LFDPR_LOC_RECORD_BASE"));
-    const GLint locFirstTriangle = GLint(define("LFDPR_LOC_FIRST_TRIANGLE"));
+    const LfdprConstants& k = LfdprConstants::get();
+    const GLint tile = GLint(k.tileSize);
 
     // Pipeline state: no depth, no culling (the GS decides facing), no raster discard.
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
@@ -150,8 +137,8 @@ void LfdprPointGeneration::run(const GpuScene& scene) const
     for (const DrawItem& draw : scene.draws()) {
         glProgramUniform1ui(program_, bindings::kLocNode, draw.node);
         glProgramUniform1ui(program_, bindings::kLocMaterial, scene.gpuMaterialIndex(draw.material));
-        glProgramUniform1ui(program_, locRecordBase, recordBase);
-        glProgramUniform1ui(program_, locFirstTriangle, draw.firstIndex / 3);
+        glProgramUniform1ui(program_, k.locRecordBase, recordBase);
+        glProgramUniform1ui(program_, k.locFirstTriangle, draw.firstIndex / 3);
         scene.bindMaterialTextures(draw.material);
         glDrawElements(GL_TRIANGLES, GLsizei(draw.indexCount), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(size_t(draw.firstIndex) * sizeof(uint32_t)));

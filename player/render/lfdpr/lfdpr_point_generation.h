@@ -6,6 +6,8 @@
 #pragma once
 
 #include "frame.h"
+#include "gl_handles.h"
+#include "lfdpr_bindings_gpu.h"
 
 #include <glm/glm.hpp>
 
@@ -16,19 +18,8 @@ namespace lfd::player {
 
 class GpuScene;
 
-// std140 mirror of LfdprFrameBlock in shaders/lfdpr_bindings.glsl (208 bytes; the size is
-// checked against the driver's block size when the program is built).
-struct LfdprFrameGpu {
-    glm::vec4 displayX;     // xyz unit display x in scene space, w view pixel width (scene units)
-    glm::vec4 displayY;     // xyz unit display y, w view pixel height (scene units)
-    glm::vec4 displayZ;     // xyz unit screen normal (towards the viewer)
-    glm::vec4 screenCenter; // xyz screen centre (scene)
-    glm::vec4 viewLine;     // xyz a point of the viewing line (camera 0's eye, scene)
-    glm::vec4 planes[6];    // hull of the union of the view frusta (scene), inside: dot >= 0
-    glm::uvec4 counts;      // view count, point capacity, options bits, 0
-    glm::vec4 viewSize;     // view width, height (pixels), 0, 0
-};
-static_assert(sizeof(LfdprFrameGpu) == 208);
+// The frame constants block (LfdprFrameBlock), generated from shaders/lfdpr_bindings.glsl.
+using lfdpr_bindings::LfdprFrameGpu;
 
 // The six planes (display space, inside: dot(plane, (p, 1)) >= 0) of a convex polytope
 // containing every view frustum of `frame`: near and far (the views share them), and for
@@ -45,11 +36,8 @@ LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, ui
 class LfdprPointGeneration {
 public:
     LfdprPointGeneration(); // builds the program and the attachment-less framebuffer
-    ~LfdprPointGeneration();
-    LfdprPointGeneration(const LfdprPointGeneration&) = delete;
-    LfdprPointGeneration& operator=(const LfdprPointGeneration&) = delete;
 
-    unsigned program() const { return program_; }
+    unsigned program() const { return program_.get(); }
     // Number of triangle records the scene needs (sum over draws; instanced meshes count
     // once per node).
     static uint64_t recordCount(const GpuScene& scene);
@@ -57,8 +45,8 @@ public:
     void run(const GpuScene& scene) const;
 
 private:
-    unsigned program_ = 0;
-    unsigned framebuffer_ = 0;
+    gl::Program program_;
+    gl::Framebuffer framebuffer_;
 };
 
 } // namespace lfd::player

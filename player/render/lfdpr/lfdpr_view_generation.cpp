@@ -1,57 +1,38 @@
 #include "lfdpr_view_generation.h"
 
+#include "lfdpr_constants.h"
+#include "lfdpr_counters.h"
 #include "shader_library.h"
 #include "view_targets.h"
 
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <string>
 #include <vector>
 
 namespace lfd::player {
 
-namespace {
-
-long define(const char* name) { return gl::shaderDefineValue("lfdpr_bindings.glsl", name); }
-
-} // namespace
-
 LfdprViewGeneration::LfdprViewGeneration(bool int64) : int64_(int64)
 {
     const std::vector<std::string> defines =
         int64 ? std::vector<std::string>{"LFDPR_INT64 1"} : std::vector<std::string>{};
-    dispatchProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}});
-    splatProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_splat.comp"}}, defines);
-    resolveProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_resolve.comp"}}, defines);
-}
-
-LfdprViewGeneration::~LfdprViewGeneration()
-{
-    const GLuint buffers[] = {depth_, color_};
-    glDeleteBuffers(2, buffers);
-    glDeleteProgram(dispatchProgram_);
-    glDeleteProgram(splatProgram_);
-    glDeleteProgram(resolveProgram_);
+    dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}}));
+    splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_splat.comp"}}, defines));
+    resolveProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_resolve.comp"}}, defines));
 }
 
 void LfdprViewGeneration::resize(uint32_t viewCount, uint32_t width, uint32_t height)
 {
     if (viewCount == views_ && width == width_ && height == height_ && depth_)
         return;
-    const GLuint old[] = {depth_, color_};
-    glDeleteBuffers(2, old);
     views_ = viewCount;
     width_ = width;
     height_ = height;
     const size_t pixels = std::max<size_t>(size_t(viewCount) * width * height, 1);
-    glCreateBuffers(1, &depth_);
-    glNamedBufferStorage(depth_, GLsizeiptr(pixels * (int64_ ? 8 : 4)), nullptr, 0);
-    color_ = 0;
-    if (!int64_) {
-        glCreateBuffers(1, &color_);
-        glNamedBufferStorage(color_, GLsizeiptr(pixels * 4), nullptr, 0);
-    }
+    depth_ = gl::createBuffer(pixels * (int64_ ? sizeof(uint64_t) : sizeof(uint32_t)));
+    color_ = int64_ ? gl::Buffer() : gl::createBuffer(pixels * sizeof(uint32_t));
 }
 
 size_t LfdprViewGeneration::viewBufferBytes() const { return size_t(views_) * width_ * height_ * 8; }
@@ -68,19 +49,21 @@ void LfdprViewGeneration::splat(unsigned counters) const
     glClearNamedBufferData(depth_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
     if (color_)
         glClearNamedBufferData(color_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_VIEW_DEPTH")), depth_);
+    const LfdprConstants& k = LfdprConstants::get();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (color_)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_VIEW_COLOR")), color_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, color_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
-    // Step 3: splat, one pass (64-bit) or depth then colour (32-bit).
-    const GLintptr dispatchOffset = 4 * sizeof(GLuint);
+    // Step 3: splat, one pass (64-bit) or depth then colour (32-bit), with the arguments
+    // lfdpr_dispatch.comp wrote into the counter block.
+    const GLintptr dispatchOffset = offsetof(LfdprCountersGpu, dispatchX);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters);
     glUseProgram(splatProgram_);
     const int passes = int64_ ? 1 : 2;
     for (int pass = 0; pass < passes; ++pass) {
         if (!int64_)
-            glProgramUniform1ui(splatProgram_, GLint(define("LFDPR_LOC_PASS")), GLuint(pass));
+            glProgramUniform1ui(splatProgram_, k.locPass, GLuint(pass));
         glDispatchComputeIndirect(dispatchOffset);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
@@ -91,9 +74,9 @@ void LfdprViewGeneration::splat(unsigned counters) const
 void LfdprViewGeneration::resolve(ViewTargets& targets) const
 {
     glUseProgram(resolveProgram_);
-    glBindImageTexture(GLuint(define("LFDPR_IMAGE_VIEWS")), targets.colorArray(), 0, GL_TRUE, 0,
-                       GL_WRITE_ONLY, GL_RGBA8);
-    glDispatchCompute((width_ + 7) / 8, (height_ + 7) / 8, views_);
+    glBindImageTexture(LfdprConstants::get().imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       GL_RGBA8);
+    gl::dispatchCovering(resolveProgram_, width_, height_, views_); // one invocation per view pixel
     // The EIA pass samples the array, read-back copies it.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);

@@ -4,6 +4,8 @@
 // (shaders/lfdpr_dispatch.comp), the splat pass(es) and the resolve.
 #pragma once
 
+#include "gl_handles.h"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -16,9 +18,6 @@ public:
     // int64: use the 64-bit atomicMin path (needs GL_NV_shader_atomic_int64 and
     // GL_ARB_gpu_shader_int64; its shaders are only compiled then).
     explicit LfdprViewGeneration(bool int64);
-    ~LfdprViewGeneration();
-    LfdprViewGeneration(const LfdprViewGeneration&) = delete;
-    LfdprViewGeneration& operator=(const LfdprViewGeneration&) = delete;
 
     bool int64() const { return int64_; }
     // (Re)allocates the view buffers for N views of W x H (no-op when unchanged).
@@ -34,8 +33,8 @@ public:
 
 private:
     bool int64_;
-    unsigned dispatchProgram_ = 0, splatProgram_ = 0, resolveProgram_ = 0;
-    unsigned depth_ = 0, color_ = 0; // 64-bit path: depth_ holds the words, color_ unused
+    gl::Program dispatchProgram_, splatProgram_, resolveProgram_;
+    gl::Buffer depth_, color_; // 64-bit path: depth_ holds the words, color_ stays empty
     uint32_t views_ = 0, width_ = 0, height_ = 0;
 };
 

@@ -6,11 +6,13 @@
 #include "frame_stages.h"
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
+#include "gl_handles.h"
 #include "gpu_timer.h"
+#include "lfdpr_constants.h"
+#include "lfdpr_counters.h"
 #include "lfdpr_point_generation.h"
 #include "lfdpr_view_generation.h"
 #include "scene_bindings.h"
-#include "shader_library.h"
 #include "view_targets.h"
 
 #include <epoxy/gl.h>
@@ -24,41 +26,23 @@ namespace lfd::player {
 
 namespace {
 
-long define(const char* name) { return gl::shaderDefineValue("lfdpr_bindings.glsl", name); }
-
-// A device-local buffer of `bytes` (at least 16, so bindings stay valid).
-unsigned makeBuffer(size_t bytes, GLbitfield flags = 0)
-{
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr, flags);
-    return buffer;
-}
-
 class LfdprRendererImpl final : public LfdprRenderer {
 public:
     explicit LfdprRendererImpl(const LfdprOptions& options)
-        : options_(options), views_(lfdprUseInt64(options.atomics))
+        : options_(options), k_(LfdprConstants::get()), views_(lfdprUseInt64(options.atomics))
     {
-        pointBytes_ = uint32_t(define("LFDPR_POINT_BYTES"));
         // The largest point buffer one SSBO binding can address, and the user's cap.
         GLint64 maxBlockBytes = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
         maxPointCapacity_ = uint32_t(std::min<uint64_t>(
             std::max<uint32_t>(options.maxPointCapacity, 1),
-            std::max<uint64_t>(uint64_t(std::max<GLint64>(maxBlockBytes, 0)) / pointBytes_, 1)));
+            std::max<uint64_t>(uint64_t(std::max<GLint64>(maxBlockBytes, 0)) / k_.pointBytes, 1)));
         pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
-        points_ = makeBuffer(size_t(pointCapacity_) * pointBytes_);
-        counters_ = makeBuffer(size_t(define("LFDPR_COUNTER_BYTES")), GL_DYNAMIC_STORAGE_BIT);
-        frameUbo_ = makeBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
+        points_ = gl::createBuffer(size_t(pointCapacity_) * k_.pointBytes);
+        counters_ = gl::createBuffer(k_.counterBytes, GL_DYNAMIC_STORAGE_BIT);
+        frameUbo_ = gl::createBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
         info_.int64Atomics = views_.int64();
-        info_.bytesPerPoint = pointBytes_;
-    }
-
-    ~LfdprRendererImpl() override
-    {
-        const GLuint buffers[] = {points_, counters_, frameUbo_, records_, sampling_, viewInverse_};
-        glDeleteBuffers(6, buffers);
+        info_.bytesPerPoint = k_.pointBytes;
     }
 
     std::string name() const override { return "lfdpr-paper"; }
@@ -67,16 +51,14 @@ public:
 
     std::vector<uint32_t> pointsPerTriangle() const override
     {
-        // PointGpu.triangle (offset 12) is the record: draw record base + primitive.
+        // PointGpu.triangle is the record: draw record base + primitive.
         std::vector<uint32_t> counts(size_t(recordCapacity_), 0);
-        std::vector<uint32_t> words(size_t(info_.pointsStored) * (pointBytes_ / 4));
-        if (!words.empty())
-            glGetNamedBufferSubData(points_, 0, GLsizeiptr(words.size() * 4), words.data());
-        for (size_t i = 0; i < info_.pointsStored; ++i) {
-            const uint32_t record = words[i * (pointBytes_ / 4) + 3];
-            if (record < counts.size())
-                ++counts[record];
-        }
+        std::vector<lfdpr_bindings::PointGpu> points(size_t(info_.pointsStored));
+        if (!points.empty())
+            glGetNamedBufferSubData(points_, 0, GLsizeiptr(points.size() * sizeof(points[0])), points.data());
+        for (const lfdpr_bindings::PointGpu& point : points)
+            if (point.triangle < counts.size())
+                ++counts[point.triangle];
         return counts;
     }
 
@@ -86,9 +68,9 @@ public:
         // Step 1: buffers sized for this scene, these views, and the last frame's overflow.
         prepareBuffers(scene, frame, targets);
         uniforms_.upload(frame);
-        const uint32_t options = (options_.lfdBiasedSampling ? uint32_t(define("LFDPR_OPTION_LFD_SAMPLING")) : 0u) |
-                                 (options_.textureSplatting ? uint32_t(define("LFDPR_OPTION_TEXTURE_SPLATTING")) : 0u) |
-                                 (options_.multiviewMipmapping ? uint32_t(define("LFDPR_OPTION_MV_MIPMAPPING")) : 0u);
+        const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
+                                 (options_.textureSplatting ? k_.optionTextureSplatting : 0u) |
+                                 (options_.multiviewMipmapping ? k_.optionMvMipmapping : 0u);
         const LfdprFrameGpu constants = makeLfdprFrame(frame, pointCapacity_, options);
         glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
         uploadViewInverses(frame);
@@ -140,8 +122,7 @@ public:
 private:
     size_t triangleBufferBytes() const
     {
-        return size_t(recordCapacity_) *
-               size_t(define("LFDPR_TRIANGLE_RECORD_BYTES") + define("LFDPR_TRIANGLE_SAMPLING_BYTES"));
+        return size_t(recordCapacity_) * (k_.triangleRecordBytes + k_.triangleSamplingBytes);
     }
 
     void prepareBuffers(const GpuScene& scene, const FrameSetup& frame, const ViewTargets& targets)
@@ -151,18 +132,15 @@ private:
             throw std::invalid_argument("lfdpr: view targets do not match the frame's profile");
         // Points: grow after an overflow, to the needed count * 1.25.
         if (nextCapacity_ > pointCapacity_) {
-            glDeleteBuffers(1, &points_);
             pointCapacity_ = nextCapacity_;
-            points_ = makeBuffer(size_t(pointCapacity_) * pointBytes_);
+            points_ = gl::createBuffer(size_t(pointCapacity_) * k_.pointBytes);
         }
         // Triangle records: one per triangle of every draw (never overflows).
         const uint64_t records = LfdprPointGeneration::recordCount(scene);
         if (records > recordCapacity_ || !records_) {
-            glDeleteBuffers(1, &records_);
-            glDeleteBuffers(1, &sampling_);
             recordCapacity_ = std::max<uint64_t>(records, 1);
-            records_ = makeBuffer(recordCapacity_ * size_t(define("LFDPR_TRIANGLE_RECORD_BYTES")));
-            sampling_ = makeBuffer(recordCapacity_ * size_t(define("LFDPR_TRIANGLE_SAMPLING_BYTES")));
+            records_ = gl::createBuffer(recordCapacity_ * k_.triangleRecordBytes);
+            sampling_ = gl::createBuffer(recordCapacity_ * k_.triangleSamplingBytes);
         }
         views_.resize(targets.viewCount(), targets.width(), targets.height());
     }
@@ -174,9 +152,8 @@ private:
         for (const ViewCamera& camera : frame.cameras)
             inverses.push_back(glm::mat4(glm::inverse(camera.clipFromDisplay * frame.displayFromScene)));
         if (inverses.size() > viewInverseCapacity_ || !viewInverse_) {
-            glDeleteBuffers(1, &viewInverse_);
             viewInverseCapacity_ = std::max<size_t>(inverses.size(), 1);
-            viewInverse_ = makeBuffer(viewInverseCapacity_ * sizeof(glm::mat4), GL_DYNAMIC_STORAGE_BIT);
+            viewInverse_ = gl::createBuffer(viewInverseCapacity_ * k_.viewInverseBytes, GL_DYNAMIC_STORAGE_BIT);
         }
         if (!inverses.empty())
             glNamedBufferSubData(viewInverse_, 0, GLsizeiptr(inverses.size() * sizeof(glm::mat4)),
@@ -188,41 +165,42 @@ private:
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboMaterials, scene.materialBuffer());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboNodes, scene.nodeTransformBuffer());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboTriangleStats, scene.triangleStatsBuffer());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_POINTS")), points_);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_TRIANGLES")), records_);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_SAMPLING")), sampling_);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_COUNTERS")), counters_);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(define("LFDPR_SSBO_VIEW_INVERSE")), viewInverse_);
-        glBindBufferBase(GL_UNIFORM_BUFFER, GLuint(define("LFDPR_UBO_FRAME")), frameUbo_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k_.ssboPoints, points_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k_.ssboTriangles, records_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k_.ssboSampling, sampling_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k_.ssboCounters, counters_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k_.ssboViewInverse, viewInverse_);
+        glBindBufferBase(GL_UNIFORM_BUFFER, k_.uboFrame, frameUbo_);
     }
 
     void readCounters()
     {
-        GLuint c[8] = {};
-        glGetNamedBufferSubData(counters_, 0, sizeof(c), c);
-        info_.points = c[0];
+        const LfdprCountersGpu c = readLfdprCounters(counters_);
+        info_.points = c.pointCount;
         info_.pointCapacity = pointCapacity_;
-        info_.pointsStored = std::min<uint64_t>(c[0], pointCapacity_);
-        info_.triangles = c[1];
-        info_.trianglesOversized = c[2];
-        trianglesCoarsened_ = c[3];
+        info_.pointsStored = std::min<uint64_t>(c.pointCount, pointCapacity_);
+        info_.triangles = c.triangleCount;
+        info_.trianglesOversized = c.oversizedCount;
+        trianglesCoarsened_ = c.coarsenedCount;
         info_.triangleCapacity = uint32_t(recordCapacity_);
-        info_.overflowed = c[0] > pointCapacity_;
+        info_.overflowed = c.pointCount > pointCapacity_;
         if (info_.overflowed) {
             ++info_.overflowFrames;
-            nextCapacity_ = uint32_t(std::min<double>(std::ceil(double(c[0]) * 1.25), double(maxPointCapacity_)));
+            nextCapacity_ =
+                uint32_t(std::min<double>(std::ceil(double(c.pointCount) * 1.25), double(maxPointCapacity_)));
         }
-        info_.pointBufferBytes = uint64_t(pointCapacity_) * pointBytes_;
+        info_.pointBufferBytes = uint64_t(pointCapacity_) * k_.pointBytes;
         info_.viewBufferBytes = views_.viewBufferBytes();
     }
 
     LfdprOptions options_;
+    const LfdprConstants& k_;
     LfdprFrameInfo info_;
     FrameUniforms uniforms_;
     LfdprPointGeneration pointGeneration_;
     LfdprViewGeneration views_;
-    unsigned points_ = 0, counters_ = 0, frameUbo_ = 0, records_ = 0, sampling_ = 0, viewInverse_ = 0;
-    uint32_t pointCapacity_ = 0, nextCapacity_ = 0, pointBytes_ = 0, maxPointCapacity_ = 0;
+    gl::Buffer points_, counters_, frameUbo_, records_, sampling_, viewInverse_;
+    uint32_t pointCapacity_ = 0, nextCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t recordCapacity_ = 0, trianglesCoarsened_ = 0;
     size_t viewInverseCapacity_ = 0;
 };

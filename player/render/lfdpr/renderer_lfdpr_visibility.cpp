@@ -15,6 +15,7 @@
 #include "lfdpr_camera_line.h"
 #include "lfdpr_compute_points.h"
 #include "lfdpr_constants.h"
+#include "lfdpr_counters.h"
 #include "lfdpr_point_generation.h" // makeLfdprFrame, LfdprFrameGpu
 #include "lfdpr_visibility_shading.h"
 #include "scene_bindings.h"
@@ -32,11 +33,7 @@ namespace lfd::player {
 
 namespace {
 
-// std430 mirror of LfdprDrawGpu (shaders/lfdpr_bindings.glsl).
-struct LfdprDrawGpu {
-    uint32_t node, material, firstTriangle, pad;
-};
-static_assert(sizeof(LfdprDrawGpu) == 16);
+using lfdpr_bindings::LfdprDrawGpu; // generated from shaders/lfdpr_bindings.glsl, checked by the layout test
 
 GLuint makeBuffer(size_t bytes, GLbitfield flags = 0, const void* data = nullptr)
 {
@@ -111,7 +108,7 @@ public:
         uploadCameraLine(frame);
 
         // Step 2: point generation; grown and redone while the buffer overflows.
-        uint32_t c[5] = {};
+        LfdprVisCountersGpu c{};
         timer.begin(stage::kPointGeneration);
         for (;;) {
             const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
@@ -125,17 +122,17 @@ public:
             glClearNamedBufferData(largeDispatch_, GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, noGroups);
             glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
             pointGeneration_.run(scene, largeBase_, largeDispatch_);
-            glGetNamedBufferSubData(counters_, 0, sizeof(c), c);
-            if (c[0] <= pointCapacity_ || pointCapacity_ >= maxPointCapacity_)
+            c = readLfdprVisCounters(counters_);
+            if (c.pointCount <= pointCapacity_ || pointCapacity_ >= maxPointCapacity_)
                 break;
             // note: never drop points silently: grow to the needed count * 1.25 and redo.
             glDeleteBuffers(1, &points_);
-            pointCapacity_ = uint32_t(std::min<double>(std::ceil(double(c[0]) * 1.25), double(maxPointCapacity_)));
+            pointCapacity_ = uint32_t(std::min<double>(std::ceil(double(c.pointCount) * 1.25), double(maxPointCapacity_)));
             points_ = makeBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
             ++info_.regenerations;
         }
         timer.end();
-        const uint32_t stored = std::min(c[0], pointCapacity_);
+        const uint32_t stored = std::min(c.pointCount, pointCapacity_);
 
         // Step 3: visibility, then shading once per visible pixel.
         bindBuffers(scene);
@@ -147,15 +144,15 @@ public:
         timer.end();
 
         // Step 4: what happened.
-        info_.points = c[0];
+        info_.points = c.pointCount;
         info_.pointsStored = stored;
-        info_.triangles = c[1];
-        info_.trianglesOversized = c[2];
-        trianglesCoarsened_ = c[3];
-        info_.trianglesLarge = c[4];
+        info_.triangles = c.recordCount;
+        info_.trianglesOversized = c.oversizedCount;
+        trianglesCoarsened_ = c.coarsenedCount;
+        info_.trianglesLarge = c.largeCount;
         info_.pointCapacity = pointCapacity_;
         info_.triangleCapacity = uint32_t(triangleCapacity_);
-        info_.overflowed = c[0] > pointCapacity_;
+        info_.overflowed = c.pointCount > pointCapacity_;
         if (info_.overflowed)
             ++info_.overflowFrames;
         info_.pointBufferBytes = uint64_t(pointCapacity_) * k_.compactPointBytes;
@@ -219,7 +216,7 @@ private:
         triangleCapacity_ = std::max<uint64_t>(triangles, 1);
         records_ = makeBuffer(triangleCapacity_ * k_.recordBytes);
         large_ = makeBuffer(triangleCapacity_ * sizeof(uint32_t));
-        largeDispatch_ = makeBuffer(std::max<size_t>(draws.size(), 1) * 4 * sizeof(uint32_t));
+        largeDispatch_ = makeBuffer(std::max<size_t>(draws.size(), 1) * k_.largeDispatchBytes);
         draws_ = makeBuffer(draws.size() * sizeof(LfdprDrawGpu), 0, draws.empty() ? nullptr : draws.data());
     }
 
