@@ -138,9 +138,10 @@ TEST(Reconstruction, SamplesAreSeededGaussiansInsideTheSupport)
         }
     }
     // Over many seeds the offsets have the Gaussians' spread: sigma = 2.25 / 6 view pixels,
-    // 2 / 6 view intervals (a 3-sigma truncation lowers the variance by 2.7% in 1D and
-    // 1.1% per axis on a disc: the 1% statistical tolerance of 4000 x 8 samples sits around
-    // both).
+    // 2 / 6 view intervals. A 3-sigma truncation lowers the variance: in 1D by the factor
+    // 1 - 6 phi(3) / (1 - 2 Phi(-3)) = 0.9733; on a disc of radius 3 sigma (r^2 / sigma^2 is
+    // chi-square with 2 degrees of freedom) by (1 - 5.5 e^-4.5) / (1 - e^-4.5) = 0.9494 per
+    // axis. Tolerance 2% of sigma: the statistics of 4000 x 8 samples are within 1%.
     double xx = 0.0, zz = 0.0;
     const int seeds = 4000;
     for (int s = 0; s < seeds; ++s)
@@ -149,8 +150,8 @@ TEST(Reconstruction, SamplesAreSeededGaussiansInsideTheSupport)
             zz += double(o.z) * o.z;
         }
     const double n = double(seeds) * ReconstructionFilter::kSamples;
-    EXPECT_NEAR(std::sqrt(xx / n), 0.375 * std::sqrt(0.989), 0.375 * 0.02);
-    EXPECT_NEAR(std::sqrt(zz / n), (1.0 / 3.0) * std::sqrt(0.973), (1.0 / 3.0) * 0.02);
+    EXPECT_NEAR(std::sqrt(xx / n), 0.375 * std::sqrt(0.9494), 0.375 * 0.02);
+    EXPECT_NEAR(std::sqrt(zz / n), (1.0 / 3.0) * std::sqrt(0.9733), (1.0 / 3.0) * 0.02);
 }
 
 TEST(Reconstruction, SpatialFilterSpreadsASinglePixelAsTheGaussianPredicts)
