@@ -14,11 +14,20 @@
 // different view than the CPU reference. `precise` forbids fused multiply-adds, which
 // the CPU (x86-64 SSE2, -ffp-contract=off in ISO C++ mode) does not use either.
 
-// Reconstruction modes (C++: lfd::player::Reconstruction, checked by a test). Only
-// nearest view exists so far; the Gaussian modes of the paper's section 4 (spatial: 2.25
-// view-pixel diameter, view: support of 2 view intervals, view-spatial; 8 random Gaussian
-// samples each) become further cases of subpixelValue().
+// Reconstruction modes (C++: lfd::player::Reconstruction, checked by a test), paper
+// section 4: Gaussian filters integrated with EIA_SAMPLES random Gaussian samples (the
+// offsets come from C++, lfd::player::reconstructionSamples, seeded, the same for every
+// subpixel, so the filter is fixed and reproducible) and averaged in linear light.
+//   spatial: 2.25 view-pixel diameter (sigma 0.375, truncated at 3 sigma) around the
+//            subpixel's screen position, each sample a bilinear fetch of the view;
+//   view:    support of 2 view intervals (sigma 1/3, truncated at 3 sigma) around the
+//            subpixel's view coordinate phase * N, each sample the nearest view there;
+//   view-spatial: both at once (samples offset in x, y and view).
 #define EIA_MODE_NONE 0
+#define EIA_MODE_SPATIAL 1
+#define EIA_MODE_VIEW 2
+#define EIA_MODE_VIEW_SPATIAL 3
+#define EIA_SAMPLES 8
 
 #define EIA_LOCAL_SIZE 8
 layout(local_size_x = EIA_LOCAL_SIZE, local_size_y = EIA_LOCAL_SIZE) in;
@@ -38,6 +47,10 @@ uniform double phaseOffset;
 uniform bool invertPhase;
 uniform bool subpixelsBgr;
 uniform uint mode;         // EIA_MODE_*
+// Filter samples: x, y in view pixels (image order: +y down), z in view intervals.
+uniform vec3 samples[EIA_SAMPLES];
+// sRGB-encoded byte -> linear value, from C++ (so the CPU reference decodes identically).
+uniform float linearFromByte[256];
 
 // Same operations, in the same order, as lfd::subpixelPhase (formats/src/display_profile.cpp).
 double subpixelPhase(uint k, uint l)
@@ -68,10 +81,70 @@ float nearestView(uint k, uint l, uint channel, double phase)
     return texelFetch(views, ivec3(viewTexelUnder(k, l), int(view)), 0)[channel];
 }
 
+// The view a sample at view coordinate c lands in (views clamp at the cone's ends).
+uint viewAt(double c)
+{
+    return uint(clamp(floor(c), 0.0LF, double(viewCount - 1u)));
+}
+
+// Linear value of channel `channel` of view texel (x, image row y), clamped to the view.
+float linearTexel(int x, int y, uint view, uint channel)
+{
+    x = clamp(x, 0, int(viewSize.x) - 1);
+    y = clamp(y, 0, int(viewSize.y) - 1);
+    const float v = texelFetch(views, ivec3(x, int(viewSize.y) - 1 - y, int(view)), 0)[channel];
+    return linearFromByte[uint(round(v * 255.0))];
+}
+
+// Bilinear fetch (linear light) at view-pixel position p (image order, pixel centres at
+// integer + 0.5), edge texels repeated.
+float bilinear(vec2 p, uint view, uint channel)
+{
+    const vec2 f = p - vec2(0.5);
+    const vec2 base = floor(f);
+    const vec2 a = f - base;
+    const int x = int(base.x), y = int(base.y);
+    const float top = mix(linearTexel(x, y, view, channel), linearTexel(x + 1, y, view, channel), a.x);
+    const float bottom = mix(linearTexel(x, y + 1, view, channel), linearTexel(x + 1, y + 1, view, channel), a.x);
+    return mix(top, bottom, a.y);
+}
+
+// Linear -> sRGB-encoded value, quantised to the 8-bit level the image stores.
+float encodeSrgb(float linear)
+{
+    const float c = clamp(linear, 0.0, 1.0);
+    const float e = c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+    return round(clamp(e, 0.0, 1.0) * 255.0) / 255.0;
+}
+
+// The Gaussian reconstructions: EIA_SAMPLES samples averaged in linear light.
+float filtered(uint k, uint l, uint channel, double phase)
+{
+    const double c = phase * double(viewCount);
+    // The subpixel's screen position in view pixels: ((2k + 1) w / 6W, (2l + 1) h / 2H).
+    const vec2 p = vec2(float((2u * k + 1u) * viewSize.x) / float(6u * panelSize.x),
+                        float((2u * l + 1u) * viewSize.y) / float(2u * panelSize.y));
+    const ivec2 texel = viewTexelUnder(k, l);
+    const int imageRow = int(viewSize.y) - 1 - texel.y;
+    float sum = 0.0;
+    for (int s = 0; s < EIA_SAMPLES; ++s) {
+        const uint view = mode == EIA_MODE_SPATIAL ? viewAt(c) : viewAt(c + double(samples[s].z));
+        if (mode == EIA_MODE_VIEW)
+            sum += linearTexel(texel.x, imageRow, view, channel);
+        else
+            sum += bilinear(p + samples[s].xy, view, channel);
+    }
+    return encodeSrgb(sum / float(EIA_SAMPLES));
+}
+
 float subpixelValue(uint k, uint l, uint channel)
 {
     const double phase = subpixelPhase(k, l);
     switch (mode) {
+    case EIA_MODE_SPATIAL:
+    case EIA_MODE_VIEW:
+    case EIA_MODE_VIEW_SPATIAL:
+        return filtered(k, l, channel, phase);
     case EIA_MODE_NONE:
     default:
         return nearestView(k, l, channel, phase);

@@ -121,6 +121,13 @@ ViewCamera makeViewCamera(const DisplayProfile& profile, const Framing& framing,
     if (viewCount == 0 || viewIndex >= viewCount)
         throw std::invalid_argument("makeViewCamera: view index " + std::to_string(viewIndex) +
                                     " out of range for " + std::to_string(viewCount) + " views");
+    return makeViewCameraAt(profile, framing, (double(viewIndex) + 0.5) / double(viewCount));
+}
+
+ViewCamera makeViewCameraAt(const DisplayProfile& profile, const Framing& framing, double conePosition) {
+    if (!(conePosition >= 0.0 && conePosition <= 1.0))
+        throw std::invalid_argument("makeViewCameraAt: cone position " + std::to_string(conePosition) +
+                                    " outside [0, 1]");
     const double D = profile.viewingDistanceMm;
     const double W = profile.screenWidthMm;
     const double H = profile.screenHeightMm;
@@ -128,7 +135,7 @@ ViewCamera makeViewCamera(const DisplayProfile& profile, const Framing& framing,
     // Step 1: eye on the camera line, view 0 leftmost; the angles split the cone into N
     // equal intervals and take their centres.
     const double cone = glm::radians(profile.viewConeDeg);
-    const double t = (double(viewIndex) + 0.5) / double(viewCount) - 0.5;
+    const double t = conePosition - 0.5;
     ViewCamera camera;
     camera.eye = glm::dvec3(D * std::tan(cone * t), 0.0, D);
 

@@ -68,6 +68,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
             info.profile = profile.name;
             info.pack = packName;
             info.reconstruction = options.reconstruction;
+            info.supersampling = options.supersampling;
             info.views = profile.viewCount;
             info.viewWidth = profile.viewWidth;
             info.viewHeight = profile.viewHeight;
@@ -145,7 +146,13 @@ int main(int argc, char** argv)
     app.add_option("--fps", options.fps, "frame k is at time k / fps")->capture_default_str();
     app.add_option("--turntable-period", options.turntablePeriod, "seconds per turntable revolution (0 = still)")
         ->capture_default_str();
-    app.add_option("--reconstruction", options.reconstruction, "EIA reconstruction: none")->capture_default_str();
+    app.add_option("--aa,--reconstruction", options.reconstruction,
+                   "EIA reconstruction: none|spatial|view|view-spatial (Gaussian, 8 seeded samples)")
+        ->capture_default_str();
+    app.add_option("--ss", options.supersampling,
+                   "supersampling: 1 | 2s (views at twice the resolution) | 2v (twice the views, random "
+                   "angles in each view interval), averaged down")
+        ->capture_default_str();
     app.add_option("--out", options.eiaOut, "EIA PNG (panel resolution)");
     app.add_option("--quilt", options.quiltOut, "quilt PNG (a _qsCxRaA suffix is added)");
     app.add_option("--views-out", options.viewsOut, "directory for view_000.png ... (view 0 = leftmost)");
@@ -206,7 +213,12 @@ int main(int argc, char** argv)
         try {
             lfd::player::parseReconstruction(options.reconstruction);
         } catch (const std::exception& e) {
-            throw UsageError(std::string("--reconstruction: ") + e.what());
+            throw UsageError(std::string("--aa: ") + e.what());
+        }
+        try {
+            lfd::player::parseSupersampling(options.supersampling);
+        } catch (const std::exception& e) {
+            throw UsageError(std::string("--ss: ") + e.what());
         }
         checkOutputPath("--out", options.eiaOut);
         checkOutputPath("--quilt", options.quiltOut);

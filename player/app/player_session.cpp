@@ -16,6 +16,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     : options_(options), packName_(std::move(packName)), pipeline_(profile, scene, options.turntablePeriod)
 {
     reconstruction_ = parseReconstruction(options.reconstruction);
+    pipeline_.setSupersampling(parseSupersampling(options.supersampling));
     switchRenderer(options.renderer);
 }
 

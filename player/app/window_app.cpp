@@ -143,8 +143,8 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
     // with the user's renderer options.
     const std::vector<std::string> renderers = windowRendererCycle(options.renderer);
     size_t rendererIndex = renderers.size() - 1; // the cycle ends with the current renderer
-    const std::vector<std::string> reconstructions = {"none"}; // more modes plug in here
-    size_t reconstructionIndex = 0;
+    const std::vector<std::string> reconstructions = reconstructionNames(); // C cycles them
+    size_t reconstructionIndex = size_t(parseReconstruction(session.options().reconstruction));
     Shown shown = options.show == "quilt"    ? Shown::Quilt
                   : options.show == "view"   ? Shown::SingleView
                   : options.show == "viewer" ? Shown::Viewer

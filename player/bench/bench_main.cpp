@@ -2,9 +2,11 @@
 // same frames of the rotating scene), measures each one's quality against a reference
 // renderer, and prints the speed-up and error table. See `lfd-bench --help` and README.md
 // ("Benchmarking: lfd-bench").
+#include "bench_matrix.h"
 #include "bench_report.h"
 #include "bench_runner.h"
 #include "cli_support.h"
+#include "frame_pipeline.h"
 #include "gl_context.h"
 
 #include "lfd/display_profile.h"
@@ -13,7 +15,10 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <iostream>
 
@@ -35,6 +40,27 @@ std::vector<std::string> parseRendererList(const std::string& text)
     return names;
 }
 
+// Ctrl-C / SIGTERM: finish nothing more, keep (and write) what finished.
+std::atomic<bool> gStop{false};
+extern "C" void onSignal(int) { gStop = true; }
+
+// "none,view" -> names checked with `parse`.
+template <class Parse>
+std::vector<std::string> parseModeList(const std::string& flag, const std::string& text, Parse parse)
+{
+    const std::vector<std::string> names = lfd::cli::splitList(text);
+    if (names.empty())
+        throw UsageError(flag + ": empty list");
+    for (const std::string& n : names) {
+        try {
+            parse(n);
+        } catch (const std::exception& e) {
+            throw UsageError(flag + ": " + e.what());
+        }
+    }
+    return names;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -43,16 +69,24 @@ int main(int argc, char** argv)
     BenchOptions options;
     CLI::App app{"lfd-bench: time renderers on a packed scene (.lfdpack) in one GL context and "
                  "compare their views and EIA with a reference renderer"};
-    std::string pack, renderers = "mvr,mvr-layered,lfdpr", viewSize, displayProfile;
-    uint32_t views = 0;
+    std::vector<std::string> packs;
+    std::string renderers = "mvr,mvr-layered,lfdpr", viewSize, displayProfile, views, aaList = "none", ssList = "1";
     bool variants = false;
-    app.add_option("PACK", pack, "packed scene from lfd-bake")->required();
+    app.add_option("PACK", packs, "packed scenes from lfd-bake (one matrix run per pack and view count)")
+        ->required();
+    app.add_option("--aa", aaList,
+                   "comma-separated EIA reconstructions to run every renderer with: none|spatial|view|view-spatial")
+        ->capture_default_str();
+    app.add_option("--ss", ssList,
+                   "comma-separated supersampling modes to run every renderer with: 1|2s|2v")
+        ->capture_default_str();
     app.add_option("--renderers", renderers, "comma-separated renderers to time")->capture_default_str();
     app.add_flag("--lfdpr-variants", variants,
                  "also time the paper's pipeline (lfdpr-paper) and lfdpr with each innovation "
                  "disabled (lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting, lfdpr-no-mv-mipmapping)");
     app.add_option("--display", displayProfile, "display profile JSON (default: the paper's prototype)");
-    auto* viewsOpt = app.add_option("--views", views, "number of views (overrides the profile)");
+    auto* viewsOpt = app.add_option("--views", views, "number of views (overrides the profile); a comma-separated "
+                                                      "list runs the matrix once per view count");
     auto* sizeOpt = app.add_option("--view-size", viewSize, "view size WxH (overrides the profile)");
     app.add_option("--frames", options.frames, "timed frames per renderer")->capture_default_str();
     app.add_option("--warmup", options.warmup, "untimed frames before them")->capture_default_str();
@@ -75,7 +109,10 @@ int main(int argc, char** argv)
                    "else ~/.cache/lfdpr/gstd)");
     app.add_flag("--no-gstd-cache", noGstdCache, "render gstd every time (neither read nor write the cache)");
     std::string outDir;
-    app.add_option("--out", outDir, "directory for bench.json, bench.csv, speed_vs_error.svg and PNGs");
+    app.add_option("--out", outDir,
+                   "directory for results.csv/json, table.md, chart.png/svg (the matrix), and per run bench.json, "
+                   "bench.csv, speed_vs_error.svg and PNGs (in DIR itself for one pack and view count, else in "
+                   "DIR/<scene>-<N>v/)");
     app.add_flag("--quiet", options.quiet, "no progress lines");
 
     if (const auto exit = lfd::cli::parseCommandLine(app, argc, argv, "lfd-bench"))
@@ -83,8 +120,9 @@ int main(int argc, char** argv)
 
     return lfd::cli::runReportingErrors("lfd-bench", [&] {
         // Step 1: validate flags before touching files or the GPU.
-        options.pack = pack;
         options.renderers = parseRendererList(renderers);
+        options.aa = parseModeList("--aa", aaList, lfd::player::parseReconstruction);
+        options.ss = parseModeList("--ss", ssList, lfd::player::parseSupersampling);
         if (variants)
             for (const std::string& v : lfdprVariantNames())
                 if (std::find(options.renderers.begin(), options.renderers.end(), v) == options.renderers.end())
@@ -105,8 +143,18 @@ int main(int argc, char** argv)
             throw UsageError("--fps: must be a positive number");
         if (!std::isfinite(options.turntablePeriod) || options.turntablePeriod < 0.0)
             throw UsageError("--turntable-period: must be >= 0");
-        if (*viewsOpt && (views == 0 || views > 2048))
-            throw UsageError("--views: expected 1..2048, got " + std::to_string(views));
+        std::vector<uint32_t> viewCounts;
+        if (*viewsOpt) {
+            for (const std::string& item : lfd::cli::splitList(views)) {
+                char* end = nullptr;
+                const unsigned long n = std::strtoul(item.c_str(), &end, 10);
+                if (item.empty() || *end != '\0' || n == 0 || n > 2048)
+                    throw UsageError("--views: expected 1..2048, got '" + item + "'");
+                viewCounts.push_back(uint32_t(n));
+            }
+            if (viewCounts.empty())
+                throw UsageError("--views: empty list");
+        }
         std::optional<std::pair<uint32_t, uint32_t>> size;
         if (*sizeOpt)
             size = lfd::cli::parseSize("--view-size", viewSize);
@@ -122,16 +170,16 @@ int main(int argc, char** argv)
                 throw UsageError("--out: cannot create '" + outDir + "': " + ec.message());
         }
 
-        // Step 2: the display profile with the overrides, then the pack.
-        lfd::DisplayProfile profile = displayProfile.empty() ? lfd::prototypeDisplayProfile()
-                                                             : lfd::loadDisplayProfile(displayProfile);
-        profile = lfd::withViews(profile, *viewsOpt ? views : profile.viewCount,
-                                 size ? size->first : profile.viewWidth, size ? size->second : profile.viewHeight);
-        if (!std::filesystem::is_regular_file(options.pack))
-            throw UsageError(pack + ": no such pack file");
-        lfd::Scene scene = lfd::readPack(options.pack);
+        // Step 2: the display profile; every pack must exist before anything runs.
+        const lfd::DisplayProfile baseProfile = displayProfile.empty() ? lfd::prototypeDisplayProfile()
+                                                                       : lfd::loadDisplayProfile(displayProfile);
+        if (viewCounts.empty())
+            viewCounts.push_back(baseProfile.viewCount);
+        for (const std::string& pack : packs)
+            if (!std::filesystem::is_regular_file(pack))
+                throw UsageError(pack + ": no such pack file");
 
-        // Step 3: one GL context for every renderer.
+        // Step 3: one GL context for every renderer and run.
         std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless();
         const bool layered = std::find(options.renderers.begin(), options.renderers.end(), "mvr-layered") !=
                                  options.renderers.end() ||
@@ -139,18 +187,69 @@ int main(int argc, char** argv)
         context->require(layered);
         if (!options.quiet)
             std::cout << "lfd-bench: " << context->describeWithCodePaths() << std::endl;
+        std::signal(SIGINT, onSignal);
+        std::signal(SIGTERM, onSignal);
+        options.shouldStop = [] { return gStop.load(); };
 
-        // Step 4: measure, then print and write.
-        std::map<std::string, FrameImages> images;
-        const BenchReport report =
-            runBenchmark(options, profile, std::move(scene), options.pack.filename().string(),
-                         context->describe(), std::cout, options.outDir.empty() ? nullptr : &images);
-        std::cout << "\n" << benchTable(report) << std::flush;
+        // Step 4: the matrix: per pack and view count one run of every configuration; the
+        // matrix files are rewritten after every finished configuration.
+        const bool single = packs.size() == 1 && viewCounts.size() == 1;
+        std::vector<BenchReport> reports;
+        const size_t runs = packs.size() * viewCounts.size();
+        for (const std::string& pack : packs) {
+            for (const uint32_t n : viewCounts) {
+                if (gStop)
+                    break;
+                lfd::DisplayProfile profile =
+                    lfd::withViews(baseProfile, n, size ? size->first : baseProfile.viewWidth,
+                                   size ? size->second : baseProfile.viewHeight);
+                options.pack = pack;
+                lfd::Scene scene = lfd::readPack(options.pack);
+                if (!options.quiet)
+                    std::cout << "lfd-bench: run " << (reports.size() + 1) << "/" << runs << ": " << pack << ", " << n
+                              << " views" << std::endl;
+                const size_t slot = reports.size();
+                BenchOptions runOptions = options;
+                if (!options.outDir.empty())
+                    runOptions.onResult = [&](const BenchReport& partial) {
+                        std::vector<BenchReport> all(reports.begin(), reports.begin() + long(slot));
+                        all.push_back(partial);
+                        writeMatrixTables(options.outDir, all);
+                    };
+                std::map<std::string, FrameImages> images;
+                BenchReport report =
+                    runBenchmark(runOptions, profile, std::move(scene), options.pack.filename().string(),
+                                 context->describe(), std::cout, options.outDir.empty() ? nullptr : &images);
+                std::cout << "\n" << benchTable(report) << std::flush;
+                if (!options.outDir.empty()) {
+                    std::filesystem::path runDir = options.outDir;
+                    if (!single) {
+                        std::string stem = options.pack.stem().string();
+                        runDir /= stem + "-" + std::to_string(n) + "v";
+                    }
+                    const auto written = writeBenchOutputs(runDir, report, images);
+                    if (!options.quiet)
+                        std::cout << "lfd-bench: wrote " << written.size() << " files to " << runDir.string()
+                                  << std::endl;
+                }
+                reports.push_back(std::move(report));
+            }
+        }
         if (!options.outDir.empty()) {
-            const auto written = writeBenchOutputs(options.outDir, report, images);
-            if (!options.quiet)
-                std::cout << "lfd-bench: wrote " << written.size() << " files to " << options.outDir.string()
-                          << std::endl;
+            writeMatrixTables(options.outDir, reports);
+            std::string why;
+            if (drawMatrixChart(options.outDir, why)) {
+                if (!options.quiet)
+                    std::cout << "lfd-bench: wrote results.csv, results.json, table.md, chart.png, chart.svg to "
+                              << options.outDir.string() << std::endl;
+            } else {
+                std::cout << "lfd-bench: chart.png not drawn: " << why
+                          << "; results.csv, results.json and table.md are written" << std::endl;
+            }
+        }
+        if (gStop) {
+            std::cout << "lfd-bench: interrupted; kept the configurations that finished" << std::endl;
+            return 130;
         }
         return 0;
     });

@@ -4,6 +4,7 @@
 #include "frame_stages.h"
 #include "gstd_cache.h"
 #include "image_output.h"
+#include "simulated_viewer.h"
 
 #include "lfd/framing.h"
 
@@ -55,7 +56,30 @@ double psnrFromRmse(double e)
     return e == 0.0 ? std::numeric_limits<double>::infinity() : 20.0 * std::log10(255.0 / e);
 }
 
+struct Config {
+    std::string renderer, aa, ss;
+    std::string name() const { return configName(renderer, aa, ss); }
+};
+
 } // namespace
+
+std::string configName(const std::string& renderer, const std::string& aa, const std::string& ss)
+{
+    std::string name = renderer;
+    if (aa != "none")
+        name += "+aa-" + aa;
+    if (ss != "1")
+        name += "+ss-" + ss;
+    return name;
+}
+
+const RendererResult* BenchReport::mvrBaseline(const RendererResult& r) const
+{
+    if (const RendererResult* m = find(configName("mvr", "none", r.ss)); m && m->timed)
+        return m;
+    const RendererResult* m = find("mvr");
+    return m && m->timed ? m : nullptr;
+}
 
 double RendererResult::stageMean(const std::string& stage) const
 {
@@ -120,15 +144,42 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     scene = Scene{}; // the GPU copy is all that is needed from here on
     report.sceneGpuBytes = pipeline.scene().gpuBytes();
 
-    // Step 2: the reference runs first so every other renderer is compared as soon as it
-    // has rendered (only the reference's frame is kept); the table keeps the user's order.
-    std::vector<std::string> order = options.renderers;
-    const bool referenceTimed =
-        std::find(order.begin(), order.end(), options.reference) != order.end();
-    order.erase(std::remove(order.begin(), order.end(), options.reference), order.end());
-    order.insert(order.begin(), options.reference);
+    // Step 2: the reference runs first so every other configuration is compared as soon
+    // as it has rendered (only the reference's frame is kept); the table keeps the user's
+    // order: renderers, then supersampling, then reconstruction.
+    if (options.aa.empty() || options.ss.empty())
+        throw std::invalid_argument("aa, ss: the lists must not be empty");
+    for (const std::string& a : options.aa)
+        parseReconstruction(a);
+    for (const std::string& x : options.ss)
+        parseSupersampling(x);
+    std::vector<Config> configs;
+    for (const std::string& r : options.renderers)
+        for (const std::string& x : options.ss)
+            for (const std::string& a : options.aa)
+                configs.push_back({r, a, x});
+    const std::string referenceName = options.reference;
+    const bool referenceTimed = std::any_of(configs.begin(), configs.end(), [&](const Config& c) {
+        return c.name() == referenceName;
+    });
+    std::vector<Config> order;
+    order.push_back({options.reference, "none", "1"});
+    for (const Config& c : configs)
+        if (c.name() != referenceName)
+            order.push_back(c);
+    auto publish = [&](std::vector<RendererResult>& done, bool interrupted) {
+        report.results.clear();
+        for (const Config& c : configs)
+            for (const RendererResult& r : done)
+                if (r.name == c.name())
+                    report.results.push_back(r);
+        if (!referenceTimed && !done.empty())
+            report.results.push_back(done.front());
+        report.interrupted = interrupted;
+    };
 
     CapturedFrame reference;
+    Image referenceLens;
     std::vector<RendererResult> results;
     const double qualityTime = double(options.qualityFrame) / options.fps;
 
@@ -136,7 +187,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     // hash is part of the key); a failed cache write only costs the next run a re-render.
     std::optional<GstdCache> gstdCache;
     std::string gstdKey;
-    if (options.gstdCacheEnabled && std::find(order.begin(), order.end(), "gstd") != order.end() &&
+    if (options.gstdCacheEnabled && std::any_of(order.begin(), order.end(), [](const Config& c) { return c.name() == "gstd"; }) &&
         std::filesystem::is_regular_file(options.pack)) {
         const std::filesystem::path dir = options.gstdCache.empty() ? defaultGstdCacheDir() : options.gstdCache;
         if (!dir.empty()) {
@@ -145,18 +196,30 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
                                    options.rendererOptions.gstd, glDescription);
         }
     }
+    auto stopRequested = [&] { return options.shouldStop && options.shouldStop(); };
     for (size_t i = 0; i < order.size(); ++i) {
-        const std::string& name = order[i];
+        if (stopRequested()) {
+            publish(results, true);
+            return report;
+        }
+        const Config& config = order[i];
+        const std::string name = config.name();
+        const Reconstruction aa = parseReconstruction(config.aa);
+        pipeline.setSupersampling(parseSupersampling(config.ss));
         const Clock::time_point start = Clock::now();
         RendererResult result;
         result.name = name;
+        result.renderer = config.renderer;
+        result.aa = config.aa;
+        result.ss = config.ss;
         result.timed = name != options.reference || referenceTimed;
         auto say = [&](const std::string& line) {
             if (!options.quiet)
-                progress << "lfd-bench: [" << (i + 1) << "/" << order.size() << "] " << name << ": "
+                progress << "lfd-bench: " << packName << " " << profile.viewCount << "x" << profile.viewWidth << "x"
+                         << profile.viewHeight << " [" << (i + 1) << "/" << order.size() << "] " << name << ": "
                          << line << std::endl;
         };
-        std::unique_ptr<Renderer> renderer = createRenderer(name, options.rendererOptions);
+        std::unique_ptr<Renderer> renderer = createRenderer(config.renderer, options.rendererOptions);
 
         // Step 3: warm-up frames (shader compilation, buffer growth), then timed frames;
         // the warm-up replays the first timed frames' times and is timed separately.
@@ -164,13 +227,17 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
             say("warm-up " + std::to_string(options.warmup) + " frame(s), then " +
                 std::to_string(options.frames) + " timed frame(s)");
             GpuTimer warmTimer;
-            for (uint32_t k = 0; k < options.warmup; ++k)
-                pipeline.renderFrame(*renderer, double(k % options.frames) / options.fps, warmTimer);
+            for (uint32_t k = 0; k < options.warmup && !stopRequested(); ++k)
+                pipeline.renderFrame(*renderer, double(k % options.frames) / options.fps, warmTimer, aa);
             warmTimer.finish();
             GpuTimer timer;
-            for (uint32_t k = 0; k < options.frames; ++k)
-                pipeline.renderFrame(*renderer, double(k) / options.fps, timer);
+            for (uint32_t k = 0; k < options.frames && !stopRequested(); ++k)
+                pipeline.renderFrame(*renderer, double(k) / options.fps, timer, aa);
             timer.finish();
+            if (stopRequested()) {
+                publish(results, true);
+                return report;
+            }
             result.stages = timer.stages();
             result.extra = renderer->extraStats();
             char line[128];
@@ -183,18 +250,18 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
         // Step 4: the quality frame, untimed, compared with the reference's (gstd's views
         // from the cache when it has them; the EIA is built from them as usual).
         GpuTimer qualityTimer;
-        const bool cacheable = name == "gstd" && gstdCache;
+        const bool cacheable = name == "gstd" && gstdCache; // (gstd, none, 1) only
         if (cacheable) {
             pipeline.animate(qualityTime);
             result.fromCache = gstdCache->load(gstdKey, pipeline.targets());
             if (result.fromCache) {
-                pipeline.buildEia(qualityTimer);
+                pipeline.buildEia(qualityTimer, aa);
                 say("quality frame from the gstd cache " + gstdCache->entryPath(gstdKey).string());
             }
         }
         if (!result.fromCache) {
             const Clock::time_point qualityStart = Clock::now();
-            pipeline.renderFrame(*renderer, qualityTime, qualityTimer);
+            pipeline.renderFrame(*renderer, qualityTime, qualityTimer, aa);
             if (cacheable) {
                 try {
                     gstdCache->store(gstdKey, pipeline.targets());
@@ -217,12 +284,18 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
         CapturedFrame frame = capture(pipeline);
         renderer.reset();
 
+        // Through the lens: what an eye at the centre view position sees of this EIA.
+        const double eyePosition = 0.5 * double(profile.viewCount);
+        const Image lens{profile.viewWidth, profile.viewHeight, 4,
+                         simulateViewer(profile, frame.eia.pixels, eyePosition)};
         if (i == 0) {
             // The reference against itself: identical.
             const Quality identical{0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0};
-            result.eia = result.centreView = result.allViews = identical;
+            result.eia = result.centreView = result.allViews = result.lens = identical;
             reference = std::move(frame);
+            referenceLens = lens;
         } else {
+            result.lens = compare(lens, referenceLens);
             result.eia = compare(frame.eia, reference.eia);
             const size_t centre = frame.views.size() / 2;
             result.centreView = compare(frame.views[centre], reference.views[centre]);
@@ -247,15 +320,12 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
             (*images)[name] = {kept.eia.pixels, kept.views[kept.views.size() / 2].pixels};
         result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
         results.push_back(std::move(result));
+        // Step 5: the report so far (the user's order, an untimed reference last).
+        publish(results, false);
+        if (options.onResult)
+            options.onResult(report);
     }
-
-    // Step 5: the user's order, an untimed reference last.
-    for (const std::string& name : options.renderers)
-        for (RendererResult& r : results)
-            if (r.name == name)
-                report.results.push_back(r);
-    if (!referenceTimed)
-        report.results.push_back(results.front());
+    publish(results, false);
     return report;
 }
 

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <map>
 #include <memory>
@@ -40,7 +41,20 @@ struct BenchOptions {
     uint32_t qualityFrame = 0;      // frame whose views and EIA are compared
     std::filesystem::path outDir;   // empty: nothing written
     bool quiet = false;             // no progress lines
+    // The matrix (paper section 5, Tables 1 and 2): every renderer runs with every
+    // reconstruction (--aa) and supersampling (--ss) listed; the reference runs once, with
+    // neither. A configuration other than (none, 1) is named configName(...).
+    std::vector<std::string> aa{"none"};
+    std::vector<std::string> ss{"1"};
+    // Called after each finished configuration with the report so far (incremental,
+    // interrupt-safe outputs); checked before each configuration and frame: true stops
+    // the run, keeping what finished.
+    std::function<void(const struct BenchReport&)> onResult;
+    std::function<bool()> shouldStop;
 };
+
+// "lfdpr" for (lfdpr, none, 1), else e.g. "lfdpr+aa-view-spatial+ss-2v".
+std::string configName(const std::string& renderer, const std::string& aa, const std::string& ss);
 
 // Quality of one image set against the reference's (image_output.h metrics).
 struct Quality {
@@ -54,11 +68,16 @@ struct Quality {
 };
 
 struct RendererResult {
-    std::string name;
+    std::string name;     // configName(renderer, aa, ss)
+    std::string renderer; // registry name
+    std::string aa = "none", ss = "1";
     bool timed = true;  // false: the reference, rendered only for quality
     std::map<std::string, StageTimes> stages; // timed frames only
     std::vector<std::pair<std::string, double>> extra; // Renderer::extraStats() after the run
     Quality eia, centreView, allViews; // allViews: RMSE from the mean MSE, SSIM averaged
+    // Through the lens: the simulated viewer's image at the centre view position
+    // (simulated_viewer.h) of this EIA against that of the reference's EIA.
+    Quality lens;
     double seconds = 0.0; // wall time of this renderer's run (timing + quality frame)
     bool fromCache = false; // the quality frame's views came from the gstd cache
 
@@ -75,8 +94,12 @@ struct BenchReport {
     uint64_t drawnTriangles = 0; // with every node instance counted
     uint64_t sceneGpuBytes = 0;
     std::vector<RendererResult> results; // in options.renderers order, reference last if untimed
+    bool interrupted = false;            // options.shouldStop ended the run early
 
     const RendererResult* find(const std::string& name) const;
+    // The configuration the paper's ratio compares `r` with: mvr with r's supersampling
+    // and no reconstruction, else plain mvr; null when not run.
+    const RendererResult* mvrBaseline(const RendererResult& r) const;
     // other's total / renderer's total (> 1: `renderer` is faster); empty if either is
     // missing or untimed.
     std::optional<double> speedUp(const std::string& renderer, const std::string& other) const;

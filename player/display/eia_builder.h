@@ -2,11 +2,15 @@
 // For each subpixel (column k = 3x + i, row l) the view phase comes from the profile's
 // SubpixelMapping; nearest-view mode takes that subpixel's channel from view
 // floor(phase * N), sampled at the subpixel's screen position (each view covers the whole
-// screen). Reconstruction modes (spatial / view / view-spatial Gaussian filters, issue
-// "quality") plug in as further Reconstruction values handled by the same shader.
+// screen). The reconstruction modes of the paper's section 4 (`--aa`) filter around that
+// sample with a Gaussian - spatial (2.25 view-pixel diameter), view (angular, a support of
+// 2 view intervals) or both - integrated with 8 seeded random Gaussian samples, the same
+// offsets for every subpixel, averaged in linear light.
 #pragma once
 
 #include "lfd/display_profile.h"
+
+#include <glm/glm.hpp>
 
 #include <cstdint>
 #include <string>
@@ -17,12 +21,32 @@ namespace lfd::player {
 class ViewTargets;
 class GpuTimer;
 
-enum class Reconstruction : uint32_t { None = 0 };
-Reconstruction parseReconstruction(const std::string& name); // "none"; throws invalid_argument
+// Values match EIA_MODE_* in shaders/eia_construct.comp (tested).
+enum class Reconstruction : uint32_t { None = 0, Spatial = 1, View = 2, ViewSpatial = 3 };
+// "none", "spatial", "view", "view-spatial"; throws invalid_argument naming the choices.
+Reconstruction parseReconstruction(const std::string& name);
+std::string reconstructionName(Reconstruction mode);
+std::vector<std::string> reconstructionNames(); // in enum order (the window's C key cycle)
+
+// The reconstruction filters (paper section 4).
+struct ReconstructionFilter {
+    static constexpr uint32_t kSamples = 8;         // EIA_SAMPLES
+    static constexpr double kSpatialDiameter = 2.25; // view pixels, = 6 sigma
+    static constexpr double kViewSupport = 2.0;      // view intervals, = 6 sigma
+    static constexpr uint64_t kDefaultSeed = 0x5eed'0e1a'0000'0001ull;
+};
+
+// The mode's kSamples filter offsets: x, y in view pixels (image order, +y down), z in view
+// intervals; components the mode does not filter are 0. Gaussian by Box-Muller over a
+// splitmix64 stream seeded with `seed`, resampled outside the 3-sigma support; pure CPU and
+// platform-independent, so the GPU pass and the CPU reference use the same offsets.
+std::vector<glm::vec3> reconstructionSamples(Reconstruction mode,
+                                             uint64_t seed = ReconstructionFilter::kDefaultSeed);
 
 class EiaBuilder {
 public:
-    explicit EiaBuilder(const DisplayProfile& profile); // panel-size RGBA8 output texture
+    // Panel-size RGBA8 output texture; `seed` picks the reconstruction samples.
+    explicit EiaBuilder(const DisplayProfile& profile, uint64_t seed = ReconstructionFilter::kDefaultSeed);
     ~EiaBuilder();
     EiaBuilder(const EiaBuilder&) = delete;
     EiaBuilder& operator=(const EiaBuilder&) = delete;
@@ -33,14 +57,20 @@ public:
 
 private:
     DisplayProfile profile_;
+    uint64_t seed_;
     unsigned eia_ = 0;
     unsigned program_ = 0;
 };
 
 // CPU reference of the same mapping (tests, simulated viewer): views are RGBA8 images in
-// image order (row 0 = top), all of size viewWidth x viewHeight.
+// image order (row 0 = top), all of size viewWidth x viewHeight. Mode none is bit-identical
+// to the GPU pass; the filtered modes use the same samples, decoding table and float
+// arithmetic, and differ from it by at most one 8-bit level where the GPU fuses a
+// multiply-add or rounds pow differently (eia_test states the tolerance).
 std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
                                  const std::vector<std::vector<uint8_t>>& views,
-                                 uint32_t viewWidth, uint32_t viewHeight);
+                                 uint32_t viewWidth, uint32_t viewHeight,
+                                 Reconstruction mode = Reconstruction::None,
+                                 uint64_t seed = ReconstructionFilter::kDefaultSeed);
 
 } // namespace lfd::player

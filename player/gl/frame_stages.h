@@ -15,14 +15,16 @@ inline constexpr std::string_view kPointGeneration = "point_generation";
 inline constexpr std::string_view kViewGeneration = "view_generation";
 // lfdpr: per-pixel shading (visibility pipeline) or colour resolve (paper pipeline).
 inline constexpr std::string_view kResolve = "resolve";
+// Supersampling (--ss 2s|2v): averaging the supersampled views down to the display's.
+inline constexpr std::string_view kDownsample = "downsample";
 // Interleaving the views into the panel's elemental image array.
 inline constexpr std::string_view kEia = "eia";
 // The whole frame, around all of the above.
 inline constexpr std::string_view kTotal = "total";
 
 // Pipeline order, for reports.
-inline constexpr std::array<std::string_view, 5> kAll = {kPointGeneration, kViewGeneration, kResolve, kEia,
-                                                         kTotal};
+inline constexpr std::array<std::string_view, 6> kAll = {kPointGeneration, kViewGeneration, kResolve,
+                                                         kDownsample, kEia, kTotal};
 // The stages every renderer's frame has.
 inline constexpr std::array<std::string_view, 3> kRequired = {kViewGeneration, kEia, kTotal};
 

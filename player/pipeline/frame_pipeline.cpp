@@ -1,8 +1,86 @@
 #include "frame_pipeline.h"
 
 #include "frame_stages.h"
+#include "shader_library.h"
+
+#include <epoxy/gl.h>
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
 
 namespace lfd::player {
+
+namespace {
+
+// splitmix64 finaliser: a well-mixed 64-bit hash (for per-frame, per-view jitter).
+uint64_t mix64(uint64_t z)
+{
+    z += 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+// Uniform in [0, 1) from a hash.
+double unitFromHash(uint64_t h) { return double(h >> 11) * 0x1.0p-53; }
+
+} // namespace
+
+std::vector<std::string> supersamplingNames() { return {"1", "2s", "2v"}; }
+
+Supersampling parseSupersampling(const std::string& name)
+{
+    const std::vector<std::string> names = supersamplingNames();
+    for (size_t i = 0; i < names.size(); ++i)
+        if (name == names[i])
+            return Supersampling(uint32_t(i));
+    throw std::invalid_argument("unknown supersampling '" + name + "' (expected: 1, 2s or 2v)");
+}
+
+std::string supersamplingName(Supersampling ss)
+{
+    const std::vector<std::string> names = supersamplingNames();
+    if (size_t(ss) >= names.size())
+        throw std::invalid_argument("unknown supersampling mode " + std::to_string(uint32_t(ss)));
+    return names[size_t(ss)];
+}
+
+FrameSetup supersampledFrame(const FrameSetup& frame, Supersampling ss, uint64_t seed)
+{
+    if (ss == Supersampling::None)
+        return frame;
+    FrameSetup out = frame;
+    out.pointSampling.reset();
+    if (ss == Supersampling::Spatial2x) {
+        // The same cameras; the raster state and the frame constants take the viewport
+        // from the profile.
+        out.profile.viewWidth *= 2;
+        out.profile.viewHeight *= 2;
+        return out;
+    }
+    // Angular: two cameras per view interval, one in each half, at random positions.
+    const uint32_t n = frame.profile.viewCount;
+    out.profile.viewCount = 2 * n;
+    out.cameras.clear();
+    out.clipFromScene.clear();
+    out.eyeScene.clear();
+    uint64_t timeBits = 0;
+    std::memcpy(&timeBits, &frame.time, sizeof(timeBits));
+    const uint64_t frameHash = mix64(seed ^ mix64(timeBits));
+    const glm::dmat4 sceneFromDisplay = glm::inverse(frame.displayFromScene);
+    for (uint32_t i = 0; i < n; ++i)
+        for (uint32_t s = 0; s < 2; ++s) {
+            const double u = unitFromHash(mix64(frameHash + 2 * uint64_t(i) + s));
+            const double position = (double(i) + (double(s) + u) / 2.0) / double(n);
+            const ViewCamera camera = makeViewCameraAt(frame.profile, frame.framing, std::min(position, 1.0));
+            out.cameras.push_back(camera);
+            out.clipFromScene.push_back(glm::mat4(camera.clipFromDisplay * frame.displayFromScene));
+            out.eyeScene.push_back(glm::vec3(sceneFromDisplay * glm::dvec4(camera.eye, 1.0)));
+        }
+    out.pointSampling = std::make_shared<const FrameSetup>(frame);
+    return out;
+}
 
 FramePipeline::FramePipeline(const DisplayProfile& profile, const Scene& scene, double turntablePeriod)
     : profile_(profile), turntablePeriod_(turntablePeriod)
@@ -25,11 +103,56 @@ void FramePipeline::buildEia(GpuTimer& timer, Reconstruction reconstruction)
     eia_->build(*targets_, reconstruction, timer);
 }
 
+FramePipeline::~FramePipeline()
+{
+    if (downsample_)
+        glDeleteProgram(downsample_);
+}
+
+void FramePipeline::setSupersampling(Supersampling ss, uint64_t seed)
+{
+    ssSeed_ = seed;
+    if (ss == ss_)
+        return;
+    ss_ = ss;
+    ssTargets_.reset();
+    if (ss == Supersampling::None)
+        return;
+    const uint32_t n = profile_.viewCount, w = profile_.viewWidth, h = profile_.viewHeight;
+    ssTargets_ = ss == Supersampling::Spatial2x ? std::make_unique<ViewTargets>(n, 2 * w, 2 * h)
+                                                : std::make_unique<ViewTargets>(2 * n, w, h);
+    if (!downsample_)
+        downsample_ = gl::buildProgram({{GL_COMPUTE_SHADER, "view_downsample.comp"}});
+}
+
 void FramePipeline::renderFrame(Renderer& renderer, double time, GpuTimer& timer, Reconstruction reconstruction)
 {
     animate(time);
     timer.begin(stage::kTotal);
-    renderer.render(*scene_, frame_, *targets_, timer);
+    if (ss_ == Supersampling::None) {
+        renderer.render(*scene_, frame_, *targets_, timer);
+    } else {
+        // Supersampled views, then their linear-light mean into the display's views.
+        const FrameSetup frame = supersampledFrame(frame_, ss_, ssSeed_);
+        renderer.render(*scene_, frame, *ssTargets_, timer);
+        timer.begin(stage::kDownsample);
+        glUseProgram(downsample_);
+        glUniform3ui(glGetUniformLocation(downsample_, "targetSize"), targets_->width(), targets_->height(),
+                     targets_->viewCount());
+        glUniform1ui(glGetUniformLocation(downsample_, "mode"),
+                     uint32_t(gl::shaderDefineValue("view_downsample.comp",
+                                                    ss_ == Supersampling::Spatial2x ? "VIEW_DOWNSAMPLE_SPATIAL"
+                                                                                     : "VIEW_DOWNSAMPLE_ANGULAR")));
+        glBindTextureUnit(0, ssTargets_->colorArray());
+        glBindImageTexture(0, targets_->colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glDispatchCompute((targets_->width() + 7) / 8, (targets_->height() + 7) / 8, targets_->viewCount());
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                        GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+        glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glBindTextureUnit(0, 0);
+        glUseProgram(0);
+        timer.end();
+    }
     buildEia(timer, reconstruction);
     timer.end();
 }

@@ -19,9 +19,29 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace lfd::player {
+
+// Supersampling (paper section 4, `--ss`): the renderer draws more samples than the display
+// has, averaged down (linear light, unweighted) to the display's views before the EIA.
+//   None ("1"): the display's views;
+//   Spatial2x ("2s"): the display's cameras at twice the view width and height;
+//   Angular2x ("2v"): twice the views - view i's interval [i, i+1) / N of the cone gets two
+//     cameras at random positions, one in each half, (i + (s + u) / 2) / N for s = 0, 1 and u
+//     uniform in [0, 1) drawn per frame from the seed and the frame time (reproducible).
+//     Point renderers sample the scene for the display's N views (FrameSetup::pointSampling),
+//     so the point cloud does not grow; they only project it into more views.
+enum class Supersampling : uint32_t { None = 0, Spatial2x = 1, Angular2x = 2 };
+Supersampling parseSupersampling(const std::string& name); // "1" | "2s" | "2v"; throws invalid_argument
+std::string supersamplingName(Supersampling ss);
+std::vector<std::string> supersamplingNames(); // in enum order
+
+inline constexpr uint64_t kSupersamplingSeed = 0x2f0a'7d1c'55aa'0002ull;
+
+// The frame a renderer draws under `ss` (frame itself for None); see Supersampling.
+FrameSetup supersampledFrame(const FrameSetup& frame, Supersampling ss, uint64_t seed = kSupersamplingSeed);
 
 // The in-memory outputs of one frame, read back right after it was rendered.
 struct FrameOutputs {
@@ -45,7 +65,12 @@ public:
     const EiaBuilder& eia() const { return *eia_; }
     const FrameSetup& lastFrame() const { return frame_; }
 
-    // Animates to `time`, renders the views with `renderer` and builds the EIA.
+    // Supersampling of later frames (allocates the supersampled targets once per mode).
+    void setSupersampling(Supersampling ss, uint64_t seed = kSupersamplingSeed);
+    Supersampling supersampling() const { return ss_; }
+
+    // Animates to `time`, renders the views with `renderer` (supersampled and averaged
+    // down, stage "downsample", when set) and builds the EIA.
     void renderFrame(Renderer& renderer, double time, GpuTimer& timer,
                      Reconstruction reconstruction = Reconstruction::None);
     // The two halves, for views that come from elsewhere (lfd-bench's gstd cache):
@@ -63,6 +88,15 @@ private:
     std::unique_ptr<ViewTargets> targets_;
     std::unique_ptr<EiaBuilder> eia_;
     FrameSetup frame_;
+    Supersampling ss_ = Supersampling::None;
+    uint64_t ssSeed_ = kSupersamplingSeed;
+    std::unique_ptr<ViewTargets> ssTargets_; // the supersampled views
+    unsigned downsample_ = 0;                // shaders/view_downsample.comp
+
+public:
+    ~FramePipeline();
+    FramePipeline(const FramePipeline&) = delete;
+    FramePipeline& operator=(const FramePipeline&) = delete;
 };
 
 } // namespace lfd::player

@@ -23,6 +23,7 @@ nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageT
     j["profile"] = info.profile;
     j["pack"] = info.pack;
     j["reconstruction"] = info.reconstruction;
+    j["supersampling"] = info.supersampling;
     j["panel_width"] = info.panelWidth;
     j["panel_height"] = info.panelHeight;
     j["view_buffer_bytes"] = info.viewBufferBytes;

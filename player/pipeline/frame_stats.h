@@ -18,7 +18,7 @@
 namespace lfd::player {
 
 struct RunInfo {
-    std::string renderer, gpu, profile, pack, reconstruction;
+    std::string renderer, gpu, profile, pack, reconstruction, supersampling = "1";
     uint32_t views = 0, viewWidth = 0, viewHeight = 0, frames = 0;
     uint32_t panelWidth = 0, panelHeight = 0;
     uint64_t viewBufferBytes = 0, sceneGpuBytes = 0, triangles = 0, drawnTriangles = 0;

@@ -6,6 +6,7 @@
 #include "lfd/framing.h"
 
 #include <glm/glm.hpp>
+#include <memory>
 #include <vector>
 
 namespace lfd::player {
@@ -20,6 +21,13 @@ struct FrameSetup {
     // Per-view clipFromScene = cameras[i].clipFromDisplay * displayFromScene (float, for upload).
     std::vector<glm::mat4> clipFromScene;
     std::vector<glm::vec3> eyeScene; // camera positions in scene space (view-dependent shading)
+    // Angular supersampling (frame_pipeline.h, --ss 2v) renders more views than the
+    // display has; point-based renderers then sample the scene for the display's own
+    // views (this frame), so the point cloud does not grow. Null: sample for `cameras`.
+    std::shared_ptr<const FrameSetup> pointSampling;
+
+    // The frame point sampling is decided for: *pointSampling, else this frame.
+    const FrameSetup& samplingFrame() const { return pointSampling ? *pointSampling : *this; }
 };
 
 // Turntable: one revolution every `turntablePeriod` seconds (0 = no rotation).

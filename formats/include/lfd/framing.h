@@ -60,5 +60,9 @@ struct ViewCamera {
 // Near/far planes are placed around the fitted scene sphere.
 ViewCamera makeViewCamera(const DisplayProfile& profile, const Framing& framing,
                           uint32_t viewIndex, uint32_t viewCount);
+// The camera at any position of the view cone: `conePosition` in [0, 1] (0 = left edge of
+// the cone, 1 = right edge); makeViewCamera(i, N) is makeViewCameraAt((i + 0.5) / N).
+// Angular supersampling places cameras at random positions inside a view's interval.
+ViewCamera makeViewCameraAt(const DisplayProfile& profile, const Framing& framing, double conePosition);
 
 } // namespace lfd

@@ -67,11 +67,14 @@ public:
     {
         // Step 1: buffers sized for this scene, these views, and the last frame's overflow.
         prepareBuffers(scene, frame, targets);
-        uniforms_.upload(frame);
+        // note: points are sampled for frame.samplingFrame() (the display's views under
+        // angular supersampling, so the cloud does not grow) and splatted into frame's.
+        const FrameSetup& sampling = frame.samplingFrame();
+        uniforms_.upload(sampling);
         const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
                                  (options_.textureSplatting ? k_.optionTextureSplatting : 0u) |
                                  (options_.multiviewMipmapping ? k_.optionMvMipmapping : 0u);
-        const LfdprFrameGpu constants = makeLfdprFrame(frame, pointCapacity_, options);
+        const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options);
         glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
         uploadViewInverses(frame);
         bindBuffers(scene);
@@ -86,6 +89,11 @@ public:
         timer.end();
 
         // Step 3: view generation (sections 3.2, 3.3) and the resolve into the targets.
+        if (frame.pointSampling) {
+            uniforms_.upload(frame);
+            const LfdprFrameGpu splatConstants = makeLfdprFrame(frame, pointCapacity_, options);
+            glNamedBufferSubData(frameUbo_, 0, sizeof(splatConstants), &splatConstants);
+        }
         bindBuffers(scene); // the draw loop changed texture and program state, not buffers
         timer.begin(stage::kViewGeneration);
         views_.splat(counters_);

@@ -104,7 +104,10 @@ public:
             throw std::invalid_argument("lfdpr: view targets do not match the frame's profile");
         prepareScene(scene);
         shading_.resize(targets.viewCount(), targets.width(), targets.height());
-        uniforms_.upload(frame);
+        // note: points are sampled for frame.samplingFrame() (the display's views under
+        // angular supersampling, so the cloud does not grow) and splatted into frame's.
+        const FrameSetup& sampling = frame.samplingFrame();
+        uniforms_.upload(sampling);
         uploadCameraLine(frame);
 
         // Step 2: point generation; grown and redone while the buffer overflows.
@@ -113,7 +116,7 @@ public:
         for (;;) {
             const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
                                      (options_.textureSplatting ? k_.optionTextureSplatting : 0u);
-            const LfdprFrameGpu constants = makeLfdprFrame(frame, pointCapacity_, options);
+            const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options);
             glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
             bindBuffers(scene);
             const GLuint zero = 0;
@@ -133,6 +136,13 @@ public:
         }
         timer.end();
         const uint32_t stored = std::min(c.pointCount, pointCapacity_);
+        if (frame.pointSampling) {
+            uniforms_.upload(frame);
+            const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
+                                     (options_.textureSplatting ? k_.optionTextureSplatting : 0u);
+            const LfdprFrameGpu constants = makeLfdprFrame(frame, pointCapacity_, options);
+            glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
+        }
 
         // Step 3: visibility, then shading once per visible pixel.
         bindBuffers(scene);

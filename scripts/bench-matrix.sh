@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The accuracy/speed matrix of issue 8 (paper section 5, Tables 1 and 2): bakes the samples
+# (car, gallery) and the third-party scenes in ../shared/scenes when present, then runs
+# lfd-bench once over all of them at the prototype's 48 views of 480x360 with
+#   renderers mvr, lfdpr  x  --ss 1,2v,2s  x  --aa none,view-spatial
+# against the gold standard gstd, and copies table.md and chart.png (+ svg, results.csv)
+# to docs/bench/. Each configuration is written as soon as it finishes; Ctrl-C keeps them.
+# Usage: bash scripts/bench-matrix.sh [FRAMES (default 1)] [WARMUP (default 1)]
+# Extra lfd-bench flags via LFD_BENCH_FLAGS (e.g. "--aa none,spatial,view,view-spatial").
+# Measured: about 2 hours on the 2-core llvmpipe development machine for 5 scenes.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+frames="${1:-1}"
+warmup="${2:-1}"
+[ -x build/player/lfd-bench ] || bash scripts/build.sh
+out=out/bench-matrix
+mkdir -p "$out/packs"
+./build/samples/lfd-make-samples "$out/samples" --scene all --quiet
+packs=()
+for s in car gallery; do
+  ./build/baker/lfd-bake "$out/samples/$s/$s.gltf" -o "$out/packs/$s.lfdpack" --quiet
+  packs+=("$out/packs/$s.lfdpack")
+done
+if [ -d ../shared/scenes ]; then
+  for dir in ../shared/scenes/*/; do
+    name=$(basename "$dir")
+    gltf=$(ls "$dir"*.gltf "$dir"*.glb 2>/dev/null | head -n 1 || true)
+    [ -n "$gltf" ] || continue
+    ./build/baker/lfd-bake "$gltf" -o "$out/packs/$name.lfdpack" --quiet
+    packs+=("$out/packs/$name.lfdpack")
+  done
+fi
+# shellcheck disable=SC2086
+./build/player/lfd-bench "${packs[@]}" --renderers mvr,lfdpr --ss 1,2v,2s --aa none,view-spatial \
+  --frames "$frames" --warmup "$warmup" --out "$out/run" ${LFD_BENCH_FLAGS:-} || status=$?
+mkdir -p docs/bench
+for f in table.md chart.png chart.svg results.csv; do
+  [ -f "$out/run/$f" ] && cp "$out/run/$f" docs/bench/
+done
+echo "bench-matrix: docs/bench/table.md and chart.png updated from $out/run"
+exit "${status:-0}"

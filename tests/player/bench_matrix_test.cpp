@@ -1,0 +1,149 @@
+// lfd-bench's matrix on a small in-memory scene: every renderer x --ss x --aa
+// configuration runs and is named, the matrix files hold every configuration, the Pareto
+// front is the non-dominated set, a stop request keeps what finished, and a missing chart
+// tool is reported rather than failing.
+#include "gl_test_support.h"
+#include "test_scenes.h"
+
+#include "bench_matrix.h"
+#include "bench_runner.h"
+#include "frame_stages.h"
+
+#include "lfd/display_profile.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace lfd::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+DisplayProfile tinyProfile()
+{
+    return parseDisplayProfile(R"({
+        "format": "lfd-display-profile/1", "name": "matrix-small",
+        "panel_width": 384, "panel_height": 216,
+        "screen_width_mm": 34.54, "screen_height_mm": 19.43,
+        "subpixel_order": "RGB", "lens_width_mm": 0.72, "lens_tilt_deg": -9.66,
+        "view_count": 4, "view_width": 64, "view_height": 48,
+        "view_cone_deg": 40.0, "viewing_distance_mm": 300.0
+    })",
+                               "matrix-small.json");
+}
+
+player::BenchOptions matrixOptions()
+{
+    player::BenchOptions o;
+    o.pack = "scene.lfdpack";
+    o.renderers = {"mvr", "lfdpr"};
+    o.reference = "mvr";
+    o.aa = {"none", "view"};
+    o.ss = {"1", "2v"};
+    o.frames = 1;
+    o.warmup = 0;
+    o.quiet = true;
+    return o;
+}
+
+std::string readText(const fs::path& path)
+{
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class BenchMatrixTest : public GlTest {};
+
+TEST_F(BenchMatrixTest, RunsEveryConfigurationAndWritesTheMatrix)
+{
+    std::ostringstream progress;
+    player::BenchOptions o = matrixOptions();
+    int calls = 0;
+    o.onResult = [&](const player::BenchReport& partial) {
+        ++calls;
+        EXPECT_EQ(partial.results.size(), size_t(calls));
+    };
+    const player::BenchReport report =
+        player::runBenchmark(o, tinyProfile(), cubeAndSphereScene(), "scene.lfdpack", "test GL", progress);
+    const std::vector<std::string> names = {"mvr", "mvr+aa-view", "mvr+ss-2v", "mvr+aa-view+ss-2v",
+                                            "lfdpr", "lfdpr+aa-view", "lfdpr+ss-2v", "lfdpr+aa-view+ss-2v"};
+    ASSERT_EQ(report.results.size(), names.size()); // the reference (mvr) is a timed configuration
+    EXPECT_EQ(calls, int(names.size()));
+    for (size_t i = 0; i < names.size(); ++i) {
+        EXPECT_EQ(report.results[i].name, names[i]);
+        EXPECT_TRUE(report.results[i].timed);
+        EXPECT_GT(report.results[i].stageMean(std::string(player::stage::kTotal)), 0.0);
+        EXPECT_EQ(report.results[i].stages.count(std::string(player::stage::kDownsample)) == 1,
+                  report.results[i].ss == "2v")
+            << names[i];
+        EXPECT_TRUE(std::isfinite(report.results[i].lens.rmse));
+    }
+    // mvr against itself: identical; the reconstruction changes the EIA, not the views.
+    EXPECT_EQ(report.results[0].eia.rmse, 0.0);
+    EXPECT_GT(report.results[1].eia.rmse, 0.0);
+    EXPECT_EQ(report.results[1].centreView.rmse, 0.0);
+    // lfdpr keeps its point count under 2v.
+    EXPECT_EQ(report.results[4].extraValue("points"), report.results[6].extraValue("points"));
+    EXPECT_EQ(report.mvrBaseline(report.results[7])->name, "mvr+ss-2v");
+
+    const fs::path dir = testOutputDir("bench_matrix");
+    player::writeMatrixTables(dir, {report});
+    const std::string csv = readText(dir / "results.csv");
+    size_t lines = 0;
+    for (char c : csv)
+        lines += c == '\n';
+    EXPECT_EQ(lines, names.size() + 1);
+    EXPECT_NE(csv.find("lfdpr+aa-view+ss-2v,lfdpr,view,2v,1,"), std::string::npos);
+    const std::string table = readText(dir / "table.md");
+    EXPECT_NE(table.find("| scene (tris) | views | method | AA | SS | point gen ms (points)"), std::string::npos);
+    EXPECT_NE(table.find("## Pareto front"), std::string::npos);
+    const nlohmann::json j = nlohmann::json::parse(readText(dir / "results.json"));
+    EXPECT_EQ(j["runs"][0]["renderers"].size(), names.size());
+    EXPECT_FALSE(j["interrupted"].get<bool>());
+
+    // The front: every configuration on it is not dominated; every one off it is.
+    const std::vector<bool> front = player::paretoFront(report);
+    const auto t = [&](size_t i) { return report.results[i].stageMean(std::string(player::stage::kTotal)); };
+    for (size_t i = 0; i < front.size(); ++i) {
+        bool dominated = false;
+        for (size_t k = 0; k < front.size(); ++k)
+            dominated |= k != i && t(k) <= t(i) && report.results[k].eia.rmse <= report.results[i].eia.rmse &&
+                         (t(k) < t(i) || report.results[k].eia.rmse < report.results[i].eia.rmse);
+        EXPECT_EQ(front[i], !dominated) << report.results[i].name;
+    }
+}
+
+TEST_F(BenchMatrixTest, StopRequestKeepsWhatFinished)
+{
+    std::ostringstream progress;
+    player::BenchOptions o = matrixOptions();
+    o.renderers = {"mvr"};
+    int finished = 0;
+    o.onResult = [&](const player::BenchReport&) { ++finished; };
+    o.shouldStop = [&] { return finished >= 2; };
+    const player::BenchReport report =
+        player::runBenchmark(o, tinyProfile(), cubeAndSphereScene(), "scene.lfdpack", "test GL", progress);
+    EXPECT_TRUE(report.interrupted);
+    ASSERT_EQ(report.results.size(), 2u);
+    EXPECT_EQ(report.results[0].name, "mvr");
+    EXPECT_EQ(report.results[1].name, "mvr+aa-view");
+}
+
+TEST(BenchMatrix, MissingChartToolIsReportedNotFatal)
+{
+    const fs::path dir = testOutputDir("bench_matrix_nochart");
+    ::setenv("LFD_BENCH_CHART_SCRIPT", "/nonexistent/bench_chart.py", 1);
+    std::string why;
+    EXPECT_FALSE(player::drawMatrixChart(dir, why));
+    ::unsetenv("LFD_BENCH_CHART_SCRIPT");
+    EXPECT_NE(why.find("not found"), std::string::npos) << why;
+}
+
+} // namespace
+} // namespace lfd::test
