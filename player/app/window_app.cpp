@@ -98,9 +98,11 @@ void onScroll(GLFWwindow* window, double xoffset, double yoffset)
 
 void onMouseButton(GLFWwindow* window, int button, int action, int mods)
 {
+    // note: the drag starts at the last cursor event's position (onCursor), not at a
+    // fresh glfwGetCursorPos: that asks the server for the pointer now, which may already
+    // be past motion events still queued, and their movement would be lost.
     Input& input = inputOf(window);
     const bool down = action == GLFW_PRESS;
-    glfwGetCursorPos(window, &input.cursorX, &input.cursorY);
     if (button == GLFW_MOUSE_BUTTON_LEFT) {
         const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
         input.orbiting = down && !shift;
@@ -127,6 +129,7 @@ void onCursor(GLFWwindow* window, double x, double y)
 
 void attachInput(GLFWwindow* window, Input& input)
 {
+    glfwGetCursorPos(window, &input.cursorX, &input.cursorY);
     glfwSetWindowUserPointer(window, &input);
     glfwSetKeyCallback(window, onKey);
     glfwSetScrollCallback(window, onScroll);
@@ -383,6 +386,8 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
 
     Input input;
     attachInput(window, input);
+    if (setup.fullscreen) // a cursor over the lenses shows in every view; drags still work
+        glfwSetInputMode(window, GLFW_CURSOR, GLFW_CURSOR_HIDDEN);
     GLFWwindow* companion = createCompanion(setup, input);
 
     BlitSource quilt, viewer;

@@ -1,5 +1,5 @@
-// Xvfb for the windowed tests: a virtual X server of a chosen screen size on a free display
-// number, stopped (by its pid) when the object goes away. With a framebuffer directory
+// Xvfb for the windowed tests: a virtual X server of a chosen screen size on a display
+// number it picks itself, stopped (by its pid) when the object goes away. With a framebuffer directory
 // (-fbdir) the server keeps its screen in an XWD file that readScreen() decodes - a
 // capture of what the screen shows, independent of the program under test (so a window
 // at the wrong place, scaled, or colour-converted shows up).
@@ -8,6 +8,7 @@
 #include "image_output.h"
 
 #include <chrono>
+#include <cerrno>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -37,42 +38,49 @@ inline std::string findXvfb()
 class XvfbServer {
 public:
     // `screen`: "WxHxDEPTH"; `fbdir`: empty, or a directory for the screen's XWD file.
+    // note: Xvfb picks a free display number itself and reports it through -displayfd:
+    // choosing one by looking for free sockets races with other test runs on the machine
+    // (two servers start on one number, one exits, and the loser's test talks to the
+    // winner's server until that goes away).
     explicit XvfbServer(const std::string& binary, const std::string& screen = "1280x800x24",
                         const std::filesystem::path& fbdir = {})
         : fbdir_(fbdir)
     {
-        namespace fs = std::filesystem;
-        for (int n = 87; n < 140 && pid_ <= 0; ++n) {
-            if (fs::exists("/tmp/.X11-unix/X" + std::to_string(n)) || fs::exists("/tmp/.X" + std::to_string(n) + "-lock"))
-                continue;
-            const std::string display = ":" + std::to_string(n);
-            std::vector<std::string> args = {binary, display, "-screen", "0", screen, "-nolisten", "tcp"};
-            if (!fbdir.empty())
-                args.insert(args.end(), {"-fbdir", fbdir.string()});
-            std::vector<char*> argv;
-            for (std::string& a : args)
-                argv.push_back(a.data());
-            argv.push_back(nullptr);
-            pid_t pid = 0;
-            if (posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ) != 0)
-                return;
-            // Wait for its socket (or for it to exit because the display was taken).
-            for (int i = 0; i < 100; ++i) {
-                if (fs::exists("/tmp/.X11-unix/X" + std::to_string(n))) {
-                    pid_ = pid;
-                    display_ = display;
-                    break;
-                }
-                int status = 0;
-                if (waitpid(pid, &status, WNOHANG) == pid)
-                    break;
-                std::this_thread::sleep_for(std::chrono::milliseconds(50));
-            }
-            if (pid_ <= 0) {
-                kill(pid, SIGTERM);
-                waitpid(pid, nullptr, 0);
-            }
+        int fds[2];
+        if (pipe(fds) != 0)
+            return;
+        // The child inherits the write end under its own number (pipes are not close-on-exec).
+        std::vector<std::string> args = {binary, "-displayfd", std::to_string(fds[1]), "-screen", "0", screen,
+                                         "-nolisten", "tcp"};
+        if (!fbdir.empty())
+            args.insert(args.end(), {"-fbdir", fbdir.string()});
+        std::vector<char*> argv;
+        for (std::string& a : args)
+            argv.push_back(a.data());
+        argv.push_back(nullptr);
+        posix_spawn_file_actions_t actions;
+        posix_spawn_file_actions_init(&actions);
+        posix_spawn_file_actions_addclose(&actions, fds[0]);
+        pid_t pid = 0;
+        const bool spawned = posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ) == 0;
+        posix_spawn_file_actions_destroy(&actions);
+        close(fds[1]);
+        // The display number followed by a newline once the server accepts connections;
+        // end of file if it failed.
+        std::string number;
+        char c = 0;
+        while (spawned && read(fds[0], &c, 1) == 1 && c != '\n')
+            number += c;
+        close(fds[0]);
+        if (!spawned)
+            return;
+        if (number.empty() || number.find_first_not_of("0123456789") != std::string::npos) {
+            kill(pid, SIGTERM);
+            waitpid(pid, nullptr, 0);
+            return;
         }
+        pid_ = pid;
+        display_ = ":" + number;
     }
     ~XvfbServer()
     {
