@@ -9,7 +9,7 @@ packages=(
   libopenimageio-dev openimageio-tools libxxhash-dev libcli11-dev libosd-dev
   libegl-dev libepoxy-dev libglfw3-dev libegl-mesa0 libgl1-mesa-dri mesa-utils
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth xdotool assimp-testmodels glslang-tools
+  xvfb xauth xdotool assimp-testmodels glslang-tools ffmpeg
   clang libclang-rt-14-dev python3
 )
 

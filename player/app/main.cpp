@@ -1,10 +1,15 @@
-// lfd-play: renders a packed scene (.lfdpack) as N light field views and the panel's EIA,
-// headless (EGL) or in a window (GLFW). See `lfd-play --help`.
+// lfd-play: renders a packed scene (.lfdpack), or plays quilts made elsewhere, as N light
+// field views and the panel's EIA, headless (EGL), in a window or fullscreen on the panel's
+// monitor (GLFW). See `lfd-play --help` and README "Driving a display".
+#include "camera_controls.h"
 #include "cli_support.h"
 #include "frame_stages.h"
 #include "frame_stats.h"
 #include "gl_context.h"
 #include "player_session.h"
+#include "quilt.h"
+#include "quilt_input.h"
+#include "quilt_video.h"
 #include "window_app.h"
 
 #include "lfd/display_profile.h"
@@ -16,95 +21,453 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <unistd.h>
 
 namespace {
 
+namespace fs = std::filesystem;
 using lfd::cli::UsageError;
 using lfd::cli::checkOutputPath;
 using lfd::cli::parseSize;
 using lfd::player::PlayOptions;
 
-int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, lfd::Scene scene,
-                const std::string& packName)
+const char* kFooter =
+    "Window keys: R renderer, C reconstruction, O output (EIA, quilt, single view, simulated viewer), "
+    "space pause/resume, Left/Right move the simulated viewer, Esc quit.\n"
+    "Camera: left drag orbit, right or middle drag (or Shift+left drag) pan, wheel zoom, ] / [ focal plane "
+    "nearer / farther (the depth shown at zero parallax), = / - depthiness (view-cone scale) up / down, "
+    "T turntable on/off, Home or Backspace reset.\n"
+    "While the camera moves the window renders a preview (every 2nd view at half size, --preview-*) and "
+    "returns to full quality when input stops.";
+
+// Flag values parsed after CLI11 (sizes, pairs, names).
+struct RawFlags {
+    std::string pack, viewSize, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility";
+    uint32_t views = 0, frame = 0;
+    bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false, noTurntable = false;
+    bool listMonitors = false;
+    CLI::Option *viewsOpt = nullptr, *sizeOpt = nullptr, *framesOpt = nullptr, *frameOpt = nullptr;
+    CLI::Option *monitorOpt = nullptr, *windowSizeOpt = nullptr;
+};
+
+std::string rendererList()
 {
-    using namespace lfd::player;
-    std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless();
-    std::printf("lfd-play: %s\n", context->describeWithCodePaths().c_str());
-    std::fflush(stdout);
-    context->require(options.renderer == "mvr-layered");
+    std::string renderers;
+    for (const std::string& name : lfd::player::allRendererNames())
+        renderers += (renderers.empty() ? "" : "|") + name;
+    return renderers;
+}
 
-    const uint64_t triangles = scene.triangleCount();
-    const uint64_t drawnTriangles = scene.drawnTriangleCount();
-    PlayerSession session(options, profile, std::move(scene), packName);
+void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
+{
+    app.add_option("PACK", f.pack, "packed scene from lfd-bake (or --quilt-in instead)");
+    app.add_flag("--headless", o.headless, "render without a window (EGL)");
+    app.add_option("--renderer", o.renderer, "renderer: " + rendererList())->capture_default_str();
+    app.add_flag("--no-lfd-sampling", f.noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
+    app.add_flag("--no-texture-splatting", f.noTextureSplatting, "lfdpr: no density reduction by texture");
+    app.add_flag("--no-mv-mipmapping", f.noMvMipmapping,
+                 "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
+    app.add_option("--atomics", f.atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
+    app.add_option("--lfdpr-pipeline", f.pipeline,
+                   "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
+        ->capture_default_str();
+    app.add_option("--gstd-factor", o.rendererOptions.gstd.factor,
+                   "gstd: sub-views render at this many times the view resolution (slow gold standard)")
+        ->capture_default_str();
+    app.add_option("--display", o.displayProfile,
+                   "display profile JSON or Looking Glass visual.json (default: the paper's prototype)");
+    f.viewsOpt = app.add_option("--views", f.views, "number of views (overrides the profile)");
+    f.sizeOpt = app.add_option("--view-size", f.viewSize, "view size WxH (overrides the profile)");
+    f.framesOpt = app.add_option("--frames", o.frames,
+                                 "frames to render (timing; windowed: exit after them; with --quilt: a sequence)")
+                      ->capture_default_str();
+    f.frameOpt = app.add_option("--frame", f.frame, "frame whose outputs are written (default: the last)");
+    app.add_option("--fps", o.fps, "frame k is at time k / fps")->capture_default_str();
+    app.add_option("--turntable-period", o.turntablePeriod, "seconds per turntable revolution (0 = still)")
+        ->capture_default_str();
+    app.add_option("--aa,--reconstruction", o.reconstruction,
+                   "EIA reconstruction: none|spatial|view|view-spatial (Gaussian, 8 seeded samples)")
+        ->capture_default_str();
+    app.add_option("--ss", o.supersampling,
+                   "supersampling: 1 | 2s (views at twice the resolution) | 2v (twice the views, random "
+                   "angles in each view interval), averaged down")
+        ->capture_default_str();
+}
 
-    // Render F frames of the rotating scene; read the outputs back right after frame K.
-    const uint32_t outputFrame = options.outputFrame.value_or(options.frames - 1);
-    const bool wantOutputs = !options.eiaOut.empty() || !options.quiltOut.empty() ||
-                             !options.viewsOut.empty() || !options.viewerOut.empty();
-    FrameOutputs outputs;
-    for (uint32_t k = 0; k < options.frames; ++k) {
-        session.renderFrame(double(k) / options.fps);
-        if (k == outputFrame && wantOutputs)
-            outputs = session.readOutputs(k);
+void addOutputFlags(CLI::App& app, PlayOptions& o)
+{
+    app.add_option("--out", o.eiaOut, "EIA PNG (panel resolution)");
+    app.add_option("--quilt", o.quiltOut,
+                   "quilt PNG (a _qsCxRaA suffix is added); with --frames N > 1 and no --frame: one numbered "
+                   "quilt per frame (NAME_0000_qs...png)");
+    app.add_option("--quilt-video", o.quiltVideoOut,
+                   "every frame's quilt as a video (.mp4 H.264 or .webm VP9, via ffmpeg; a _qs suffix is added)");
+    app.add_option("--views-out", o.viewsOut, "directory for view_000.png ... (view 0 = leftmost)");
+    app.add_option("--stats", o.statsOut, "stats JSON (and a CSV beside it)");
+    app.add_option("--viewer-out", o.viewerOut, "simulated viewer PNG");
+    app.add_option("--viewer-pos", o.viewerPosition, "simulated viewer position in views [0, N) (default N/2)");
+}
+
+void addWindowFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
+{
+    app.add_option("--screenshot", o.screenshot, "windowed: save the window after the last frame and exit");
+    f.windowSizeOpt = app.add_option("--window-size", f.windowSize, "windowed: window size WxH (default 1280x800)");
+    app.add_option("--show", o.show, "windowed: output shown first: eia|quilt|view|viewer")->capture_default_str();
+    app.add_flag("--fullscreen", o.fullscreen,
+                 "borderless fullscreen on the panel's monitor, the EIA pixel for pixel (vsync on)");
+    f.monitorOpt = app.add_option("--monitor", o.monitor,
+                                  "fullscreen monitor: INDEX or NAME (default: the one whose mode is the panel's)");
+    app.add_flag("--allow-mismatch", o.allowMismatch,
+                 "fullscreen on a monitor of another size: centre the EIA unscaled instead of refusing");
+    app.add_flag("--list-monitors", f.listMonitors, "list the monitors and whether each matches the panel, then exit");
+    app.add_option("--preview", f.preview,
+                   "responsive preview: off|auto (while the camera moves; window default)|always (default headless: off)");
+    app.add_option("--preview-view-step", o.previewShape.viewStep, "preview: every K-th view")->capture_default_str();
+    app.add_option("--preview-size-divisor", o.previewShape.sizeDivisor, "preview: views at 1/D of the size")
+        ->capture_default_str();
+    app.add_option("--preview-hold", o.previewHoldSeconds, "preview: seconds after the last input")
+        ->capture_default_str();
+}
+
+void addCameraFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
+{
+    app.add_option("--orbit", f.orbit, "orbit YAW,PITCH in degrees (yaw: front turns right; pitch: front turns down)");
+    app.add_option("--zoom", o.controls.zoom, "scene scale (2 = twice as large)")->capture_default_str();
+    app.add_option("--pan", f.pan, "shift X,Y in mm along the screen (+x right, +y up)");
+    app.add_option("--focal-depth", o.controls.focalDepthMm,
+                   "depth in mm (+ toward the viewer, from the scene centre) shown at zero parallax")
+        ->capture_default_str();
+    app.add_option("--depthiness", o.controls.depthiness, "view-cone scale (0 flat, 1 the profile's cone)")
+        ->capture_default_str();
+    app.add_flag("--no-turntable", f.noTurntable, "no turntable rotation");
+}
+
+void addQuiltInputFlags(CLI::App& app, PlayOptions& o)
+{
+    app.add_option("--quilt-in", o.quiltIn,
+                   "play a quilt (FILE_qs{cols}x{rows}a{aspect}.png) or a folder of them (slideshow) instead of a pack");
+    app.add_option("--quilt-views", o.quiltViews, "views in the quilt when its last tiles are empty (default: all)");
+    app.add_option("--slide-seconds", o.slideSeconds, "seconds per quilt of a folder")->capture_default_str();
+}
+
+// Step 1: flag values, before touching files or the GPU.
+void validateRenderFlags(PlayOptions& o, const RawFlags& f)
+{
+    if (*f.viewsOpt) {
+        if (f.views == 0 || f.views > 2048)
+            throw UsageError("--views: expected 1..2048, got " + std::to_string(f.views));
+        o.views = f.views;
     }
-    session.timer().finish();
-    const auto stages = session.timer().stages(); // timing frames only
-    if (outputFrame >= options.frames && wantOutputs) {
-        // Frame K after the timed frames: rendered once more, not counted in the stats.
-        session.renderFrame(double(outputFrame) / options.fps);
-        outputs = session.readOutputs(outputFrame);
-        session.timer().finish();
+    if (*f.sizeOpt) {
+        const auto [w, h] = parseSize("--view-size", f.viewSize);
+        o.viewWidth = w;
+        o.viewHeight = h;
     }
-
-    // Outputs: each file atomic; if one fails, remove the others written by this run.
-    std::vector<std::filesystem::path> written;
+    if (o.frames == 0)
+        throw UsageError("--frames: must be at least 1");
+    o.framesGiven = bool(*f.framesOpt);
+    if (*f.frameOpt)
+        o.outputFrame = f.frame;
+    if (!std::isfinite(o.fps) || o.fps <= 0.0)
+        throw UsageError("--fps: must be a positive number");
+    if (!std::isfinite(o.turntablePeriod) || o.turntablePeriod < 0.0)
+        throw UsageError("--turntable-period: must be >= 0");
+    lfd::player::LfdprOptions& lfdpr = o.rendererOptions.lfdpr;
+    lfdpr.lfdBiasedSampling = !f.noLfdSampling;
+    lfdpr.textureSplatting = !f.noTextureSplatting;
+    lfdpr.multiviewMipmapping = !f.noMvMipmapping;
     try {
-        if (wantOutputs)
-            writeFrameOutputs(options, profile, outputs, written);
-        if (!options.statsOut.empty()) {
-            RunInfo info;
-            info.renderer = session.renderer().name();
-            info.gpu = context->caps().renderer + " / " + context->caps().version;
-            info.profile = profile.name;
-            info.pack = packName;
-            info.reconstruction = options.reconstruction;
-            info.supersampling = options.supersampling;
-            info.views = profile.viewCount;
-            info.viewWidth = profile.viewWidth;
-            info.viewHeight = profile.viewHeight;
-            info.frames = options.frames;
-            info.panelWidth = profile.panelWidth;
-            info.panelHeight = profile.panelHeight;
-            info.viewBufferBytes = session.targets().bytes();
-            info.sceneGpuBytes = session.scene().gpuBytes();
-            info.triangles = triangles;
-            info.drawnTriangles = drawnTriangles;
-            info.extra = session.renderer().extraStats();
-            writeStats(options.statsOut, info, stages);
-            written.push_back(options.statsOut);
-        }
-    } catch (...) {
-        for (const auto& path : written)
-            std::filesystem::remove(path);
-        throw;
+        lfdpr.atomics = lfd::player::parseLfdprAtomics(f.atomics);
+        lfdpr.pipeline = lfd::player::parseLfdprPipeline(f.pipeline);
+    } catch (const std::exception& e) {
+        throw UsageError(e.what());
     }
+    try {
+        lfd::player::validateGstdOptions(o.rendererOptions.gstd);
+    } catch (const std::exception& e) {
+        throw UsageError(std::string("--gstd-factor: ") + e.what());
+    }
+    if (!lfd::player::isKnownRenderer(o.renderer))
+        throw UsageError("--renderer: unknown renderer '" + o.renderer + "' (known: " + rendererList() + ")");
+    try {
+        lfd::player::parseReconstruction(o.reconstruction);
+    } catch (const std::exception& e) {
+        throw UsageError(std::string("--aa: ") + e.what());
+    }
+    try {
+        lfd::player::parseSupersampling(o.supersampling);
+    } catch (const std::exception& e) {
+        throw UsageError(std::string("--ss: ") + e.what());
+    }
+}
 
+void validateWindowFlags(PlayOptions& o, const RawFlags& f)
+{
+    if (!f.windowSize.empty())
+        std::tie(o.windowWidth, o.windowHeight) = parseSize("--window-size", f.windowSize);
+    if (o.show != "eia" && o.show != "quilt" && o.show != "view" && o.show != "viewer")
+        throw UsageError("--show: expected eia, quilt, view or viewer, got '" + o.show + "'");
+    if (o.fullscreen && o.headless)
+        throw UsageError("--fullscreen: cannot be combined with --headless");
+    if (o.fullscreen && *f.windowSizeOpt)
+        throw UsageError("--window-size: a fullscreen window takes the monitor's size");
+    if ((*f.monitorOpt || o.allowMismatch) && !o.fullscreen)
+        throw UsageError(std::string(*f.monitorOpt ? "--monitor" : "--allow-mismatch") + ": needs --fullscreen");
+    if (!f.preview.empty()) {
+        try {
+            o.preview = lfd::player::parsePreviewMode(f.preview);
+        } catch (const std::exception& e) {
+            throw UsageError(std::string("--preview: ") + e.what());
+        }
+    }
+    if (o.previewShape.viewStep == 0 || o.previewShape.sizeDivisor == 0)
+        throw UsageError("--preview-view-step and --preview-size-divisor: must be at least 1");
+    if (!std::isfinite(o.previewHoldSeconds) || o.previewHoldSeconds < 0.0)
+        throw UsageError("--preview-hold: must be >= 0");
+}
+
+void validateCameraFlags(PlayOptions& o, const RawFlags& f)
+{
+    auto pair = [](const char* flag, const std::string& text) {
+        const auto value = lfd::player::parseNumberPair(text);
+        if (!value)
+            throw UsageError(std::string(flag) + ": expected two numbers A,B, got '" + text + "'");
+        return *value;
+    };
+    if (!f.orbit.empty()) {
+        const glm::dvec2 orbit = pair("--orbit", f.orbit);
+        o.controls.yawDeg = orbit.x;
+        o.controls.pitchDeg = orbit.y;
+    }
+    if (!f.pan.empty())
+        o.controls.panMm = pair("--pan", f.pan);
+    o.controls.turntable = !f.noTurntable;
+}
+
+void validateOutputFlags(PlayOptions& o)
+{
+    checkOutputPath("--out", o.eiaOut);
+    checkOutputPath("--quilt", o.quiltOut);
+    checkOutputPath("--stats", o.statsOut);
+    checkOutputPath("--viewer-out", o.viewerOut);
+    checkOutputPath("--screenshot", o.screenshot);
+    checkOutputPath("--quilt-video", o.quiltVideoOut);
+    if (!o.quiltVideoOut.empty()) {
+        try {
+            lfd::player::checkVideoExtension(o.quiltVideoOut);
+        } catch (const std::exception& e) {
+            throw UsageError(std::string("--quilt-video: ") + e.what());
+        }
+        if (!o.headless)
+            throw UsageError("--quilt-video: needs --headless");
+    }
+    if (!o.viewsOut.empty() && fs::exists(o.viewsOut) && !fs::is_directory(o.viewsOut))
+        throw UsageError("--views-out: '" + o.viewsOut.string() + "' is not a directory");
+}
+
+void validateInputFlags(PlayOptions& o, const RawFlags& f)
+{
+    o.pack = f.pack;
+    if (f.listMonitors)
+        return;
+    if (o.quiltIn.empty() == o.pack.empty())
+        throw UsageError(o.pack.empty() ? "PACK: give a pack file or --quilt-in (see --help)"
+                                        : "--quilt-in: give either a pack or --quilt-in, not both");
+    if (!o.quiltIn.empty()) {
+        if (*f.viewsOpt || *f.sizeOpt)
+            throw UsageError(std::string(*f.viewsOpt ? "--views" : "--view-size") +
+                             ": the quilt's layout gives the views with --quilt-in");
+        if (!std::isfinite(o.slideSeconds) || o.slideSeconds <= 0.0)
+            throw UsageError("--slide-seconds: must be a positive number");
+    }
+}
+
+// Step 2: the display profile with the command-line overrides.
+lfd::DisplayProfile loadProfile(const PlayOptions& o)
+{
+    lfd::DisplayProfile profile =
+        o.displayProfile.empty() ? lfd::prototypeDisplayProfile() : lfd::loadDisplayProfile(o.displayProfile);
+    profile = lfd::withViews(profile, o.views.value_or(profile.viewCount), o.viewWidth.value_or(profile.viewWidth),
+                             o.viewHeight.value_or(profile.viewHeight));
+    if (!o.viewerOut.empty() && o.viewerPosition >= double(profile.viewCount))
+        throw UsageError("--viewer-pos: must be in [0, " + std::to_string(profile.viewCount) + ")");
+    try {
+        lfd::player::validateViewControls(o.controls, profile.viewConeDeg);
+    } catch (const std::exception& e) {
+        throw UsageError(e.what());
+    }
+    return profile;
+}
+
+// "view_generation 812.30 ms, eia 20.10 ms, total 832.50 ms" in pipeline order.
+std::string stageSummary(const std::map<std::string, lfd::player::StageTimes>& stages)
+{
     std::string summary;
-    // Pipeline order; a renderer's other stages (e.g. lfdpr's point_generation, resolve).
-    for (const std::string_view stage : stage::kAll)
+    for (const std::string_view stage : lfd::player::stage::kAll)
         if (auto it = stages.find(std::string(stage)); it != stages.end()) {
             char part[96];
             std::snprintf(part, sizeof(part), "%s%.*s %.2f ms", summary.empty() ? "" : ", ", int(stage.size()),
                           stage.data(), it->second.mean());
             summary += part;
         }
-    for (const auto& [name, value] : session.renderer().extraStats())
-        if (name == "points")
-            summary += ", " + std::to_string(uint64_t(value)) + " points";
-    std::printf("lfd-play: %s, %u views of %ux%u, %u frame(s), mean GPU time: %s\n",
-                session.renderer().name().c_str(), profile.viewCount, profile.viewWidth,
-                profile.viewHeight, options.frames, summary.c_str());
-    return 0;
+    return summary;
+}
+
+// The numbered quilt sequence and video of a headless run: where the frames go, and
+// whether they are kept (--quilt) or only feed the video (a temporary folder).
+struct Sequence {
+    bool active = false;
+    fs::path base;       // quiltSequenceFileName's `requested`
+    fs::path tempFolder; // set when only the video needs the frames
+    std::vector<fs::path> frames;
+    lfd::DisplayProfile profile; // of the frames written (a preview's views are fewer)
+};
+
+Sequence planSequence(const PlayOptions& o)
+{
+    Sequence s;
+    const bool animatedQuilt = !o.quiltOut.empty() && o.frames > 1 && !o.outputFrame;
+    s.active = animatedQuilt || !o.quiltVideoOut.empty();
+    if (!s.active)
+        return s;
+    if (!o.quiltOut.empty()) {
+        s.base = o.quiltOut;
+        return s;
+    }
+    // Video only: frames in a temporary folder beside the video, removed afterwards.
+    if (lfd::player::findOnPath("ffmpeg").empty())
+        throw std::runtime_error("--quilt-video: ffmpeg is missing (not on PATH; install the Debian package "
+                                 "'ffmpeg')");
+    s.tempFolder = o.quiltVideoOut.parent_path() / (".lfd-quilt-frames-" + std::to_string(getpid()));
+    fs::create_directories(s.tempFolder);
+    s.base = s.tempFolder / "frame.png";
+    return s;
+}
+
+// Encodes the sequence; a failure is reported but keeps the sequence (it is complete).
+int encodeVideo(const PlayOptions& o, Sequence& s)
+{
+    int status = 0;
+    if (!o.quiltVideoOut.empty()) {
+        const lfd::player::QuiltLayout layout = lfd::player::chooseQuiltLayout(s.profile);
+        const fs::path video = lfd::player::quiltFileName(o.quiltVideoOut, layout);
+        try {
+            lfd::player::encodeQuiltVideo(lfd::player::quiltSequencePattern(s.base, layout), o.fps, video);
+            std::printf("lfd-play: quilt video %s (%zu frames)\n", video.string().c_str(), s.frames.size());
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "lfd-play: %s\n", lfd::cli::oneLine(e.what()).c_str());
+            status = 1;
+        }
+    }
+    if (!s.tempFolder.empty())
+        fs::remove_all(s.tempFolder);
+    return status;
+}
+
+lfd::player::RunInfo runInfo(lfd::player::PlayerSession& session, const PlayOptions& o, const lfd::gl::GlContext& c,
+                             uint64_t triangles, uint64_t drawnTriangles)
+{
+    const lfd::DisplayProfile& profile = session.profile();
+    lfd::player::RunInfo info;
+    info.renderer = session.rendererName();
+    info.gpu = c.caps().renderer + " / " + c.caps().version;
+    info.profile = profile.name;
+    info.pack = session.packName();
+    info.reconstruction = o.reconstruction;
+    info.supersampling = o.supersampling;
+    info.views = profile.viewCount;
+    info.viewWidth = profile.viewWidth;
+    info.viewHeight = profile.viewHeight;
+    info.frames = o.frames;
+    info.panelWidth = profile.panelWidth;
+    info.panelHeight = profile.panelHeight;
+    info.viewBufferBytes = session.targets().bytes();
+    info.sceneGpuBytes = session.quiltInput() ? 0 : session.scene().gpuBytes();
+    info.triangles = triangles;
+    info.drawnTriangles = drawnTriangles;
+    if (!session.quiltInput())
+        info.extra = session.renderer().extraStats();
+    return info;
+}
+
+int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, std::optional<lfd::Scene> scene,
+                std::vector<fs::path> quilts)
+{
+    using namespace lfd::player;
+    std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless();
+    std::printf("lfd-play: %s\n", context->describeWithCodePaths().c_str());
+    std::fflush(stdout);
+    context->require(options.renderer == "mvr-layered" && scene);
+
+    const uint64_t triangles = scene ? scene->triangleCount() : 0;
+    const uint64_t drawnTriangles = scene ? scene->drawnTriangleCount() : 0;
+    const std::string packName = options.pack.filename().string();
+    PlayerSession session = scene ? PlayerSession(options, profile, std::move(*scene), packName)
+                                  : PlayerSession(options, profile, std::move(quilts));
+    const FrameQuality quality =
+        options.preview == PreviewMode::Always ? FrameQuality::Preview : FrameQuality::Full;
+    GpuTimer& timer = quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
+
+    // Render F frames; read the outputs back right after frame K; a sequence keeps every quilt.
+    Sequence sequence = planSequence(options);
+    const uint32_t outputFrame = options.outputFrame.value_or(options.frames - 1);
+    PlayOptions single = options;
+    if (sequence.active)
+        single.quiltOut.clear();
+    const bool wantOutputs = !single.eiaOut.empty() || !single.quiltOut.empty() || !single.viewsOut.empty() ||
+                             !single.viewerOut.empty();
+    std::vector<fs::path> written;
+    FrameOutputs outputs;
+    lfd::DisplayProfile outputProfile = profile;
+    try {
+        for (uint32_t k = 0; k < options.frames; ++k) {
+            session.renderFrame(double(k) / options.fps, quality);
+            if (k == outputFrame && wantOutputs) {
+                outputs = session.readOutputs(k);
+                outputProfile = session.profile();
+            }
+            if (sequence.active) {
+                sequence.profile = session.profile();
+                sequence.frames.push_back(writeQuiltFrame(sequence.base, sequence.profile, session.readOutputs(k), k));
+                if (sequence.tempFolder.empty())
+                    written.push_back(sequence.frames.back());
+            }
+        }
+        timer.finish();
+        const auto stages = timer.stages(); // timing frames only
+        if (outputFrame >= options.frames && wantOutputs) {
+            // Frame K after the timed frames: rendered once more, not counted in the stats.
+            session.renderFrame(double(outputFrame) / options.fps, quality);
+            outputs = session.readOutputs(outputFrame);
+            outputProfile = session.profile();
+            timer.finish();
+        }
+
+        // Outputs: each file atomic; if one fails, remove the others written by this run.
+        if (wantOutputs)
+            writeFrameOutputs(single, outputProfile, outputs, written);
+        if (!options.statsOut.empty()) {
+            writeStats(options.statsOut, runInfo(session, options, *context, triangles, drawnTriangles), stages);
+            written.push_back(options.statsOut);
+        }
+
+        std::string summary = stageSummary(stages);
+        if (!session.quiltInput())
+            for (const auto& [name, value] : session.renderer().extraStats())
+                if (name == "points")
+                    summary += ", " + std::to_string(uint64_t(value)) + " points";
+        const lfd::DisplayProfile& shown = session.profile();
+        std::printf("lfd-play: %s%s, %u views of %ux%u, %u frame(s), mean GPU time: %s\n",
+                    session.rendererName().c_str(), quality == FrameQuality::Preview ? " (preview)" : "",
+                    shown.viewCount, shown.viewWidth, shown.viewHeight, options.frames, summary.c_str());
+    } catch (...) {
+        for (const auto& path : written)
+            fs::remove(path);
+        if (!sequence.tempFolder.empty())
+            fs::remove_all(sequence.tempFolder);
+        throw;
+    }
+    return encodeVideo(options, sequence);
 }
 
 } // namespace
@@ -112,142 +475,52 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
 int main(int argc, char** argv)
 {
     PlayOptions options;
-    CLI::App app{"lfd-play: render a packed scene (.lfdpack) as light field views and the "
+    RawFlags flags;
+    CLI::App app{"lfd-play: render a packed scene (.lfdpack), or play quilts, as light field views and the "
                  "panel's elemental image array (EIA)"};
-    app.footer("Window keys: R renderer, C reconstruction, O output (EIA, quilt, single view, "
-               "simulated viewer), space pause/resume, Left/Right move the viewer, Esc quit. "
-               "Mouse: wheel moves the viewer, left click cycles the output.");
-    std::string pack, viewSize, windowSize, renderers;
-    for (const std::string& name : lfd::player::allRendererNames())
-        renderers += (renderers.empty() ? "" : "|") + name;
-    uint32_t views = 0, frame = 0;
-    app.add_option("PACK", pack, "packed scene from lfd-bake")->required();
-    app.add_flag("--headless", options.headless, "render without a window (EGL)");
-    app.add_option("--renderer", options.renderer, "renderer: " + renderers)->capture_default_str();
-    bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false;
-    std::string atomics = "auto", pipeline = "visibility";
-    app.add_flag("--no-lfd-sampling", noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
-    app.add_flag("--no-texture-splatting", noTextureSplatting, "lfdpr: no density reduction by texture");
-    app.add_flag("--no-mv-mipmapping", noMvMipmapping,
-                 "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
-    app.add_option("--atomics", atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
-    app.add_option("--lfdpr-pipeline", pipeline,
-                   "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
-        ->capture_default_str();
-    app.add_option("--gstd-factor", options.rendererOptions.gstd.factor,
-                   "gstd: sub-views render at this many times the view resolution (slow gold standard)")
-        ->capture_default_str();
-    app.add_option("--display", options.displayProfile, "display profile JSON (default: the paper's prototype)");
-    auto* viewsOpt = app.add_option("--views", views, "number of views (overrides the profile)");
-    auto* sizeOpt = app.add_option("--view-size", viewSize, "view size WxH (overrides the profile)");
-    auto* framesOpt = app.add_option("--frames", options.frames, "frames to render (timing; windowed: exit after them)")
-                          ->capture_default_str();
-    auto* frameOpt = app.add_option("--frame", frame, "frame whose outputs are written (default: the last)");
-    app.add_option("--fps", options.fps, "frame k is at time k / fps")->capture_default_str();
-    app.add_option("--turntable-period", options.turntablePeriod, "seconds per turntable revolution (0 = still)")
-        ->capture_default_str();
-    app.add_option("--aa,--reconstruction", options.reconstruction,
-                   "EIA reconstruction: none|spatial|view|view-spatial (Gaussian, 8 seeded samples)")
-        ->capture_default_str();
-    app.add_option("--ss", options.supersampling,
-                   "supersampling: 1 | 2s (views at twice the resolution) | 2v (twice the views, random "
-                   "angles in each view interval), averaged down")
-        ->capture_default_str();
-    app.add_option("--out", options.eiaOut, "EIA PNG (panel resolution)");
-    app.add_option("--quilt", options.quiltOut, "quilt PNG (a _qsCxRaA suffix is added)");
-    app.add_option("--views-out", options.viewsOut, "directory for view_000.png ... (view 0 = leftmost)");
-    app.add_option("--stats", options.statsOut, "stats JSON (and a CSV beside it)");
-    app.add_option("--viewer-out", options.viewerOut, "simulated viewer PNG");
-    app.add_option("--viewer-pos", options.viewerPosition, "simulated viewer position in views [0, N) (default N/2)");
-    app.add_option("--screenshot", options.screenshot, "windowed: save the window after the last frame and exit");
-    app.add_option("--window-size", windowSize, "windowed: window size WxH (default 1280x800)");
-    app.add_option("--show", options.show, "windowed: output shown first: eia|quilt|view|viewer")
-        ->capture_default_str();
+    app.footer(kFooter);
+    addRenderFlags(app, options, flags);
+    addOutputFlags(app, options);
+    addWindowFlags(app, options, flags);
+    addCameraFlags(app, options, flags);
+    addQuiltInputFlags(app, options);
 
     if (const auto exit = lfd::cli::parseCommandLine(app, argc, argv, "lfd-play"))
         return *exit;
 
     return lfd::cli::runReportingErrors("lfd-play", [&] {
         // Step 1: validate flag values before touching files or the GPU.
-        options.pack = pack;
-        if (*viewsOpt) {
-            if (views == 0 || views > 2048)
-                throw UsageError("--views: expected 1..2048, got " + std::to_string(views));
-            options.views = views;
-        }
-        if (*sizeOpt) {
-            const auto [w, h] = parseSize("--view-size", viewSize);
-            options.viewWidth = w;
-            options.viewHeight = h;
-        }
-        if (!windowSize.empty())
-            std::tie(options.windowWidth, options.windowHeight) = parseSize("--window-size", windowSize);
-        if (options.frames == 0)
-            throw UsageError("--frames: must be at least 1");
-        options.framesGiven = bool(*framesOpt);
-        if (*frameOpt)
-            options.outputFrame = frame;
-        if (!std::isfinite(options.fps) || options.fps <= 0.0)
-            throw UsageError("--fps: must be a positive number");
-        if (!std::isfinite(options.turntablePeriod) || options.turntablePeriod < 0.0)
-            throw UsageError("--turntable-period: must be >= 0");
-        if (options.show != "eia" && options.show != "quilt" && options.show != "view" && options.show != "viewer")
-            throw UsageError("--show: expected eia, quilt, view or viewer, got '" + options.show + "'");
-        lfd::player::LfdprOptions& lfdpr = options.rendererOptions.lfdpr;
-        lfdpr.lfdBiasedSampling = !noLfdSampling;
-        lfdpr.textureSplatting = !noTextureSplatting;
-        lfdpr.multiviewMipmapping = !noMvMipmapping;
-        try {
-            lfdpr.atomics = lfd::player::parseLfdprAtomics(atomics);
-            lfdpr.pipeline = lfd::player::parseLfdprPipeline(pipeline);
-        } catch (const std::exception& e) {
-            throw UsageError(e.what());
-        }
-        try {
-            lfd::player::validateGstdOptions(options.rendererOptions.gstd);
-        } catch (const std::exception& e) {
-            throw UsageError(std::string("--gstd-factor: ") + e.what());
-        }
-        if (!lfd::player::isKnownRenderer(options.renderer))
-            throw UsageError("--renderer: unknown renderer '" + options.renderer + "' (known: " + renderers + ")");
-        try {
-            lfd::player::parseReconstruction(options.reconstruction);
-        } catch (const std::exception& e) {
-            throw UsageError(std::string("--aa: ") + e.what());
-        }
-        try {
-            lfd::player::parseSupersampling(options.supersampling);
-        } catch (const std::exception& e) {
-            throw UsageError(std::string("--ss: ") + e.what());
-        }
-        checkOutputPath("--out", options.eiaOut);
-        checkOutputPath("--quilt", options.quiltOut);
-        checkOutputPath("--stats", options.statsOut);
-        checkOutputPath("--viewer-out", options.viewerOut);
-        checkOutputPath("--screenshot", options.screenshot);
-        if (!options.viewsOut.empty() && std::filesystem::exists(options.viewsOut) &&
-            !std::filesystem::is_directory(options.viewsOut))
-            throw UsageError("--views-out: '" + options.viewsOut.string() + "' is not a directory");
+        validateRenderFlags(options, flags);
+        validateWindowFlags(options, flags);
+        validateCameraFlags(options, flags);
+        validateOutputFlags(options);
+        validateInputFlags(options, flags);
 
         // Step 2: the display profile with the command-line overrides.
-        lfd::DisplayProfile profile = options.displayProfile.empty()
-                                          ? lfd::prototypeDisplayProfile()
-                                          : lfd::loadDisplayProfile(options.displayProfile);
-        profile = lfd::withViews(profile, options.views.value_or(profile.viewCount),
-                                 options.viewWidth.value_or(profile.viewWidth),
-                                 options.viewHeight.value_or(profile.viewHeight));
-        if (!options.viewerOut.empty() && options.viewerPosition >= double(profile.viewCount))
-            throw UsageError("--viewer-pos: must be in [0, " + std::to_string(profile.viewCount) + ")");
+        const lfd::DisplayProfile profile = loadProfile(options);
+        if (flags.listMonitors)
+            return lfd::player::listMonitorsCommand(profile);
 
-        // Step 3: the pack (fully validated by readPack).
-        if (!std::filesystem::is_regular_file(options.pack))
-            throw UsageError(options.pack.string() + ": no such pack file");
-        lfd::Scene scene = lfd::readPack(options.pack);
-        const std::string packName = options.pack.filename().string();
+        // Step 3: the input - the pack (fully validated by readPack) or the quilt files.
+        std::optional<lfd::Scene> scene;
+        std::vector<fs::path> quilts;
+        if (!options.quiltIn.empty()) {
+            try {
+                quilts = lfd::player::listQuiltFiles(options.quiltIn);
+            } catch (const lfd::player::QuiltInputError& e) {
+                throw UsageError(e.what()); // like a missing pack: the user names another file
+            }
+        } else {
+            if (!fs::is_regular_file(options.pack))
+                throw UsageError(options.pack.string() + ": no such pack file");
+            scene = lfd::readPack(options.pack);
+        }
 
         // Step 4: render.
         if (options.headless)
-            return runHeadless(options, profile, std::move(scene), packName);
-        return lfd::player::runWindowed(options, profile, std::move(scene), packName);
+            return runHeadless(options, profile, std::move(scene), std::move(quilts));
+        if (scene)
+            return lfd::player::runWindowed(options, profile, std::move(*scene), options.pack.filename().string());
+        return lfd::player::runWindowedQuilts(options, profile, std::move(quilts));
     });
 }

@@ -8,32 +8,105 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 
 namespace lfd::player {
 
+PreviewMode parsePreviewMode(const std::string& name)
+{
+    if (name == "off")
+        return PreviewMode::Off;
+    if (name == "auto")
+        return PreviewMode::Auto;
+    if (name == "always")
+        return PreviewMode::Always;
+    throw std::invalid_argument("expected off, auto or always, got '" + name + "'");
+}
+
 PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
                              std::string packName)
-    : options_(options), packName_(std::move(packName)), pipeline_(profile, scene, options.turntablePeriod)
+    : options_(options), displayProfile_(profile), packName_(std::move(packName)),
+      pipeline_(std::make_unique<FramePipeline>(profile, scene, options.turntablePeriod))
 {
     reconstruction_ = parseReconstruction(options.reconstruction);
-    pipeline_.setSupersampling(parseSupersampling(options.supersampling));
+    pipeline_->setSupersampling(parseSupersampling(options.supersampling));
+    pipeline_->setViewControls(options.controls);
+    pipeline_->setPreviewShape(options.previewShape);
     switchRenderer(options.renderer);
+}
+
+PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& profile,
+                             std::vector<std::filesystem::path> quilts)
+    : options_(options), displayProfile_(profile),
+      packName_(quilts.size() == 1 ? quilts.front().filename().string()
+                                   : std::to_string(quilts.size()) + " quilts"),
+      quilts_(std::make_unique<QuiltSlideshow>(profile, std::move(quilts), options.quiltViews, options.slideSeconds)),
+      rendererName_("quilt-in")
+{
+    reconstruction_ = parseReconstruction(options.reconstruction);
+}
+
+const DisplayProfile& PlayerSession::profile() const
+{
+    if (quilts_)
+        return quilts_->profile();
+    return lastQuality_ == FrameQuality::Preview ? pipeline_->previewProfileInUse() : pipeline_->profile();
 }
 
 void PlayerSession::switchRenderer(const std::string& name)
 {
+    if (quilts_)
+        return;
     renderer_ = createRenderer(name, options_.rendererOptions);
     rendererName_ = name;
 }
 
-void PlayerSession::renderFrame(double time)
+void PlayerSession::setViewControls(const ViewControls& controls)
 {
-    pipeline_.renderFrame(*renderer_, time, timer_, reconstruction_);
+    if (pipeline_)
+        pipeline_->setViewControls(controls);
+}
+
+const ViewTargets& PlayerSession::targets() const
+{
+    if (quilts_)
+        return quilts_->targets();
+    return lastQuality_ == FrameQuality::Preview ? pipeline_->previewTargets() : pipeline_->targets();
+}
+
+const EiaBuilder& PlayerSession::eia() const
+{
+    if (quilts_)
+        return quilts_->eia();
+    return lastQuality_ == FrameQuality::Preview ? pipeline_->previewEia() : pipeline_->eia();
+}
+
+void PlayerSession::renderFrame(double time, FrameQuality quality)
+{
+    if (quilts_) {
+        quilts_->renderFrame(time, timer_, reconstruction_);
+        lastQuality_ = FrameQuality::Full;
+        return;
+    }
+    if (quality == FrameQuality::Preview)
+        pipeline_->renderPreviewFrame(*renderer_, time, previewTimer_, reconstruction_);
+    else
+        pipeline_->renderFrame(*renderer_, time, timer_, reconstruction_);
+    lastQuality_ = quality;
 }
 
 FrameOutputs PlayerSession::readOutputs(uint32_t frameIndex) const
 {
-    return pipeline_.read(frameIndex);
+    if (quilts_)
+        return quilts_->read(frameIndex);
+    if (lastQuality_ == FrameQuality::Full)
+        return pipeline_->read(frameIndex);
+    FrameOutputs out;
+    out.frame = frameIndex;
+    for (uint32_t i = 0; i < pipeline_->previewTargets().viewCount(); ++i)
+        out.views.push_back(pipeline_->previewTargets().readView(i));
+    out.eia = pipeline_->previewEia().read();
+    return out;
 }
 
 std::vector<std::string> windowRendererCycle(const std::string& current)
@@ -49,6 +122,16 @@ std::vector<std::string> windowRendererCycle(const std::string& current)
     return cycle;
 }
 
+std::filesystem::path writeQuiltFrame(const std::filesystem::path& base, const DisplayProfile& profile,
+                                      const FrameOutputs& outputs, uint32_t frame)
+{
+    const QuiltLayout layout = chooseQuiltLayout(profile);
+    const std::vector<uint8_t> quilt = assembleQuilt(layout, outputs.views);
+    const std::filesystem::path path = quiltSequenceFileName(base, layout, frame);
+    writeImage(path, quilt.data(), layout.width(), layout.height(), 4);
+    return path;
+}
+
 void writeFrameOutputs(const PlayOptions& options, const DisplayProfile& profile,
                        const FrameOutputs& outputs, std::vector<std::filesystem::path>& written)
 {
@@ -59,8 +142,7 @@ void writeFrameOutputs(const PlayOptions& options, const DisplayProfile& profile
     if (!options.quiltOut.empty()) {
         const QuiltLayout layout = chooseQuiltLayout(profile);
         const std::vector<uint8_t> quilt = assembleQuilt(layout, outputs.views);
-        const std::filesystem::path path =
-            quiltFileName(options.quiltOut, layout.cols, layout.rows, layout.aspect());
+        const std::filesystem::path path = quiltFileName(options.quiltOut, layout);
         writeImage(path, quilt.data(), layout.width(), layout.height(), 4);
         written.push_back(path);
     }

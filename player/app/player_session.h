@@ -1,11 +1,14 @@
 // One lfd-play run, independent of how it is shown: the options, the frame pipeline (scene,
 // view targets, EIA builder; frame_pipeline.h), the renderer built through the registry
-// from the user's options, and the GPU timer. Headless main() and the interactive window
-// both drive a PlayerSession.
+// from the user's options, and the GPU timers (one for full-quality frames, one for the
+// window's responsive preview). With --quilt-in the views come from quilt files
+// (QuiltSlideshow) instead of a scene and a renderer. Headless main() and the interactive
+// window both drive a PlayerSession.
 #pragma once
 
 #include "frame_pipeline.h"
 #include "gpu_timer.h"
+#include "quilt_slideshow.h"
 #include "renderer_registry.h"
 
 #include "lfd/display_profile.h"
@@ -18,6 +21,14 @@
 #include <vector>
 
 namespace lfd::player {
+
+// off: always full quality; auto: preview frames while the user drags, zooms or presses a
+// camera key, full quality once input stops (the window's default); always: every frame
+// at preview quality (headless timing of the preview).
+enum class PreviewMode { Off, Auto, Always };
+PreviewMode parsePreviewMode(const std::string& name); // throws std::invalid_argument
+
+enum class FrameQuality { Full, Preview };
 
 struct PlayOptions {
     std::filesystem::path pack;
@@ -34,10 +45,25 @@ struct PlayOptions {
     std::string reconstruction = "none";   // --aa: none|spatial|view|view-spatial
     std::string supersampling = "1";       // --ss: 1|2s|2v
     std::filesystem::path eiaOut, quiltOut, viewsOut, statsOut, viewerOut, screenshot;
+    std::filesystem::path quiltVideoOut;   // --quilt-video: every frame's quilt encoded by ffmpeg
     double viewerPosition = -1.0;          // simulated viewer t in [0, N); < 0: centre
     uint32_t windowWidth = 1280, windowHeight = 800;
     std::string show = "eia";              // windowed: first output shown (eia|quilt|view|viewer)
     bool framesGiven = false;              // windowed: exit after `frames` frames
+
+    // Driving a display (README "Driving a display").
+    bool fullscreen = false;               // borderless fullscreen, EIA 1:1 on the monitor
+    std::string monitor;                   // --monitor INDEX|NAME; empty: the one matching the panel
+    bool allowMismatch = false;            // centre the EIA unscaled on a monitor of another size
+    ViewControls controls;                 // --orbit, --zoom, --pan, --focal-depth, --depthiness, --no-turntable
+    std::optional<PreviewMode> preview;    // unset: auto in the window, off headless
+    PreviewShape previewShape;             // --preview-view-step, --preview-size-divisor
+    double previewHoldSeconds = 0.3;       // preview lasts this long after the last input
+
+    // Quilt input (--quilt-in FILE|DIR) instead of a pack.
+    std::filesystem::path quiltIn;
+    uint32_t quiltViews = 0;               // 0: every tile is a view
+    double slideSeconds = 5.0;             // per quilt of a folder
 };
 
 class PlayerSession {
@@ -45,35 +71,54 @@ public:
     // Needs a current GL context. The profile carries the overrides already.
     PlayerSession(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
                   std::string packName);
+    // Quilt input: the views come from the files (a slideshow when more than one).
+    PlayerSession(const PlayOptions& options, const DisplayProfile& profile,
+                  std::vector<std::filesystem::path> quilts);
 
     const PlayOptions& options() const { return options_; }
-    const DisplayProfile& profile() const { return pipeline_.profile(); }
+    bool quiltInput() const { return quilts_ != nullptr; }
+    // The views the last frame showed: the profile's (a preview frame's fewer, smaller
+    // ones; a quilt's own). The panel and lens mapping are always the display's.
+    const DisplayProfile& profile() const;
+    const DisplayProfile& displayProfile() const { return displayProfile_; }
     const std::string& packName() const { return packName_; }
+    // Scene input only (quiltInput() false).
     Renderer& renderer() { return *renderer_; }
     const std::string& rendererName() const { return rendererName_; }
     // Rebuilds the renderer as `name` with the session's renderer options (the window's R
-    // key); on failure the current renderer stays and the exception propagates.
+    // key); on failure the current renderer stays and the exception propagates. A no-op
+    // for quilt input.
     void switchRenderer(const std::string& name);
     void setReconstruction(Reconstruction mode) { reconstruction_ = mode; }
-    const GpuScene& scene() const { return pipeline_.scene(); }
-    const ViewTargets& targets() const { return pipeline_.targets(); }
-    const EiaBuilder& eia() const { return pipeline_.eia(); }
-    GpuTimer& timer() { return timer_; }
-    const FrameSetup& lastFrame() const { return pipeline_.lastFrame(); }
+    void setViewControls(const ViewControls& controls);
+    const GpuScene& scene() const { return pipeline_->scene(); }
+    const FramePipeline& pipeline() const { return *pipeline_; }
+    const QuiltSlideshow& quilts() const { return *quilts_; }
+    // Of the last frame (full or preview).
+    const ViewTargets& targets() const;
+    const EiaBuilder& eia() const;
+    GpuTimer& timer() { return timer_; }               // full-quality frames
+    GpuTimer& previewTimer() { return previewTimer_; } // preview frames
+    FrameQuality lastQuality() const { return lastQuality_; }
+    const FrameSetup& lastFrame() const { return pipeline_->lastFrame(); }
 
     // Animates to `time`, renders the views and the EIA (timed: view stages, "eia",
-    // "total" around both).
-    void renderFrame(double time);
+    // "total" around both) on timer() or, for a preview frame, previewTimer(). Quilt
+    // input has no preview (nothing to render).
+    void renderFrame(double time, FrameQuality quality = FrameQuality::Full);
     FrameOutputs readOutputs(uint32_t frameIndex) const;
 
 private:
     PlayOptions options_;
+    DisplayProfile displayProfile_;
     std::string packName_;
-    FramePipeline pipeline_;
+    std::unique_ptr<FramePipeline> pipeline_;
+    std::unique_ptr<QuiltSlideshow> quilts_;
     std::string rendererName_;
     std::unique_ptr<Renderer> renderer_;
     Reconstruction reconstruction_ = Reconstruction::None;
-    GpuTimer timer_;
+    FrameQuality lastQuality_ = FrameQuality::Full;
+    GpuTimer timer_, previewTimer_;
 };
 
 // The renderers the window's R key cycles through, starting after `current`: the methods
@@ -83,8 +128,13 @@ std::vector<std::string> windowRendererCycle(const std::string& current);
 
 // Writes the requested files for one frame (EIA, quilt, views, simulated viewer); every
 // file is written atomically and appended to `written` once complete, so a caller can
-// remove them all if a later one fails.
+// remove them all if a later one fails. The quilt goes to its single-frame name
+// (quiltFileName); sequences are written frame by frame with writeQuiltFrame.
 void writeFrameOutputs(const PlayOptions& options, const DisplayProfile& profile,
                        const FrameOutputs& outputs, std::vector<std::filesystem::path>& written);
+// One frame's quilt of a sequence (--quilt with --frames N, or --quilt-video) as
+// `base`'s numbered name; returns the path written.
+std::filesystem::path writeQuiltFrame(const std::filesystem::path& base, const DisplayProfile& profile,
+                                      const FrameOutputs& outputs, uint32_t frame);
 
 } // namespace lfd::player

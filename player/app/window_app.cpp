@@ -1,7 +1,9 @@
 #include "window_app.h"
 
+#include "camera_controls.h"
 #include "gl_context.h"
 #include "image_output.h"
+#include "monitor_selection.h"
 #include "quilt.h"
 #include "simulated_viewer.h"
 
@@ -29,44 +31,131 @@ const char* shownName(Shown s)
     return "";
 }
 
-// Keyboard and mouse state shared with the GLFW callbacks.
+// Keyboard and mouse state shared with the GLFW callbacks; the frame loop consumes it.
 struct Input {
     bool nextRenderer = false, nextReconstruction = false, nextOutput = false;
     bool paused = false;
     int viewerStep = 0;
+    // Camera input gathered since the last frame (camera_controls.h).
+    glm::dvec2 orbitPixels{0.0}, panPixels{0.0};
+    double zoomSteps = 0.0;
+    int focalSteps = 0, depthinessSteps = 0;
+    bool toggleTurntable = false, reset = false;
+    bool cameraInput = false; // any of the above: starts or extends the preview
+    // Drag state: left = orbit (Shift+left = pan), right or middle = pan.
+    bool orbiting = false, panning = false;
+    double cursorX = 0.0, cursorY = 0.0;
 };
+
+Input& inputOf(GLFWwindow* window) { return *static_cast<Input*>(glfwGetWindowUserPointer(window)); }
+
+// Keys that steer the camera; false when `key` is not one of them.
+bool cameraKey(Input& input, int key)
+{
+    switch (key) {
+    case GLFW_KEY_RIGHT_BRACKET: ++input.focalSteps; break;
+    case GLFW_KEY_LEFT_BRACKET: --input.focalSteps; break;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD: ++input.depthinessSteps; break;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT: --input.depthinessSteps; break;
+    case GLFW_KEY_T: input.toggleTurntable = !input.toggleTurntable; break;
+    case GLFW_KEY_HOME:
+    case GLFW_KEY_BACKSPACE: input.reset = true; break;
+    default: return false;
+    }
+    input.cameraInput = true;
+    return true;
+}
 
 void onKey(GLFWwindow* window, int key, int, int action, int)
 {
     if (action != GLFW_PRESS && action != GLFW_REPEAT)
         return;
-    auto* input = static_cast<Input*>(glfwGetWindowUserPointer(window));
+    Input& input = inputOf(window);
+    const bool press = action == GLFW_PRESS;
+    if (press && cameraKey(input, key))
+        return;
     switch (key) {
     case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(window, GLFW_TRUE); break;
-    case GLFW_KEY_R: input->nextRenderer |= action == GLFW_PRESS; break;
-    case GLFW_KEY_C: input->nextReconstruction |= action == GLFW_PRESS; break;
-    case GLFW_KEY_O: input->nextOutput |= action == GLFW_PRESS; break;
-    case GLFW_KEY_SPACE: if (action == GLFW_PRESS) input->paused = !input->paused; break;
-    case GLFW_KEY_LEFT: --input->viewerStep; break;
-    case GLFW_KEY_RIGHT: ++input->viewerStep; break;
+    case GLFW_KEY_R: input.nextRenderer |= press; break;
+    case GLFW_KEY_C: input.nextReconstruction |= press; break;
+    case GLFW_KEY_O: input.nextOutput |= press; break;
+    case GLFW_KEY_SPACE: if (press) input.paused = !input.paused; break;
+    case GLFW_KEY_LEFT: --input.viewerStep; break;
+    case GLFW_KEY_RIGHT: ++input.viewerStep; break;
     default: break;
     }
 }
 
-// Mouse: the wheel (either axis) moves the simulated viewer like Left/Right; a left click
-// cycles the displayed output like O.
+// The wheel zooms (either axis; up/right = larger).
 void onScroll(GLFWwindow* window, double xoffset, double yoffset)
 {
-    auto* input = static_cast<Input*>(glfwGetWindowUserPointer(window));
-    const double step = std::abs(xoffset) > std::abs(yoffset) ? xoffset : yoffset;
-    input->viewerStep += step > 0.0 ? 1 : (step < 0.0 ? -1 : 0);
+    Input& input = inputOf(window);
+    input.zoomSteps += std::abs(xoffset) > std::abs(yoffset) ? xoffset : yoffset;
+    input.cameraInput = true;
 }
 
-void onMouseButton(GLFWwindow* window, int button, int action, int)
+void onMouseButton(GLFWwindow* window, int button, int action, int mods)
 {
-    auto* input = static_cast<Input*>(glfwGetWindowUserPointer(window));
-    if (button == GLFW_MOUSE_BUTTON_LEFT && action == GLFW_PRESS)
-        input->nextOutput = true;
+    // note: the drag starts at the last cursor event's position (onCursor), not at a
+    // fresh glfwGetCursorPos: that asks the server for the pointer now, which may already
+    // be past motion events still queued, and their movement would be lost.
+    Input& input = inputOf(window);
+    const bool down = action == GLFW_PRESS;
+    if (button == GLFW_MOUSE_BUTTON_LEFT) {
+        const bool shift = (mods & GLFW_MOD_SHIFT) != 0;
+        input.orbiting = down && !shift;
+        input.panning = down && shift;
+    } else if (button == GLFW_MOUSE_BUTTON_RIGHT || button == GLFW_MOUSE_BUTTON_MIDDLE) {
+        input.panning = down;
+    }
+}
+
+void onCursor(GLFWwindow* window, double x, double y)
+{
+    Input& input = inputOf(window);
+    const glm::dvec2 delta(x - input.cursorX, y - input.cursorY);
+    input.cursorX = x;
+    input.cursorY = y;
+    if (input.orbiting)
+        input.orbitPixels += delta;
+    else if (input.panning)
+        input.panPixels += delta;
+    else
+        return;
+    input.cameraInput = true;
+}
+
+void attachInput(GLFWwindow* window, Input& input)
+{
+    glfwGetCursorPos(window, &input.cursorX, &input.cursorY);
+    glfwSetWindowUserPointer(window, &input);
+    glfwSetKeyCallback(window, onKey);
+    glfwSetScrollCallback(window, onScroll);
+    glfwSetMouseButtonCallback(window, onMouseButton);
+    glfwSetCursorPosCallback(window, onCursor);
+}
+
+// Applies the camera input gathered since the last frame; true when there was any.
+bool applyCameraInput(Input& input, CameraControls& controls, double mmPerPixel, double turntableRad)
+{
+    if (!input.cameraInput)
+        return false;
+    controls.orbit(input.orbitPixels.x, input.orbitPixels.y);
+    controls.pan(input.panPixels.x, input.panPixels.y, mmPerPixel);
+    controls.zoom(input.zoomSteps);
+    controls.moveFocalPlane(input.focalSteps);
+    controls.changeDepthiness(input.depthinessSteps);
+    if (input.toggleTurntable)
+        controls.toggleTurntable(turntableRad);
+    if (input.reset)
+        controls.reset();
+    input.orbitPixels = input.panPixels = glm::dvec2(0.0);
+    input.zoomSteps = 0.0;
+    input.focalSteps = input.depthinessSteps = 0;
+    input.toggleTurntable = input.reset = input.cameraInput = false;
+    return true;
 }
 
 // A 2D RGBA8 texture plus a read framebuffer on it, (re)allocated on size changes.
@@ -97,19 +186,39 @@ struct BlitSource {
     }
 };
 
-// Blits the read framebuffer's colour (w x h) into the window, scaled to fit, centred.
-void blitToWindow(GLuint readFbo, uint32_t w, uint32_t h, int windowW, int windowH)
+void clearWindow(int windowW, int windowH)
 {
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     glViewport(0, 0, windowW, windowH);
     glClearColor(0.0f, 0.0f, 0.0f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+}
+
+// Blits the read framebuffer's colour (w x h) into the window, scaled to fit, centred.
+void blitToWindow(GLuint readFbo, uint32_t w, uint32_t h, int windowW, int windowH)
+{
+    clearWindow(windowW, windowH);
     const double scale = std::min(double(windowW) / w, double(windowH) / h);
     const int dw = int(std::lround(w * scale)), dh = int(std::lround(h * scale));
     const int x0 = (windowW - dw) / 2, y0 = (windowH - dh) / 2;
     glNamedFramebufferReadBuffer(readFbo, GL_COLOR_ATTACHMENT0);
     glBlitNamedFramebuffer(readFbo, 0, 0, 0, GLint(w), GLint(h), x0, y0, x0 + dw, y0 + dh,
                            GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+// The EIA pixel for pixel: an unscaled NEAREST blit of the RGBA8 texture into the default
+// framebuffer with sRGB conversion and dithering off, so every byte arrives unchanged;
+// `placement` is its top-left in window pixels (image coordinates; GL's y runs up).
+void blitOneToOne(GLuint readFbo, uint32_t w, uint32_t h, int windowW, int windowH, PanelPlacement placement)
+{
+    clearWindow(windowW, windowH);
+    glDisable(GL_FRAMEBUFFER_SRGB);
+    glDisable(GL_DITHER);
+    glDisable(GL_SCISSOR_TEST);
+    const int x0 = placement.left, y0 = windowH - int(h) - placement.top;
+    glNamedFramebufferReadBuffer(readFbo, GL_COLOR_ATTACHMENT0);
+    glBlitNamedFramebuffer(readFbo, 0, 0, 0, GLint(w), GLint(h), x0, y0, x0 + GLint(w), y0 + GLint(h),
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
 }
 
 // Reads the back buffer (after drawing, before the swap) and saves it as a PNG.
@@ -126,51 +235,177 @@ void saveScreenshot(const std::filesystem::path& path, int w, int h)
     writeImage(path, image.data(), uint32_t(w), uint32_t(h), 4);
 }
 
-} // namespace
+// Mean of a timer's samples per stage since the last call, remembered so that a quality
+// without new frames keeps showing its last numbers (full and preview side by side).
+class StageReadout {
+public:
+    // "total 812.3 ms, view_generation 790.1 ms, eia 20.2 ms"; empty before any frame.
+    std::string update(const GpuTimer& timer)
+    {
+        for (const auto& [stage, times] : timer.stages()) {
+            size_t& from = from_[stage];
+            if (from >= times.ms.size())
+                continue;
+            double sum = 0.0;
+            for (size_t i = from; i < times.ms.size(); ++i)
+                sum += times.ms[i];
+            last_[stage] = sum / double(times.ms.size() - from);
+            from = times.ms.size();
+        }
+        std::string text;
+        auto add = [&](const std::string& stage) {
+            char part[96];
+            std::snprintf(part, sizeof(part), "%s%s %.1f ms", text.empty() ? "" : ", ", stage.c_str(), last_[stage]);
+            text += part;
+        };
+        if (last_.count("total"))
+            add("total");
+        for (const auto& entry : last_)
+            if (entry.first != "total")
+                add(entry.first);
+        return text;
+    }
 
-int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
-                const std::string& packName)
+private:
+    std::map<std::string, size_t> from_;
+    std::map<std::string, double> last_;
+};
+
+// Frame pacing: intervals between buffer swaps since the last readout.
+class PacingReadout {
+public:
+    void swapped(double wall)
+    {
+        if (last_ >= 0.0)
+            intervals_.push_back(wall - last_);
+        last_ = wall;
+    }
+    // "1.2 fps (833.1 +- 12.0 ms)", or empty before two swaps.
+    std::string update()
+    {
+        if (!intervals_.empty()) {
+            double sum = 0.0, sq = 0.0;
+            for (double d : intervals_)
+                sum += d;
+            const double mean = sum / double(intervals_.size());
+            for (double d : intervals_)
+                sq += (d - mean) * (d - mean);
+            char text[96];
+            std::snprintf(text, sizeof(text), "%.1f fps (%.1f +- %.1f ms)", 1.0 / mean, 1000.0 * mean,
+                          1000.0 * std::sqrt(sq / double(intervals_.size())));
+            text_ = text;
+            intervals_.clear();
+        }
+        return text_;
+    }
+
+private:
+    double last_ = -1.0;
+    std::vector<double> intervals_;
+    std::string text_;
+};
+
+std::string controlsText(const ViewControls& c)
 {
-    std::unique_ptr<gl::GlContext> context =
-        gl::GlContext::createWindow(int(options.windowWidth), int(options.windowHeight), "lfd-play");
-    std::printf("lfd-play: %s\n", context->describeWithCodePaths().c_str());
-    std::fflush(stdout);
-    context->require(options.renderer == "mvr-layered");
-    GLFWwindow* window = context->window();
+    char text[192];
+    std::snprintf(text, sizeof(text),
+                  "yaw %.1f pitch %.1f zoom %.2f pan %.1f,%.1f mm focal %.1f mm depthiness %.1f turntable %s", c.yawDeg,
+                  c.pitchDeg, c.zoom, c.panMm.x, c.panMm.y, c.focalDepthMm, c.depthiness, c.turntable ? "on" : "off");
+    return text;
+}
 
-    PlayerSession session(options, profile, std::move(scene), packName);
+// Where the window is and what it shows the EIA on.
+struct WindowSetup {
+    std::unique_ptr<gl::GlContext> context;
+    bool fullscreen = false;
+    PanelPlacement placement;          // fullscreen: the EIA's top-left on the monitor
+    std::vector<MonitorInfo> monitors; // fullscreen: all of them (companion window)
+    size_t monitor = 0;
+};
+
+WindowSetup createWindow(const PlayOptions& options, const DisplayProfile& profile)
+{
+    WindowSetup setup;
+    if (!options.fullscreen) {
+        setup.context = gl::GlContext::createWindow(int(options.windowWidth), int(options.windowHeight), "lfd-play");
+        return setup;
+    }
+    setup.fullscreen = true;
+    setup.monitors = listMonitors();
+    setup.monitor = selectMonitor(setup.monitors, options.monitor, profile.panelWidth, profile.panelHeight,
+                                  options.allowMismatch);
+    const MonitorInfo& m = setup.monitors[setup.monitor];
+    setup.placement = placePanel(m.width, m.height, profile.panelWidth, profile.panelHeight);
+    setup.context = gl::GlContext::createFullscreenWindow(int(setup.monitor), "lfd-play");
+    std::printf("lfd-play: fullscreen on monitor %zu '%s' %ux%u @ %d Hz, EIA %ux%u at %+d%+d%s\n", setup.monitor,
+                m.name.c_str(), m.width, m.height, m.refreshHz, profile.panelWidth, profile.panelHeight,
+                setup.placement.left, setup.placement.top,
+                (m.width == profile.panelWidth && m.height == profile.panelHeight) ? " (pixel for pixel)"
+                                                                                   : " (mismatch allowed: unscaled, centred)");
+    return setup;
+}
+
+// A small window without a GL context on another monitor than the panel's, whose title
+// carries the readout (a fullscreen panel shows no title bar); null with one monitor.
+GLFWwindow* createCompanion(const WindowSetup& setup, Input& input)
+{
+    if (!setup.fullscreen || setup.monitors.size() < 2)
+        return nullptr;
+    const size_t other = setup.monitor == 0 ? 1 : 0;
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);
+    GLFWwindow* companion = glfwCreateWindow(720, 80, "lfd-play stats", nullptr, nullptr);
+    if (!companion)
+        return nullptr;
+    glfwSetWindowPos(companion, setup.monitors[other].x + 40, setup.monitors[other].y + 40);
+    attachInput(companion, input);
+    return companion;
+}
+
+// The frame loop shared by scene and quilt input.
+int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& options)
+{
+    GLFWwindow* window = setup.context->window();
+    const DisplayProfile& display = session.displayProfile();
     // R cycles the interactive renderers (windowRendererCycle), each rebuilt by the session
     // with the user's renderer options.
-    const std::vector<std::string> renderers = windowRendererCycle(options.renderer);
-    size_t rendererIndex = renderers.size() - 1; // the cycle ends with the current renderer
+    const std::vector<std::string> renderers =
+        session.quiltInput() ? std::vector<std::string>{} : windowRendererCycle(options.renderer);
+    size_t rendererIndex = renderers.empty() ? 0 : renderers.size() - 1; // the cycle ends with the current one
     const std::vector<std::string> reconstructions = reconstructionNames(); // C cycles them
     size_t reconstructionIndex = size_t(parseReconstruction(session.options().reconstruction));
     Shown shown = options.show == "quilt"    ? Shown::Quilt
                   : options.show == "view"   ? Shown::SingleView
                   : options.show == "viewer" ? Shown::Viewer
                                              : Shown::Eia;
-    double viewerPos = options.viewerPosition >= 0.0 ? options.viewerPosition : 0.5 * profile.viewCount;
+    double viewerPos = options.viewerPosition >= 0.0 ? options.viewerPosition : 0.5 * display.viewCount;
+    const PreviewMode preview = session.quiltInput() ? PreviewMode::Off : options.preview.value_or(PreviewMode::Auto);
+    const double sceneRadiusMm =
+        session.quiltInput() ? 0.0 : session.pipeline().framing().sceneRadius * session.pipeline().framing().mmPerUnit;
+    CameraControls controls(options.controls, sceneRadiusMm, display.viewConeDeg);
 
     Input input;
-    glfwSetWindowUserPointer(window, &input);
-    glfwSetKeyCallback(window, onKey);
-    glfwSetScrollCallback(window, onScroll);
-    glfwSetMouseButtonCallback(window, onMouseButton);
+    attachInput(window, input);
+    if (setup.fullscreen) // a cursor over the lenses shows in every view; drags still work
+        glfwSetInputMode(window, GLFW_CURSOR, GLFW_CURSOR_HIDDEN);
+    GLFWwindow* companion = createCompanion(setup, input);
 
     BlitSource quilt, viewer;
     GLuint layerFbo = 0, eiaFbo = 0;
     glCreateFramebuffers(1, &layerFbo);
     glCreateFramebuffers(1, &eiaFbo);
-    glNamedFramebufferTexture(eiaFbo, GL_COLOR_ATTACHMENT0, session.eia().texture(), 0);
-    const QuiltLayout layout = chooseQuiltLayout(profile);
 
     // Animation clock: wall time minus paused time, or k / fps for a fixed frame count.
-    double animationTime = 0.0, lastWall = glfwGetTime(), lastTitle = lastWall;
-    std::map<std::string, size_t> titleFrom; // per stage: first sample not yet shown
-    uint32_t frame = 0;
+    const double startWall = glfwGetTime();
+    double animationTime = 0.0, lastWall = startWall, lastTitle = startWall, lastPrint = -1e300;
+    StageReadout fullReadout, previewReadout;
+    PacingReadout pacing;
+    uint32_t frame = 0, fullFrames = 0, previewFrames = 0;
     int status = 0;
-    while (!glfwWindowShouldClose(window)) {
+    while (!glfwWindowShouldClose(window) && !(companion && glfwWindowShouldClose(companion))) {
         glfwPollEvents();
+        int windowW = 0, windowH = 0;
+        glfwGetFramebufferSize(window, &windowW, &windowH);
 
         // Step 1: apply input.
         if (input.nextRenderer && renderers.size() > 1) {
@@ -188,53 +423,70 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
         }
         if (input.nextOutput)
             shown = Shown((int(shown) + 1) % 4);
-        viewerPos = std::clamp(viewerPos + input.viewerStep, 0.5, double(profile.viewCount) - 0.5);
+        viewerPos = std::clamp(viewerPos + input.viewerStep, 0.5, double(display.viewCount) - 0.5);
         input.nextRenderer = input.nextReconstruction = input.nextOutput = false;
         input.viewerStep = 0;
-
-        // Step 2: render the frame (views + EIA).
         const double wall = glfwGetTime();
+        // Pan follows the cursor: window pixels to screen mm at the scale the EIA is shown.
+        const double shownScale = setup.fullscreen ? 1.0
+                                                   : std::min(double(std::max(windowW, 1)) / display.panelWidth,
+                                                              double(std::max(windowH, 1)) / display.panelHeight);
+        if (applyCameraInput(input, controls, display.screenWidthMm / (display.panelWidth * shownScale),
+                             turntableAngle(animationTime, options.turntablePeriod)))
+            controls.noteInput(wall);
+        session.setViewControls(controls.state());
+
+        // Step 2: render the frame (views + EIA), at preview quality while the camera moves.
         if (options.framesGiven)
             animationTime = double(frame) / options.fps;
         else if (!input.paused)
             animationTime += wall - lastWall;
         lastWall = wall;
-        session.renderFrame(animationTime);
+        const bool previewNow = preview == PreviewMode::Always ||
+                                (preview == PreviewMode::Auto && controls.interacting(wall, options.previewHoldSeconds));
+        session.renderFrame(animationTime, previewNow ? FrameQuality::Preview : FrameQuality::Full);
+        ++(previewNow ? previewFrames : fullFrames);
 
-        // Step 3: show the chosen output, scaled to fit.
-        int windowW = 0, windowH = 0;
-        glfwGetFramebufferSize(window, &windowW, &windowH);
+        // Step 3: show the chosen output: the EIA 1:1 fullscreen, anything scaled to fit in a window.
+        const DisplayProfile& views = session.profile();
         const ViewTargets& targets = session.targets();
-        const uint32_t single = std::min(uint32_t(viewerPos), profile.viewCount - 1);
+        glNamedFramebufferTexture(eiaFbo, GL_COLOR_ATTACHMENT0, session.eia().texture(), 0);
+        const uint32_t single = std::min(uint32_t(viewerPos * views.viewCount / display.viewCount), views.viewCount - 1);
         if (windowW > 0 && windowH > 0) {
             switch (shown) {
             case Shown::Eia:
-                blitToWindow(eiaFbo, profile.panelWidth, profile.panelHeight, windowW, windowH);
+                if (setup.fullscreen)
+                    blitOneToOne(eiaFbo, display.panelWidth, display.panelHeight, windowW, windowH, setup.placement);
+                else
+                    blitToWindow(eiaFbo, display.panelWidth, display.panelHeight, windowW, windowH);
                 break;
             case Shown::SingleView:
                 glNamedFramebufferTextureLayer(layerFbo, GL_COLOR_ATTACHMENT0, targets.colorArray(), 0, GLint(single));
-                blitToWindow(layerFbo, profile.viewWidth, profile.viewHeight, windowW, windowH);
+                blitToWindow(layerFbo, targets.width(), targets.height(), windowW, windowH);
                 break;
-            case Shown::Quilt:
+            case Shown::Quilt: {
                 // GL rows run bottom-up, so view 0 in the bottom-left tile is tile (0, 0).
+                const QuiltLayout layout = chooseQuiltLayout(views);
                 quilt.ensure(layout.width(), layout.height());
-                for (uint32_t v = 0; v < profile.viewCount; ++v)
+                for (uint32_t v = 0; v < views.viewCount; ++v)
                     glCopyImageSubData(targets.colorArray(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(v), quilt.texture,
                                        GL_TEXTURE_2D, 0, GLint((v % layout.cols) * layout.tileWidth),
-                                       GLint((v / layout.cols) * layout.tileHeight), 0, GLsizei(profile.viewWidth),
-                                       GLsizei(profile.viewHeight), 1);
+                                       GLint((v / layout.cols) * layout.tileHeight), 0, GLsizei(targets.width()),
+                                       GLsizei(targets.height()), 1);
                 blitToWindow(quilt.fbo, quilt.width, quilt.height, windowW, windowH);
                 break;
+            }
             case Shown::Viewer: {
                 // CPU model of one eye behind the lenticular sheet (image order -> GL order).
-                const std::vector<uint8_t> seen = simulateViewer(profile, session.eia().read(), viewerPos);
-                viewer.ensure(profile.viewWidth, profile.viewHeight);
-                const size_t row = size_t(profile.viewWidth) * 4;
+                const double t = viewerPos * views.viewCount / display.viewCount;
+                const std::vector<uint8_t> seen = simulateViewer(views, session.eia().read(), t);
+                viewer.ensure(views.viewWidth, views.viewHeight);
+                const size_t row = size_t(views.viewWidth) * 4;
                 std::vector<uint8_t> flipped(seen.size());
-                for (uint32_t y = 0; y < profile.viewHeight; ++y)
-                    std::memcpy(&flipped[size_t(y) * row], &seen[size_t(profile.viewHeight - 1 - y) * row], row);
+                for (uint32_t y = 0; y < views.viewHeight; ++y)
+                    std::memcpy(&flipped[size_t(y) * row], &seen[size_t(views.viewHeight - 1 - y) * row], row);
                 glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                glTextureSubImage2D(viewer.texture, 0, 0, 0, GLsizei(profile.viewWidth), GLsizei(profile.viewHeight),
+                glTextureSubImage2D(viewer.texture, 0, 0, 0, GLsizei(views.viewWidth), GLsizei(views.viewHeight),
                                     GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
                 blitToWindow(viewer.fbo, viewer.width, viewer.height, windowW, windowH);
                 break;
@@ -252,11 +504,12 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
             }
         }
         glfwSwapBuffers(window);
+        pacing.swapped(glfwGetTime());
 
-        // Step 4: title readout of the stages' mean milliseconds since the last update.
+        // Step 4: readout - title (and companion title), and a stdout line every 2 s fullscreen.
         if (wall - lastTitle >= 0.5 || last) {
             lastTitle = wall;
-            std::string title = "lfd-play - " + packName + " - " + session.rendererName() + " - " +
+            std::string title = "lfd-play - " + session.packName() + " - " + session.rendererName() + " - " +
                                 reconstructions[reconstructionIndex] + " - " + shownName(shown);
             if (shown == Shown::SingleView || shown == Shown::Viewer) {
                 char where[48];
@@ -265,29 +518,84 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
             }
             if (input.paused)
                 title += " - paused";
-            for (const auto& [stage, times] : session.timer().stages()) {
-                size_t& from = titleFrom[stage];
-                if (from >= times.ms.size())
-                    continue;
-                double sum = 0.0;
-                for (size_t i = from; i < times.ms.size(); ++i)
-                    sum += times.ms[i];
-                char part[96];
-                std::snprintf(part, sizeof(part), " | %s %.1f ms", stage.c_str(), sum / double(times.ms.size() - from));
-                title += part;
-                from = times.ms.size();
-            }
+            title += session.lastQuality() == FrameQuality::Preview ? " - preview" : " - full";
+            if (session.quiltInput())
+                title += " - " + session.quilts().currentFile().filename().string();
+            std::string readout = pacing.update();
+            const std::string full = fullReadout.update(session.timer());
+            const std::string previewText = previewReadout.update(session.previewTimer());
+            if (!full.empty())
+                readout += " | full: " + full;
+            if (!previewText.empty())
+                readout += " | preview: " + previewText;
+            if (!session.quiltInput())
+                title += " | " + controlsText(controls.state());
+            title += " | " + readout;
             glfwSetWindowTitle(window, title.c_str());
+            if (companion)
+                glfwSetWindowTitle(companion, readout.c_str());
+            if (setup.fullscreen && (wall - lastPrint >= 2.0 || last)) {
+                lastPrint = wall;
+                std::printf("lfd-play: %s\n", readout.c_str());
+                std::fflush(stdout);
+            }
         }
         if (last)
             break;
     }
     session.timer().finish();
+    session.previewTimer().finish();
+    auto meanTotal = [](GpuTimer& timer) {
+        const auto it = timer.stages().find("total");
+        return it == timer.stages().end() ? 0.0 : it->second.mean();
+    };
+    std::printf("lfd-play: window: %u full-quality frames (total %.1f ms mean), %u preview frames (total %.1f ms "
+                "mean), %.1f fps over the run\n",
+                fullFrames, meanTotal(session.timer()), previewFrames, meanTotal(session.previewTimer()),
+                double(frame) / std::max(glfwGetTime() - startWall, 1e-9));
     quilt.release();
     viewer.release();
     glDeleteFramebuffers(1, &layerFbo);
     glDeleteFramebuffers(1, &eiaFbo);
+    if (companion)
+        glfwDestroyWindow(companion);
     return status;
+}
+
+void printStart(const gl::GlContext& context)
+{
+    std::printf("lfd-play: %s\n", context.describeWithCodePaths().c_str());
+    std::fflush(stdout);
+}
+
+} // namespace
+
+int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
+                const std::string& packName)
+{
+    WindowSetup setup = createWindow(options, profile);
+    printStart(*setup.context);
+    setup.context->require(options.renderer == "mvr-layered");
+    PlayerSession session(options, profile, std::move(scene), packName);
+    return runLoop(setup, session, options);
+}
+
+int runWindowedQuilts(const PlayOptions& options, const DisplayProfile& profile,
+                      std::vector<std::filesystem::path> quilts)
+{
+    WindowSetup setup = createWindow(options, profile);
+    printStart(*setup.context);
+    setup.context->require(false);
+    PlayerSession session(options, profile, std::move(quilts));
+    return runLoop(setup, session, options);
+}
+
+int listMonitorsCommand(const DisplayProfile& profile)
+{
+    const std::vector<MonitorInfo> monitors = listMonitors();
+    std::fputs(describeMonitors(monitors, profile.panelWidth, profile.panelHeight).c_str(), stdout);
+    glfwTerminate();
+    return monitors.empty() ? 1 : 0;
 }
 
 } // namespace lfd::player

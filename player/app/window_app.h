@@ -1,7 +1,12 @@
 // Interactive lfd-play: a GLFW window showing the EIA, the quilt, one view or the simulated
-// viewer's view, scaled to fit. Keys: R renderer, C reconstruction, O displayed output,
-// space pause/resume, Left/Right move the simulated viewer (and pick the single view),
-// Esc quit. The title shows per-stage GPU milliseconds, refreshed about twice a second.
+// viewer's view - scaled to fit in a desktop window, or with --fullscreen the EIA 1:1 on
+// the panel's monitor (monitor_selection.h). Keys: R renderer, C reconstruction, O
+// displayed output, space pause/resume, Left/Right move the simulated viewer (and pick the
+// single view), Esc quit; camera controls (drag, wheel, [ ] - = T Home) as in
+// camera_controls.h. While the camera moves, frames render at preview quality (fewer,
+// smaller views) and return to full quality when input stops. The title (and, fullscreen,
+// a companion window on another monitor and a line on stdout) shows fps, frame pacing and
+// per-stage GPU milliseconds of full and preview frames, refreshed about twice a second.
 // With --frames F it renders F frames at t = k / fps and exits (after --screenshot).
 #pragma once
 
@@ -12,5 +17,11 @@ namespace lfd::player {
 // Creates the window and its context, then runs until closed. Returns the exit status.
 int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
                 const std::string& packName);
+// The same for --quilt-in: the views come from the quilt files.
+int runWindowedQuilts(const PlayOptions& options, const DisplayProfile& profile,
+                      std::vector<std::filesystem::path> quilts);
+
+// --list-monitors: one line per monitor, saying whether it matches the panel.
+int listMonitorsCommand(const DisplayProfile& profile);
 
 } // namespace lfd::player

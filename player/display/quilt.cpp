@@ -44,8 +44,11 @@ QuiltLayout chooseQuiltLayout(uint32_t viewCount, uint32_t viewWidth, uint32_t v
 QuiltLayout chooseQuiltLayout(const DisplayProfile& profile) {
     if (profile.panelHeight == 0)
         throw std::invalid_argument("quilt layout: profile has no panel height");
-    return chooseQuiltLayout(profile.viewCount, profile.viewWidth, profile.viewHeight,
-                             double(profile.panelWidth) / double(profile.panelHeight));
+    QuiltLayout layout = chooseQuiltLayout(profile.viewCount, profile.viewWidth, profile.viewHeight,
+                                           double(profile.panelWidth) / double(profile.panelHeight));
+    if (profile.screenWidthMm > 0.0 && profile.screenHeightMm > 0.0)
+        layout.displayAspect = profile.screenWidthMm / profile.screenHeightMm;
+    return layout;
 }
 
 std::vector<uint8_t> assembleQuilt(const QuiltLayout& layout,
@@ -106,18 +109,75 @@ std::string quiltSuffix(uint32_t cols, uint32_t rows, double aspect) {
     return "_qs" + std::to_string(cols) + "x" + std::to_string(rows) + "a" + a;
 }
 
+namespace {
+
+const std::regex& existingSuffix() {
+    static const std::regex suffix(R"(_qs\d+x\d+a\d+(\.\d+)?$)");
+    return suffix;
+}
+
+// The requested name without extension and without a _qs suffix, and its extension
+// (".png" when it has none; "q_qs8x6a1.33" has none: ".33" belongs to the suffix).
+std::pair<std::string, std::string> baseAndExtension(const std::filesystem::path& requested) {
+    const std::string filename = requested.filename().string();
+    std::smatch m;
+    if (std::regex_search(filename, m, existingSuffix()))
+        return {m.prefix().str(), ".png"};
+    std::string extension = requested.extension().string();
+    if (extension.empty())
+        extension = ".png";
+    std::string stem = requested.stem().string();
+    if (std::regex_search(stem, m, existingSuffix()))
+        stem = m.prefix().str();
+    return {stem, extension};
+}
+
+// printf patterns (ffmpeg's image2 input) read "%%" as one '%'.
+std::string escapePercent(const std::string& text) {
+    std::string escaped;
+    for (const char c : text)
+        escaped += c == '%' ? std::string("%%") : std::string(1, c);
+    return escaped;
+}
+
+std::string frameNumber(uint32_t frame) {
+    char number[16];
+    std::snprintf(number, sizeof(number), "_%04u", frame);
+    return number;
+}
+
+} // namespace
+
+std::filesystem::path quiltFileName(const std::filesystem::path& requested, const QuiltLayout& layout) {
+    return quiltFileName(requested, layout.cols, layout.rows, layout.nameAspect());
+}
+
+std::filesystem::path quiltSequenceFileName(const std::filesystem::path& requested, const QuiltLayout& layout,
+                                            uint32_t frame) {
+    const auto [base, extension] = baseAndExtension(requested);
+    return requested.parent_path() /
+           (base + frameNumber(frame) + quiltSuffix(layout.cols, layout.rows, layout.nameAspect()) + extension);
+}
+
+std::filesystem::path quiltSequencePattern(const std::filesystem::path& requested, const QuiltLayout& layout) {
+    const auto [base, extension] = baseAndExtension(requested);
+    const std::string name =
+        escapePercent(base) + "_%04d" + quiltSuffix(layout.cols, layout.rows, layout.nameAspect()) + escapePercent(extension);
+    return std::filesystem::path(escapePercent(requested.parent_path().string())) / name;
+}
+
 std::filesystem::path quiltFileName(const std::filesystem::path& requested, uint32_t cols,
                                     uint32_t rows, double aspect) {
-    static const std::regex existingSuffix(R"(_qs\d+x\d+a\d+(\.\d+)?$)");
+    const std::regex& suffix = existingSuffix();
     // "view_qs8x6a1.33" has no extension: ".33" belongs to the suffix.
     const std::string filename = requested.filename().string();
-    if (std::regex_search(filename, existingSuffix))
+    if (std::regex_search(filename, suffix))
         return requested.parent_path() / (filename + ".png");
     std::string extension = requested.extension().string();
     if (extension.empty())
         extension = ".png";
     const std::string stem = requested.stem().string();
-    if (std::regex_search(stem, existingSuffix))
+    if (std::regex_search(stem, suffix))
         return requested.parent_path() / (stem + extension);
     return requested.parent_path() / (stem + quiltSuffix(cols, rows, aspect) + extension);
 }

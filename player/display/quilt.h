@@ -2,8 +2,10 @@
 // image, `cols` x `rows` tiles, view 0 in the bottom-left tile (the leftmost camera), then
 // left to right and upwards, so view cols-1 is bottom-right and view cols sits above view 0.
 // Tiles past the last view stay black. File names carry the layout as a suffix
-// `_qs{cols}x{rows}a{aspect}` (aspect = view width / view height), e.g. `_qs8x6a1.33`, so
-// Looking Glass tools read the layout from the name.
+// `_qs{cols}x{rows}a{aspect}`, e.g. `_qs8x6a1.78`, so Looking Glass tools read the layout
+// from the name. The aspect is the one each view is shown at - the screen's (width mm /
+// height mm), which Looking Glass players stretch a tile to - not the tile's pixel aspect:
+// the prototype's 480x360 views cover a 16:9 screen, so its quilts are `_qs8x6a1.78`.
 #pragma once
 
 #include <cstdint>
@@ -24,7 +26,9 @@ struct QuiltLayout {
     uint32_t tileWidth = 0, tileHeight = 0; // = the view size
     uint32_t width() const { return cols * tileWidth; }
     uint32_t height() const { return rows * tileHeight; }
-    double aspect() const { return double(tileWidth) / double(tileHeight); }
+    double aspect() const { return double(tileWidth) / double(tileHeight); } // tile pixels
+    double displayAspect = 0.0; // aspect the views are shown at; 0: the tile's
+    double nameAspect() const { return displayAspect > 0.0 ? displayAspect : aspect(); }
 };
 
 // Layout rule: rows = ceil(N / cols), so fewer than one row of tiles is ever empty; among
@@ -35,7 +39,8 @@ struct QuiltLayout {
 // 3840x2160, one sample per panel pixel. Throws std::invalid_argument on zero sizes.
 QuiltLayout chooseQuiltLayout(uint32_t viewCount, uint32_t viewWidth, uint32_t viewHeight,
                               double targetAspect);
-// Target aspect = panel width / panel height of the profile; views from the profile.
+// Target aspect = panel width / panel height of the profile; views from the profile;
+// displayAspect = the screen's width / height in mm.
 QuiltLayout chooseQuiltLayout(const DisplayProfile& profile);
 
 // Tiles RGBA8 views (image order, row 0 = top, each tileWidth x tileHeight) into an RGBA8
@@ -53,5 +58,15 @@ std::string quiltSuffix(uint32_t cols, uint32_t rows, double aspect);
 // given). A name without an extension gets ".png".
 std::filesystem::path quiltFileName(const std::filesystem::path& requested, uint32_t cols,
                                     uint32_t rows, double aspect);
+// quiltFileName(requested, layout) for the layout's name aspect.
+std::filesystem::path quiltFileName(const std::filesystem::path& requested, const QuiltLayout& layout);
+
+// Frame `frame` of a quilt sequence: the frame number (4 digits, more when needed) goes
+// before the suffix, so every file still ends in it and Looking Glass tools read each one:
+// "out/q.png" -> "out/q_0007_qs8x6a1.78.png" (also from "out/q_qs8x6a1.78.png").
+std::filesystem::path quiltSequenceFileName(const std::filesystem::path& requested, const QuiltLayout& layout,
+                                            uint32_t frame);
+// The same name with a printf pattern ("%04d", a '%' in the name doubled) for ffmpeg.
+std::filesystem::path quiltSequencePattern(const std::filesystem::path& requested, const QuiltLayout& layout);
 
 } // namespace lfd::player

@@ -121,16 +121,20 @@ void onGlfwError(int, const char* description) { g_glfwError = description ? des
 
 class GlfwContext final : public GlContext {
 public:
-    GlfwContext(int width, int height, const std::string& title)
+    // monitorIndex < 0: a desktop window of width x height; else fullscreen on that
+    // monitor at its current mode (width and height ignored).
+    GlfwContext(int width, int height, const std::string& title, int monitorIndex = -1)
     {
         glfwSetErrorCallback(onGlfwError);
         if (!glfwInit())
             throw GlError("GLFW: cannot initialise (" + g_glfwError + "); is DISPLAY set?");
+        glfwDefaultWindowHints();
         glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-        window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+        GLFWmonitor* monitor = monitorIndex >= 0 ? fullscreenHints(monitorIndex, width, height) : nullptr;
+        window_ = glfwCreateWindow(width, height, title.c_str(), monitor, nullptr);
         if (!window_) {
             const std::string why = g_glfwError;
             glfwTerminate();
@@ -138,8 +142,12 @@ public:
                           ")");
         }
         makeCurrent();
-        glfwSwapInterval(0); // measure the renderers, not the display refresh
+        // Desktop window: measure the renderers, not the display refresh. Fullscreen on a
+        // panel: vsync, so every refresh shows one whole EIA (no tearing across lenses).
+        glfwSwapInterval(monitor ? 1 : 0);
         queryCaps();
+        if (monitor)
+            checkFramebufferIsMode(width, height);
     }
     ~GlfwContext() override
     {
@@ -150,6 +158,45 @@ public:
     GLFWwindow* window() override { return window_; }
 
 private:
+    // Hints for a window that takes the monitor's current mode unchanged; sets width and
+    // height to that mode.
+    static GLFWmonitor* fullscreenHints(int monitorIndex, int& width, int& height)
+    {
+        int count = 0;
+        GLFWmonitor** monitors = glfwGetMonitors(&count);
+        if (monitorIndex >= count) {
+            glfwTerminate();
+            throw GlError("GLFW: no monitor " + std::to_string(monitorIndex) + " (" + std::to_string(count) +
+                          " connected)");
+        }
+        GLFWmonitor* monitor = monitors[monitorIndex];
+        const GLFWvidmode* mode = glfwGetVideoMode(monitor);
+        glfwWindowHint(GLFW_RED_BITS, mode->redBits);
+        glfwWindowHint(GLFW_GREEN_BITS, mode->greenBits);
+        glfwWindowHint(GLFW_BLUE_BITS, mode->blueBits);
+        glfwWindowHint(GLFW_REFRESH_RATE, mode->refreshRate);
+        glfwWindowHint(GLFW_DECORATED, GLFW_FALSE);
+        glfwWindowHint(GLFW_AUTO_ICONIFY, GLFW_FALSE); // clicking the desktop monitor keeps the panel lit
+        glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE); // EIA bytes are already sRGB-encoded
+        glfwWindowHint(GLFW_SAMPLES, 0);
+        width = mode->width;
+        height = mode->height;
+        return monitor;
+    }
+
+    void checkFramebufferIsMode(int width, int height)
+    {
+        int fbWidth = 0, fbHeight = 0;
+        glfwGetFramebufferSize(window_, &fbWidth, &fbHeight);
+        if (fbWidth != width || fbHeight != height) {
+            glfwDestroyWindow(window_);
+            glfwTerminate();
+            throw GlError("GLFW: the fullscreen framebuffer is " + std::to_string(fbWidth) + "x" +
+                          std::to_string(fbHeight) + ", not the monitor's " + std::to_string(width) + "x" +
+                          std::to_string(height) + " (desktop scaling?); the EIA needs it pixel for pixel");
+        }
+    }
+
     GLFWwindow* window_ = nullptr;
 };
 
@@ -204,6 +251,11 @@ std::unique_ptr<GlContext> GlContext::createHeadless()
 std::unique_ptr<GlContext> GlContext::createWindow(int width, int height, const std::string& title)
 {
     return std::make_unique<GlfwContext>(width, height, title);
+}
+
+std::unique_ptr<GlContext> GlContext::createFullscreenWindow(int monitorIndex, const std::string& title)
+{
+    return std::make_unique<GlfwContext>(0, 0, title, monitorIndex);
 }
 
 void GlContext::queryCaps()

@@ -35,6 +35,11 @@ public:
     static std::unique_ptr<GlContext> createHeadless();
     // Visible window with a GL 4.5 core context (GLFW; works under Xvfb).
     static std::unique_ptr<GlContext> createWindow(int width, int height, const std::string& title);
+    // Fullscreen on monitor `monitorIndex` (glfwGetMonitors order) at its current video
+    // mode - same size, bit depths and refresh rate, so nothing switches modes -
+    // undecorated, no sRGB framebuffer, no iconify on focus loss, vsync on. Throws GlError
+    // when the framebuffer is not the mode's size (a scaled desktop would resample it).
+    static std::unique_ptr<GlContext> createFullscreenWindow(int monitorIndex, const std::string& title);
     virtual ~GlContext() = default;
 
     virtual void makeCurrent() = 0;

@@ -9,6 +9,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <algorithm>
+
 namespace lfd::player {
 
 namespace {
@@ -95,7 +97,7 @@ FramePipeline::FramePipeline(const DisplayProfile& profile, const Scene& scene, 
 void FramePipeline::animate(double time)
 {
     scene_->update(time);
-    frame_ = makeFrameSetup(profile_, framing_, time, turntablePeriod_);
+    frame_ = makeFrameSetup(profile_, framing_, time, turntablePeriod_, controls_);
 }
 
 void FramePipeline::buildEia(GpuTimer& timer, Reconstruction reconstruction)
@@ -154,6 +156,36 @@ void FramePipeline::renderFrame(Renderer& renderer, double time, GpuTimer& timer
         timer.end();
     }
     buildEia(timer, reconstruction);
+    timer.end();
+}
+
+DisplayProfile previewProfile(const DisplayProfile& full, const PreviewShape& shape)
+{
+    const uint32_t step = std::max(shape.viewStep, 1u), divisor = std::max(shape.sizeDivisor, 1u);
+    return withViews(full, (full.viewCount + step - 1) / step, std::max(full.viewWidth / divisor, 1u),
+                     std::max(full.viewHeight / divisor, 1u));
+}
+
+void FramePipeline::setPreviewShape(const PreviewShape& shape)
+{
+    previewShape_ = shape;
+    previewTargets_.reset();
+    previewEia_.reset();
+}
+
+void FramePipeline::renderPreviewFrame(Renderer& renderer, double time, GpuTimer& timer, Reconstruction reconstruction)
+{
+    if (!previewTargets_) {
+        previewProfile_ = previewProfile(profile_, previewShape_);
+        previewTargets_ = std::make_unique<ViewTargets>(previewProfile_.viewCount, previewProfile_.viewWidth,
+                                                        previewProfile_.viewHeight);
+        previewEia_ = std::make_unique<EiaBuilder>(previewProfile_);
+    }
+    scene_->update(time);
+    frame_ = makeFrameSetup(previewProfile_, framing_, time, turntablePeriod_, controls_);
+    timer.begin(stage::kTotal);
+    renderer.render(*scene_, frame_, *previewTargets_, timer);
+    previewEia_->build(*previewTargets_, reconstruction, timer);
     timer.end();
 }
 

@@ -42,6 +42,18 @@ inline constexpr uint64_t kSupersamplingSeed = 0x2f0a'7d1c'55aa'0002ull;
 
 // The frame a renderer draws under `ss` (frame itself for None); see Supersampling.
 FrameSetup supersampledFrame(const FrameSetup& frame, Supersampling ss, uint64_t seed = kSupersamplingSeed);
+// A cheaper frame for interaction (the window's responsive preview): every `viewStep`-th
+// view over the same cone (N / step cameras, each at the centre of `step` view intervals)
+// at 1 / `sizeDivisor` of the view size; the EIA builder takes each subpixel's view from
+// the coarser set and its view pixel under the subpixel (nearest), so the preview is
+// upsampled into the same panel-size EIA.
+struct PreviewShape {
+    uint32_t viewStep = 2;
+    uint32_t sizeDivisor = 2;
+};
+// The profile a preview frame renders: ceil(N / viewStep) views of
+// max(1, w / sizeDivisor) x max(1, h / sizeDivisor).
+DisplayProfile previewProfile(const DisplayProfile& full, const PreviewShape& shape);
 
 // The in-memory outputs of one frame, read back right after it was rendered.
 struct FrameOutputs {
@@ -78,6 +90,19 @@ public:
     void animate(double time);
     void buildEia(GpuTimer& timer, Reconstruction reconstruction = Reconstruction::None);
 
+    // The viewer's camera controls (frame.h), applied from the next frame on.
+    void setViewControls(const ViewControls& controls) { controls_ = controls; }
+    const ViewControls& viewControls() const { return controls_; }
+
+    // The same frame at preview quality into its own (smaller) view targets and EIA;
+    // previewEia() holds the result. Its targets and EIA are made on first use.
+    void setPreviewShape(const PreviewShape& shape);
+    void renderPreviewFrame(Renderer& renderer, double time, GpuTimer& timer,
+                            Reconstruction reconstruction = Reconstruction::None);
+    const EiaBuilder& previewEia() const { return *previewEia_; }
+    const ViewTargets& previewTargets() const { return *previewTargets_; }
+    const DisplayProfile& previewProfileInUse() const { return previewProfile_; }
+
     FrameOutputs read(uint32_t frameIndex) const;
 
 private:
@@ -88,6 +113,11 @@ private:
     std::unique_ptr<ViewTargets> targets_;
     std::unique_ptr<EiaBuilder> eia_;
     FrameSetup frame_;
+    ViewControls controls_;
+    PreviewShape previewShape_;
+    DisplayProfile previewProfile_;
+    std::unique_ptr<ViewTargets> previewTargets_;
+    std::unique_ptr<EiaBuilder> previewEia_;
     Supersampling ss_ = Supersampling::None;
     uint64_t ssSeed_ = kSupersamplingSeed;
     std::unique_ptr<ViewTargets> ssTargets_; // the supersampled views

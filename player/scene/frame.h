@@ -30,8 +30,34 @@ struct FrameSetup {
     const FrameSetup& samplingFrame() const { return pointSampling ? *pointSampling : *this; }
 };
 
+// What the viewer steers on top of the baker's framing (lfd-play's window controls and
+// headless flags; player/app/camera_controls.h drives it). Display space (framing.h): mm,
+// +x right, +y up, +z toward the viewer, screen plane z = 0 = zero parallax.
+struct ViewControls {
+    double yawDeg = 0.0;   // orbit about the vertical axis through the scene centre (+: front moves right)
+    double pitchDeg = 0.0; // then about the horizontal axis (+: front moves down)
+    double zoom = 1.0;     // scale of the fitted scene (2: twice as large)
+    glm::dvec2 panMm{0.0}; // shift along the screen plane
+    // The display depth (before the shift) put at zero parallax: the scene moves by
+    // -focalDepthMm along z, so a point that was focalDepthMm in front of the screen lands
+    // on it and looks the same in every view.
+    double focalDepthMm = 0.0;
+    double depthiness = 1.0; // view-cone scale: 0 = flat (every camera central), 1 = the profile's cone
+    bool turntable = true;   // the turntable angle (time / period) adds to the yaw
+};
+
+// Turntable angle in radians at `time`: 2 pi t / period (0 when the period is 0).
+double turntableAngle(double time, double turntablePeriod);
+
 // Turntable: one revolution every `turntablePeriod` seconds (0 = no rotation).
 FrameSetup makeFrameSetup(const DisplayProfile& profile, const Framing& framing, double time,
                           double turntablePeriod);
+// With the viewer's controls. The result's `profile` carries the scaled view cone and its
+// `framing` the zoomed scale with a radius that covers the shifted scene (near/far), so
+// code that re-derives cameras from them (gstd's sub-views) agrees with `cameras`:
+//   displayFromScene = T(pan.x, pan.y, -focal) * S(mmPerUnit * zoom) * R_x(pitch)
+//                      * R_y(yaw + turntable) * T(-centre)
+FrameSetup makeFrameSetup(const DisplayProfile& profile, const Framing& framing, double time,
+                          double turntablePeriod, const ViewControls& controls);
 
 } // namespace lfd::player

@@ -15,6 +15,7 @@
 #include "quilt.h"
 #include "renderer_gstd.h"
 #include "simulated_viewer.h"
+#include "quilt_video.h"
 
 #include "lfd/display_profile.h"
 #include "lfd/pack.h"
@@ -25,10 +26,12 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 namespace lfd::test {
 namespace {
@@ -52,10 +55,11 @@ struct RunResult {
 
 const fs::path kBench = fs::path(LFD_BINARY_DIR) / "player" / "lfd-bench";
 
-RunResult runTool(const fs::path& tool, const fs::path& dir, const std::string& args)
+// `env`: "NAME=value " assignments put before the command (e.g. a PATH without ffmpeg).
+RunResult runTool(const fs::path& tool, const fs::path& dir, const std::string& args, const std::string& env = "")
 {
     const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string command = "'" + tool.string() + "' " + args + " > '" + out.string() + "' 2> '" +
+    const std::string command = env + "'" + tool.string() + "' " + args + " > '" + out.string() + "' 2> '" +
                                 err.string() + "'";
     RunResult r;
     const int raw = std::system(command.c_str());
@@ -67,7 +71,10 @@ RunResult runTool(const fs::path& tool, const fs::path& dir, const std::string& 
     return r;
 }
 
-RunResult runPlay(const fs::path& dir, const std::string& args) { return runTool(kPlay, dir, args); }
+RunResult runPlay(const fs::path& dir, const std::string& args, const std::string& env = "")
+{
+    return runTool(kPlay, dir, args, env);
+}
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
@@ -167,12 +174,17 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
     const player::Image eia = player::readImage(out / "eia.png", 4);
     EXPECT_EQ(eia.width, 384u);
     EXPECT_EQ(eia.height, 216u);
-    // 4 views of 96x72 on a 16:9 panel: the quilt layout chooses its tiles; find the file.
+    // 4 views of 96x72 on a 16:9 panel: the quilt layout chooses its tiles; with --frames 3
+    // (and no --frame) one numbered quilt per frame.
     fs::path quilt;
+    size_t quilts = 0;
     for (const auto& e : fs::directory_iterator(out))
-        if (e.path().filename().string().rfind("quilt_qs", 0) == 0)
+        if (e.path().filename().string().rfind("quilt_000", 0) == 0) {
+            ++quilts;
             quilt = e.path();
-    ASSERT_FALSE(quilt.empty()) << "no quilt_qs*.png written";
+        }
+    EXPECT_EQ(quilts, 3u) << "quilt_0000_qs*.png .. quilt_0002_qs*.png";
+    ASSERT_FALSE(quilt.empty()) << "no quilt_000?_qs*.png written";
     const player::Image quiltImage = player::readImage(quilt);
     EXPECT_EQ(quiltImage.width % 96, 0u);
     EXPECT_EQ(quiltImage.height % 72, 0u);
@@ -441,6 +453,203 @@ TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
     EXPECT_NE(missing.status, 0);
     EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
     EXPECT_NE(missing.err.find("missing.lfdpack"), std::string::npos) << missing.err;
+}
+
+} // namespace
+} // namespace lfd::test
+
+// ---- Driving a display: camera flags, quilt input and output, preview --------------------
+namespace lfd::test {
+namespace {
+
+// Centroid x and count of the pixels that differ from the background (player::kBackground).
+std::pair<double, size_t> coverage(const player::Image& view)
+{
+    const std::vector<uint8_t> mask = coverageMask(view);
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < mask.size(); ++i)
+        if (mask[i]) {
+            sum += double(i % view.width);
+            ++n;
+        }
+    return {n ? sum / double(n) : 0.0, n};
+}
+
+// The round trip: a quilt written by --quilt and read back with --quilt-in gives
+// the EIA of direct rendering, byte for byte. 12 views of 96x72 fill a 4x3 quilt; 8 views
+// leave one tile of a 3x3 quilt empty, which --quilt-views 8 skips.
+TEST_F(CliTest, QuiltWrittenAndReadBackGivesTheDirectEia)
+{
+    for (const auto& [views, quiltPrefix, extra] :
+         {std::tuple<int, std::string, std::string>{12, "q12_qs4x3a1.78", ""},
+          std::tuple<int, std::string, std::string>{8, "q8_qs3x3a1.78", " --quilt-views 8"}}) {
+        SCOPED_TRACE(views);
+        const fs::path out = dir_ / ("round_trip_" + std::to_string(views));
+        fs::create_directories(out);
+        const std::string tag = "q" + std::to_string(views);
+        const RunResult direct = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) + " --views " +
+                                                   std::to_string(views) + " --view-size 96x72 --frame 20 --out " +
+                                                   q(out / "direct.png") + " --quilt " + q(out / (tag + ".png")));
+        ASSERT_EQ(direct.status, 0) << direct.err;
+        const fs::path quilt = out / (quiltPrefix + ".png");
+        ASSERT_TRUE(fs::exists(quilt)) << quilt;
+        const RunResult back = runPlay(dir_, "--headless --quilt-in " + q(quilt) + " --display " + q(profile_) +
+                                                 extra + " --out " + q(out / "back.png"));
+        ASSERT_EQ(back.status, 0) << back.err;
+        const player::Image a = player::readImage(out / "direct.png"), b = player::readImage(out / "back.png");
+        ASSERT_EQ(a.width, b.width);
+        EXPECT_TRUE(a.pixels == b.pixels) << "max difference " << player::maxAbsDiff(a, b);
+    }
+}
+
+// Each camera flag changes the views as documented (the exact geometry is checked against
+// hand-worked projections in camera_controls_test.cpp).
+TEST_F(CliTest, CameraFlagsChangeTheViewsAsDocumented)
+{
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) +
+                               " --views 4 --view-size 96x72 --no-turntable --views-out ";
+    auto render = [&](const std::string& name, const std::string& flags) {
+        const RunResult r = runPlay(dir_, common + q(dir_ / name) + " " + flags);
+        EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
+        return std::array<player::Image, 2>{player::readImage(dir_ / name / "view_000.png"),
+                                            player::readImage(dir_ / name / "view_003.png")};
+    };
+    const auto base = render("base", "");
+    const auto [baseX, baseCount] = coverage(base[1]);
+    ASSERT_GT(baseCount, 200u);
+
+    // --zoom 2: the scene covers about four times the pixels (clipped at the view's edges).
+    EXPECT_GT(coverage(render("zoom", "--zoom 2")[1]).second, 2 * baseCount);
+    // --pan 5,0: 5 mm right on a 34.54 mm screen of 96 view pixels = 13.9 px in every view.
+    const auto pan = render("pan", "--pan 5,0");
+    EXPECT_NEAR(coverage(pan[1]).first - baseX, 13.9, 2.0);
+    EXPECT_NEAR(coverage(pan[0]).first - coverage(base[0]).first, 13.9, 2.0);
+    // --orbit: another side of the scene.
+    EXPECT_GT(player::rmse(render("orbit", "--orbit 90,0")[1], base[1]), 5.0);
+    // --focal-depth 5: the scene moves 5 mm behind the screen, so it shifts right from the
+    // leftmost to the rightmost camera (e = -/+80.4 mm) by about 160.8 * 5 / 305 mm = 7.3 px more.
+    const auto focal = render("focal", "--focal-depth 5");
+    const double disparityBase = baseX - coverage(base[0]).first;
+    const double disparityFocal = coverage(focal[1]).first - coverage(focal[0]).first;
+    EXPECT_NEAR(disparityFocal - disparityBase, 7.3, 2.0);
+    // --depthiness 0: every camera central, every view the same.
+    const auto flat = render("flat", "--depthiness 0");
+    EXPECT_EQ(player::maxAbsDiff(flat[0], flat[1]), 0);
+    EXPECT_GT(player::maxAbsDiff(base[0], base[1]), 0);
+    // --no-turntable: frame 30 (0.5 s) shows what frame 0 shows.
+    const auto later = render("later", "--frame 30");
+    EXPECT_EQ(player::maxAbsDiff(later[1], base[1]), 0);
+}
+
+// --frames N with --quilt writes the animation as numbered quilts; --quilt-video encodes
+// them with ffmpeg; without ffmpeg the sequence stays and the video step fails in one line.
+TEST_F(CliTest, AnimatedQuiltSequenceAndVideo)
+{
+    const fs::path out = dir_ / "anim";
+    fs::create_directories(out);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) +
+                               " --views 12 --view-size 96x72 --frames 3 --fps 4 --quilt " + q(out / "spin.png");
+    const bool haveFfmpeg = !player::findOnPath("ffmpeg").empty();
+    const RunResult r = runPlay(dir_, common + (haveFfmpeg ? " --quilt-video " + q(out / "spin.mp4") : ""));
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<player::Image> frames;
+    for (const char* name : {"spin_0000_qs4x3a1.78.png", "spin_0001_qs4x3a1.78.png", "spin_0002_qs4x3a1.78.png"}) {
+        ASSERT_TRUE(fs::exists(out / name)) << name;
+        frames.push_back(player::readImage(out / name));
+    }
+    EXPECT_GT(player::rmse(frames[0], frames[1]), 1.0) << "the turntable turns between frames";
+    if (haveFfmpeg) {
+        const fs::path video = out / "spin_qs4x3a1.78.mp4";
+        ASSERT_TRUE(fs::exists(video)) << r.out;
+        EXPECT_GT(fs::file_size(video), 1000u);
+        if (!player::findOnPath("ffprobe").empty()) {
+            const RunResult probe = runTool(player::findOnPath("ffprobe"), out,
+                                            "-v error -count_frames -select_streams v:0 -show_entries "
+                                            "stream=nb_read_frames,width,height,codec_name -of csv=p=0 " + q(video));
+            EXPECT_EQ(probe.out, "h264,384,216,3\n") << probe.err;
+        }
+    } else {
+        std::printf("[ NOTE     ] ffmpeg not installed: the video half was not run\n");
+    }
+
+    // No ffmpeg on PATH: the sequence is written, the video step fails with one line.
+    const fs::path noFfmpeg = dir_ / "no_ffmpeg";
+    fs::create_directories(noFfmpeg);
+    const RunResult missing = runPlay(dir_,
+                                      "--headless " + q(pack_) + " --display " + q(profile_) +
+                                          " --views 12 --view-size 96x72 --frames 2 --quilt " + q(noFfmpeg / "s.png") +
+                                          " --quilt-video " + q(noFfmpeg / "s.mp4"),
+                                      "PATH=/nonexistent ");
+    EXPECT_EQ(missing.status, 1);
+    EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
+    EXPECT_NE(missing.err.find("ffmpeg is missing"), std::string::npos) << missing.err;
+    EXPECT_TRUE(fs::exists(noFfmpeg / "s_0001_qs4x3a1.78.png"));
+    EXPECT_FALSE(fs::exists(noFfmpeg / "s_qs4x3a1.78.mp4"));
+    // A video alone (no --quilt to keep) fails before rendering and leaves nothing.
+    const fs::path videoOnly = dir_ / "video_only";
+    fs::create_directories(videoOnly);
+    const RunResult early = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+                                              " --views 4 --view-size 96x72 --quilt-video " + q(videoOnly / "v.mp4"),
+                                    "PATH=/nonexistent ");
+    EXPECT_EQ(early.status, 1);
+    EXPECT_NE(early.err.find("ffmpeg is missing"), std::string::npos) << early.err;
+    EXPECT_TRUE(fs::is_empty(videoOnly));
+}
+
+// --preview always (headless timing of the window's preview): every 2nd view at half size,
+// interleaved into the full panel.
+TEST_F(CliTest, PreviewRendersFewerSmallerViewsIntoTheFullPanel)
+{
+    const fs::path out = dir_ / "preview";
+    fs::create_directories(out);
+    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+                                          " --views 8 --view-size 96x72 --preview always --stats " +
+                                          q(out / "s.json") + " --out " + q(out / "eia.png"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("(preview), 4 views of 48x36"), std::string::npos) << r.out;
+    const nlohmann::json stats = nlohmann::json::parse(readText(out / "s.json"));
+    EXPECT_EQ(stats["views"], 4);
+    EXPECT_EQ(stats["view_width"], 48);
+    const player::Image eia = player::readImage(out / "eia.png");
+    EXPECT_EQ(eia.width, 384u);
+    EXPECT_EQ(eia.height, 216u);
+    // Three views at a third of the size with --preview-view-step 3 --preview-size-divisor 3.
+    const RunResult custom = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+                                               " --views 8 --view-size 96x72 --preview always --preview-view-step 3"
+                                               " --preview-size-divisor 3");
+    ASSERT_EQ(custom.status, 0) << custom.err;
+    EXPECT_NE(custom.out.find("(preview), 3 views of 32x24"), std::string::npos) << custom.out;
+}
+
+TEST_F(CliTest, DisplayDrivingBadInputFailsCleanly)
+{
+    std::ofstream(dir_ / "plain.png") << "not a quilt";
+    const std::string small = " --display " + q(profile_) + " --views 4 --view-size 64x48 --out " + q(dir_ / "e.png");
+    const std::string pack = "--headless " + q(pack_) + small;
+    const std::pair<std::string, std::string> cases[] = {
+        {"--headless --quilt-in " + q(dir_ / "missing_qs2x2a1.png") + " --display " + q(profile_), "missing_qs2x2a1.png"},
+        {"--headless --quilt-in " + q(dir_ / "plain.png") + " --display " + q(profile_), "plain.png"},
+        {pack + " --quilt-in " + q(dir_ / "x_qs2x2a1.png"), "--quilt-in"},
+        {"--headless --quilt-in " + q(dir_ / "x_qs2x2a1.png") + small, "--views"},
+        {"--headless --display " + q(profile_), "PACK"},
+        {pack + " --monitor 1", "--monitor"},
+        {pack + " --fullscreen", "--fullscreen"},
+        {pack + " --orbit 30", "--orbit"},
+        {pack + " --pan 1,x", "--pan"},
+        {pack + " --depthiness 9", "--depthiness"},
+        {pack + " --zoom 0", "--zoom"},
+        {pack + " --preview sometimes", "--preview"},
+        {pack + " --preview-view-step 0", "--preview-view-step"},
+        {pack + " --quilt-video " + q(dir_ / "clip.avi"), "--quilt-video"},
+    };
+    for (const auto& [args, culprit] : cases) {
+        const RunResult r = runPlay(dir_, args);
+        EXPECT_NE(r.status, 0) << args;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected: " << r.err;
+        EXPECT_NE(r.err.find(culprit), std::string::npos) << "error must name " << culprit << ": " << r.err;
+        EXPECT_EQ(outputsIn(dir_), std::vector<std::string>{"plain.png"}) << args;
+    }
 }
 
 } // namespace

@@ -87,3 +87,41 @@ TEST_F(PlayerSessionTest, FailedSwitchKeepsTheCurrentRenderer)
 
 } // namespace
 } // namespace lfd::test
+
+namespace lfd::test {
+namespace {
+
+// The responsive preview alternates with full frames in one session: preview frames use
+// their own fewer, smaller views and EIA, each renderer follows the size changes, and the
+// full-quality frame after a preview is exactly the full frame before it.
+TEST_F(PlayerSessionTest, PreviewFramesReturnToTheSameFullQualityFrame)
+{
+    for (const std::string renderer : {"mvr", "mvr-layered", "lfdpr"}) {
+        SCOPED_TRACE(renderer);
+        if (renderer == "mvr-layered" && !caps().layerFromVertexShader)
+            continue;
+        player::PlayOptions options;
+        options.renderer = renderer;
+        options.turntablePeriod = 0.0;
+        const DisplayProfile profile = withViews(prototypeDisplayProfile(), 8, 64, 48);
+        player::PlayerSession session(options, profile, cubeAndSphereScene(), "scene");
+        session.renderFrame(0.0);
+        const std::vector<uint8_t> full = session.eia().read();
+        session.renderFrame(0.0, player::FrameQuality::Preview);
+        EXPECT_EQ(session.profile().viewCount, 4u);
+        EXPECT_EQ(session.targets().width(), 32u);
+        const std::vector<uint8_t> preview = session.eia().read();
+        EXPECT_EQ(preview.size(), full.size()) << "the preview fills the whole panel";
+        EXPECT_FALSE(preview == full);
+        session.renderFrame(0.0);
+        EXPECT_EQ(session.profile().viewCount, 8u);
+        EXPECT_TRUE(session.eia().read() == full);
+        session.timer().finish();
+        session.previewTimer().finish();
+        EXPECT_EQ(session.timer().stages().at("total").ms.size(), 2u);
+        EXPECT_EQ(session.previewTimer().stages().at("total").ms.size(), 1u);
+    }
+}
+
+} // namespace
+} // namespace lfd::test

@@ -146,3 +146,19 @@ TEST(Quilt, RejectsViewsThatDoNotFit) {
     EXPECT_THROW(assembleQuilt(layout, colouredViews(3, 4, 3)), std::invalid_argument);
     EXPECT_NO_THROW(assembleQuilt(layout, colouredViews(3, 4, 4)));
 }
+
+// The name carries the aspect each view is shown at - the screen's - so Looking Glass
+// players stretch the prototype's 4:3 tiles over its 16:9 screen as the cameras did.
+TEST(Quilt, NameAspectIsTheScreensAndSequencesNumberEachFrame) {
+    const QuiltLayout layout = chooseQuiltLayout(lfd::prototypeDisplayProfile());
+    EXPECT_NEAR(layout.nameAspect(), 345.40 / 194.30, 1e-12);
+    EXPECT_EQ(quiltFileName("out/q.png", layout), "out/q_qs8x6a1.78.png");
+    EXPECT_EQ(quiltSequenceFileName("out/q.png", layout, 7), "out/q_0007_qs8x6a1.78.png");
+    EXPECT_EQ(quiltSequenceFileName("out/q_qs8x6a1.78.png", layout, 12), "out/q_0012_qs8x6a1.78.png");
+    EXPECT_EQ(quiltSequenceFileName("q", layout, 12345), "q_12345_qs8x6a1.78.png");
+    EXPECT_EQ(quiltSequencePattern("out/q.png", layout), "out/q_%04d_qs8x6a1.78.png");
+    // ffmpeg reads a printf pattern: a '%' of the user's name is doubled.
+    EXPECT_EQ(quiltSequencePattern("50%/q%d.png", layout), "50%%/q%%d_%04d_qs8x6a1.78.png");
+    // Without a screen size the tile's aspect is used.
+    EXPECT_DOUBLE_EQ(chooseQuiltLayout(48, 420, 560, 1.0).nameAspect(), 0.75);
+}

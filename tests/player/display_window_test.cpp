@@ -1,0 +1,266 @@
+// Driving a display under Xvfb: --fullscreen on a screen of the panel's size shows the
+// headless EIA pixel for pixel (captured from the X server's framebuffer, not from the
+// program), a monitor of another size is refused (or, with --allow-mismatch, shows the EIA
+// centred and unscaled), --list-monitors, and the camera controls and the responsive
+// preview driven by mouse and keys through xdotool. Skipped without Xvfb / xdotool.
+#include "gl_test_support.h"
+#include "render_test_util.h"
+#include "test_scenes.h"
+#include "xvfb_support.h"
+
+#include "image_output.h"
+
+#include "lfd/pack.h"
+
+#include "skip_or_fail.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <csignal>
+#include <fstream>
+#include <thread>
+
+namespace lfd::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kPlay = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
+
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+
+std::string readText(const fs::path& path)
+{
+    std::ifstream in(path);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Xvfb of a given screen with a pack and the 384x216 test panel profile in a fresh folder.
+class DisplayWindowTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        if (findXvfb().empty() || !fs::exists("/usr/bin/xdotool"))
+            LFD_SKIP_OR_FAIL("Xvfb or xdotool not installed; driving a display not tested");
+        ASSERT_TRUE(fs::exists(kPlay)) << kPlay << " not built";
+        dir_ = testOutputDir(std::string("display_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        writePack(dir_ / "scene.lfdpack", cubeAndSphereScene());
+        std::ofstream(dir_ / "panel.json") << tenthPrototypeProfileJson("panel-384");
+        common_ = q(dir_ / "scene.lfdpack") + " --display " + q(dir_ / "panel.json") + " --views 8 --view-size 48x36";
+    }
+    void startServer(const std::string& screen)
+    {
+        fs::create_directories(dir_ / "fb");
+        server_ = std::make_unique<XvfbServer>(findXvfb(), screen, dir_ / "fb");
+        ASSERT_FALSE(server_->display().empty()) << "could not start Xvfb";
+        env_ = "DISPLAY=" + server_->display() + " ";
+    }
+    // Runs lfd-play to the end; returns the exit status, stderr in `err`.
+    int run(const std::string& args, std::string& err)
+    {
+        const int raw = std::system((env_ + q(kPlay) + " " + args + " > " + q(dir_ / "out.txt") + " 2> " +
+                                     q(dir_ / "err.txt"))
+                                        .c_str());
+        err = readText(dir_ / "err.txt");
+        return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    }
+    // Starts lfd-play in the background and waits for its window to have drawn a frame
+    // (the title carries frame times after the first swap); returns the window id.
+    std::string start(const std::string& args)
+    {
+        const std::string pidFile = (dir_ / "play.pid").string();
+        const std::string command = env_ + q(kPlay) + " " + args + " > " + q(dir_ / "play.log") + " 2>&1 & echo $! > " +
+                                    q(pidFile);
+        EXPECT_EQ(std::system(command.c_str()), 0);
+        std::ifstream(pidFile) >> pid_;
+        std::string window;
+        for (int i = 0; i < 300 && window.empty(); ++i) {
+            window = capture(env_ + "xdotool search --name '^lfd-play' 2>/dev/null | head -n 1");
+            if (window.empty())
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        EXPECT_FALSE(window.empty()) << "no lfd-play window: " << readText(dir_ / "play.log");
+        window_ = window;
+        if (!window.empty())
+            titleContains("| full: total");
+        return window;
+    }
+    // Waits until the title contains `text` (refreshed about twice a second).
+    std::string titleContains(const std::string& text, int tenths = 200)
+    {
+        std::string title;
+        for (int i = 0; i < tenths; ++i) {
+            title = capture(env_ + "xdotool getwindowname " + window_);
+            if (title.find(text) != std::string::npos)
+                return title;
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        ADD_FAILURE() << "window title never contained \"" << text << "\"; last: " << title;
+        return title;
+    }
+    void send(const std::string& what) { std::system((env_ + "xdotool " + what + " >/dev/null 2>&1").c_str()); }
+    void quit()
+    {
+        send("key --window " + window_ + " Escape");
+        bool gone = false;
+        for (int i = 0; i < 100 && !gone; ++i) {
+            gone = pid_ <= 0 || kill(pid_, 0) != 0;
+            if (!gone)
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        if (!gone) {
+            kill(pid_, SIGTERM);
+            ADD_FAILURE() << "lfd-play did not quit on Escape";
+        }
+        pid_ = -1;
+    }
+    void TearDown() override
+    {
+        if (pid_ > 0)
+            kill(pid_, SIGTERM);
+    }
+    // The headless EIA of the same frame (no turntable, so every frame is this one).
+    player::Image headlessEia()
+    {
+        std::string err;
+        EXPECT_EQ(run("--headless " + common_ + " --no-turntable --out " + q(dir_ / "eia.png"), err), 0) << err;
+        return player::readImage(dir_ / "eia.png", 3);
+    }
+
+    fs::path dir_;
+    std::string common_, env_, window_;
+    std::unique_ptr<XvfbServer> server_;
+    pid_t pid_ = -1;
+};
+
+// The acceptance check: on a screen of the panel's size, what the X server shows
+// equals the headless EIA of the same frame, exactly (no scaling, filtering, sRGB
+// conversion or offset).
+TEST_F(DisplayWindowTest, FullscreenShowsTheHeadlessEiaPixelForPixel)
+{
+    startServer("384x216x24");
+    const player::Image eia = headlessEia();
+    start(common_ + " --no-turntable --fullscreen");
+    const player::Image screen = server_->readScreen();
+    ASSERT_EQ(screen.width, 384u);
+    ASSERT_EQ(screen.height, 216u);
+    EXPECT_TRUE(screen.pixels == eia.pixels) << "max difference " << player::maxAbsDiff(screen, eia);
+    player::writeImage(dir_ / "screen.png", screen);
+    quit();
+    const std::string log = readText(dir_ / "play.log");
+    EXPECT_NE(log.find("fullscreen on monitor 0 'screen' 384x216"), std::string::npos) << log;
+    EXPECT_NE(log.find("(pixel for pixel)"), std::string::npos) << log;
+    EXPECT_NE(log.find("lfd-play: "), std::string::npos);
+    EXPECT_NE(log.find("| full: total"), std::string::npos) << "stdout readout (no title bar fullscreen): " << log;
+    EXPECT_NE(log.find("fps over the run"), std::string::npos) << log;
+
+    // The back buffer (--screenshot) agrees too.
+    std::string err;
+    ASSERT_EQ(run(common_ + " --no-turntable --fullscreen --frames 2 --screenshot " + q(dir_ / "shot.png"), err), 0)
+        << err;
+    EXPECT_TRUE(player::readImage(dir_ / "shot.png", 3).pixels == eia.pixels);
+}
+
+TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
+{
+    startServer("640x400x24");
+    std::string err;
+    EXPECT_EQ(run(common_ + " --fullscreen", err), 1);
+    EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+    EXPECT_NE(err.find("640x400"), std::string::npos) << err;
+    EXPECT_NE(err.find("384x216"), std::string::npos) << err;
+    EXPECT_NE(err.find("refused"), std::string::npos) << err;
+    EXPECT_EQ(run(common_ + " --fullscreen --monitor 0", err), 1);
+    EXPECT_NE(err.find("monitor 0 'screen' runs at 640x400"), std::string::npos) << err;
+
+    ASSERT_EQ(run("--list-monitors --display " + q(dir_ / "panel.json"), err), 0) << err;
+    EXPECT_EQ(readText(dir_ / "out.txt"), "0: screen 640x400 @ 0 Hz at +0+0 (primary) - does not match the panel 384x216\n");
+
+    // --allow-mismatch: the EIA unscaled at ((640 - 384) / 2, (400 - 216) / 2) = (128, 92), black around it.
+    const player::Image eia = headlessEia();
+    start(common_ + " --no-turntable --fullscreen --allow-mismatch");
+    const player::Image screen = server_->readScreen();
+    quit();
+    ASSERT_EQ(screen.width, 640u);
+    size_t differing = 0, litOutside = 0;
+    for (uint32_t y = 0; y < 400; ++y)
+        for (uint32_t x = 0; x < 640; ++x) {
+            const uint8_t* s = &screen.pixels[(size_t(y) * 640 + x) * 3];
+            const bool inside = x >= 128 && x < 512 && y >= 92 && y < 308;
+            if (!inside) {
+                litOutside += s[0] + s[1] + s[2] > 0;
+                continue;
+            }
+            const uint8_t* e = &eia.pixels[(size_t(y - 92) * 384 + (x - 128)) * 3];
+            differing += s[0] != e[0] || s[1] != e[1] || s[2] != e[2];
+        }
+    EXPECT_EQ(differing, 0u);
+    EXPECT_EQ(litOutside, 0u);
+}
+
+// Mouse and keys change the camera as documented (the title reports the state), and a
+// drag renders preview frames, returning to full quality once input stops.
+TEST_F(DisplayWindowTest, CameraControlsAndPreviewFromMouseAndKeys)
+{
+    startServer("1280x800x24");
+    // 320x200 window: the 384x216 EIA is shown at 0.8333x, so one window pixel is
+    // 34.54 / 320 = 0.108 mm on the screen. Scene radius 9.715 mm: focal steps of 0.97 mm.
+    const std::string w = start(common_ + " --window-size 320x200 --no-turntable --preview-hold 2");
+    titleContains("- full | yaw 0.0 pitch 0.0 zoom 1.00 pan 0.0,0.0 mm focal 0.0 mm depthiness 1.0 turntable off");
+
+    // Left drag 100 px right and 20 px down: yaw 30, pitch 6 (0.3 deg per pixel) - in preview.
+    send("mousemove --window " + w + " 100 100");
+    send("mousedown 1");
+    for (int i = 0; i < 5; ++i)
+        send("mousemove_relative -- 20 4");
+    send("mouseup 1");
+    titleContains("yaw 30.0 pitch 6.0");
+    titleContains("- preview |");
+    titleContains("- full |"); // 2 s after the drag
+    const std::string both = titleContains("| preview: total");
+    EXPECT_NE(both.find("| full: total"), std::string::npos) << both;
+
+    // Right drag 50 px: pan 50 * 0.108 = 5.4 mm.
+    send("mousemove --window " + w + " 100 100");
+    send("mousedown 3");
+    send("mousemove_relative -- 50 0");
+    send("mouseup 3");
+    titleContains("pan 5.4,0.0 mm");
+
+    send("click --window " + w + " 4"); // wheel up: zoom x 1.1
+    titleContains("zoom 1.10");
+    send("key --window " + w + " bracketright bracketright");
+    titleContains("focal 1.9 mm");
+    send("key --window " + w + " equal");
+    titleContains("depthiness 1.1");
+    send("key --window " + w + " minus minus minus");
+    titleContains("depthiness 0.8");
+    send("key --window " + w + " t");
+    titleContains("turntable on");
+    send("key --window " + w + " Home");
+    titleContains("yaw 0.0 pitch 0.0 zoom 1.00 pan 0.0,0.0 mm focal 0.0 mm depthiness 1.0 turntable off");
+    quit();
+    const std::string log = readText(dir_ / "play.log");
+    EXPECT_NE(log.find("preview frames (total"), std::string::npos) << log;
+}
+
+// Quilt input plays in the window too, fullscreen pixel for pixel like a scene.
+TEST_F(DisplayWindowTest, QuiltInputFullscreenEqualsItsHeadlessEia)
+{
+    startServer("384x216x24");
+    std::string err;
+    ASSERT_EQ(run("--headless " + common_ + " --no-turntable --quilt " + q(dir_ / "q.png"), err), 0) << err;
+    const fs::path quilt = dir_ / "q_qs3x3a1.78.png";
+    ASSERT_TRUE(fs::exists(quilt));
+    const std::string quiltArgs = "--quilt-in " + q(quilt) + " --quilt-views 8 --display " + q(dir_ / "panel.json");
+    ASSERT_EQ(run("--headless " + quiltArgs + " --out " + q(dir_ / "quilt_eia.png"), err), 0) << err;
+    start(quiltArgs + " --fullscreen");
+    titleContains("q_qs3x3a1.78.png");
+    const player::Image screen = server_->readScreen();
+    quit();
+    EXPECT_TRUE(screen.pixels == player::readImage(dir_ / "quilt_eia.png", 3).pixels);
+}
+
+} // namespace
+} // namespace lfd::test
