@@ -347,6 +347,7 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"mvr.frag", "frag", {}},
         {"eia_construct.comp", "comp", {}},
         {"gstd_reconstruct.comp", "comp", {}},
+        {"view_downsample.comp", "comp", {}},
         {"lfdpr_points.vert", "vert", {}},
         {"lfdpr_points.geom", "geom", {}},
         {"lfdpr_points.frag", "frag", {}},
