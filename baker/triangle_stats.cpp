@@ -9,6 +9,7 @@
 // area scale).
 
 #include "bake.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,9 @@ namespace {
 
 // Below this the triangle has no meaningful world area (collinear or coincident corners).
 constexpr double kDegenerateArea = 1e-30;
+// Triangles per work item: a few milliseconds each, so a thread start is amortised and
+// small scenes stay on the calling thread.
+constexpr size_t kTrianglesPerRange = size_t(1) << 16;
 
 glm::dvec3 toDouble(const glm::vec3& v) { return glm::dvec3(v); }
 glm::dvec2 toDouble(const glm::vec2& v) { return glm::dvec2(v); }
@@ -102,7 +106,7 @@ TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm:
     return stats;
 }
 
-void computeTriangleStats(Scene& scene)
+void computeTriangleStats(Scene& scene, unsigned threads)
 {
     const VertexStreams& v = scene.vertices;
     if (scene.indices.size() % 3 != 0)
@@ -137,15 +141,21 @@ void computeTriangleStats(Scene& scene)
         return v.uvs.empty() ? sizesOf.back() : sizesOf[size_t(material)]; // no uvs: untextured
     };
 
+    // Every triangle's statistics depend on that triangle alone: ranges of triangles go to
+    // the threads, each writing its own slots.
     scene.triangleStats.resize(triangleCount);
     const glm::vec2 noUv(0.0f);
-    for (size_t t = 0; t < triangleCount; ++t) {
-        const uint32_t i0 = scene.indices[3 * t], i1 = scene.indices[3 * t + 1], i2 = scene.indices[3 * t + 2];
-        const bool hasUv = !v.uvs.empty();
-        scene.triangleStats[t] = triangleStats(v.positions[i0], v.positions[i1], v.positions[i2],
-                                               hasUv ? v.uvs[i0] : noUv, hasUv ? v.uvs[i1] : noUv,
-                                               hasUv ? v.uvs[i2] : noUv, sizesFor(materialOf[t]));
-    }
+    const size_t ranges = (triangleCount + kTrianglesPerRange - 1) / kTrianglesPerRange;
+    parallelFor(ranges, threads, [&](size_t r) {
+        const size_t end = std::min(triangleCount, (r + 1) * kTrianglesPerRange);
+        for (size_t t = r * kTrianglesPerRange; t < end; ++t) {
+            const uint32_t i0 = scene.indices[3 * t], i1 = scene.indices[3 * t + 1], i2 = scene.indices[3 * t + 2];
+            const bool hasUv = !v.uvs.empty();
+            scene.triangleStats[t] = triangleStats(v.positions[i0], v.positions[i1], v.positions[i2],
+                                                   hasUv ? v.uvs[i0] : noUv, hasUv ? v.uvs[i1] : noUv,
+                                                   hasUv ? v.uvs[i2] : noUv, sizesFor(materialOf[t]));
+        }
+    });
 }
 
 } // namespace lfd::bake
