@@ -179,6 +179,23 @@ TEST(BakeThreads, StatisticsOverManyRangesMatchTheSerialOnes)
         computeTriangleStats(parallel, threads);
         EXPECT_TRUE(bytesOf(parallel.triangleStats) == bytesOf(serial.triangleStats)) << threads << " threads";
     }
+
+    // Two bad indices in different ranges: the first one is reported, as in a serial loop.
+    const auto vertices = uint32_t(scene.vertices.size());
+    scene.indices[3 * 150000 + 1] = vertices + 7;
+    scene.indices[3 * 10 + 2] = vertices + 3;
+    for (unsigned threads : {1u, 2u, 5u}) {
+        Scene bad = scene;
+        std::string message;
+        try {
+            computeTriangleStats(bad, threads);
+        } catch (const BakeError& e) {
+            message = e.what();
+        }
+        EXPECT_EQ(message, "triangle stats: vertex index " + std::to_string(vertices + 3) + " out of range (" +
+                               std::to_string(vertices) + " vertices)")
+            << threads << " threads";
+    }
 }
 
 TEST(BakeThreads, TriangleLimitRefusalIsTheSameForAnyThreadCount)
