@@ -108,9 +108,12 @@ TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm:
                             const std::vector<glm::uvec2>& textureSizes);
 
 // ---- texture_bake.cpp ------------------------------------------------------------
+class ThreadBudget; // parallel.h
+
 struct TextureBakeOptions {
-    uint32_t maxSize = 16384; // larger dimensions are reduced by powers of two
-    unsigned threads = 0;     // for the mip chain's row bands (0: one per hardware thread)
+    uint32_t maxSize = 16384;      // larger dimensions are reduced by powers of two
+    unsigned threads = 0;          // for the mip chain's row bands (0: one per hardware thread)
+    ThreadBudget* pool = nullptr;  // if set, the bands take their threads from it instead
 };
 
 // Reads only the image header: source size (for n_tex and reporting) before decoding.

@@ -2,7 +2,9 @@
 #include "bake.h"
 #include "bake_bench.h"
 #include "bake_report.h"
+#include "mip_chain.h"
 #include "parallel.h"
+#include "texture_prefetch.h"
 #include "lfd/pack.h"
 
 #include <CLI/CLI.hpp>
@@ -17,6 +19,11 @@ namespace {
 using namespace lfd;
 using namespace lfd::bake;
 using Clock = std::chrono::steady_clock;
+
+// Most texture memory held at once while textures are baked ahead of the writer: a
+// 16384² texture (1.33 GiB with its mips) is still baked alone, as without threads;
+// 8192² ones (341 MiB) two or three at a time.
+constexpr uint64_t kTextureMemoryLimit = uint64_t(1) << 30;
 
 struct Options {
     std::filesystem::path input, output, display, inspect;
@@ -111,13 +118,24 @@ int bakeScene(const Options& o)
     scene.settings.viewPixelWorld = float(viewPixelWorld);
     scene.settings.maxTextureSize = o.maxTextureSize;
 
-    // Textures are decoded and mipmapped one at a time, right before the writer needs them.
+    // Textures are decoded and mipmapped in the order the writer needs them, the ones after
+    // the texture being written on spare threads as far as kTextureMemoryLimit allows.
     stage = Clock::now();
+    ThreadBudget threads(o.threads);
+    std::vector<uint64_t> textureBytes;
+    for (const Texture& t : scene.textures)
+        textureBytes.push_back(mip::chainBytes(mip::chainLayout(t.width, t.height)));
+    TexturePrefetcher prefetcher(
+        [&](uint32_t index) {
+            const Texture& meta = scene.textures[index];
+            return bakeTexture(imported.textureSources[index],
+                               TextureBakeOptions{std::max(meta.width, meta.height), 0, &threads});
+        },
+        textureBytes, threads, kTextureMemoryLimit);
     size_t done = 0;
     const TextureProducer produce = [&](uint32_t index) {
         const Texture& meta = scene.textures[index];
-        Texture baked = bakeTexture(imported.textureSources[index],
-                                    TextureBakeOptions{std::max(meta.width, meta.height), o.threads});
+        Texture baked = prefetcher.take(index);
         baked.name = meta.name;
         log.info("textures: " + std::to_string(++done) + "/" + std::to_string(scene.textures.size()) + " " +
                  meta.name + " " + std::to_string(baked.width) + "x" + std::to_string(baked.height));

@@ -1,8 +1,6 @@
 // Mip chain filter and codecs; see mip_chain.h for the filter definition.
 #include "mip_chain.h"
 
-#include "parallel.h"
-
 #include <algorithm>
 #include <array>
 #include <cassert>
@@ -246,7 +244,13 @@ void downsampleRows(const uint8_t* src, const MipLevel& srcLevel, uint8_t* dst,
 void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb,
                 unsigned threads)
 {
-    threads = resolveThreads(threads);
+    ThreadBudget budget(threads);
+    buildChain(texels, levels, srgb, budget);
+}
+
+void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb, ThreadBudget& budget)
+{
+    const unsigned threads = budget.size();
     for (size_t l = 1; l < levels.size(); ++l) {
         const MipLevel& s = levels[l - 1];
         const MipLevel& d = levels[l];
@@ -259,7 +263,7 @@ void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb,
         // Split the output rows into n bands; each band re-reads the input rows it needs,
         // so bands are independent (an odd-height level shares one input row per seam)
         // and the level is the same bytes for any n.
-        parallelFor(n, n, [&](size_t t) {
+        parallelFor(n, budget, [&](size_t t) {
             const uint32_t y0 = uint32_t(uint64_t(d.height) * t / n);
             const uint32_t y1 = uint32_t(uint64_t(d.height) * (t + 1) / n);
             downsampleRows(src, s, dst, d, srgb, y0, y1);

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "lfd/scene.h"
+#include "parallel.h"
 
 #include <cstdint>
 #include <vector>
@@ -80,5 +81,7 @@ private:
 // the bytes do not depend on the thread count.
 void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb,
                 unsigned threads = 0);
+// The same with the bands' threads taken from a budget shared with other work.
+void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb, ThreadBudget& threads);
 
 } // namespace lfd::bake::mip

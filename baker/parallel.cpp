@@ -15,7 +15,7 @@ unsigned resolveThreads(unsigned requested)
     return requested > 0 ? requested : std::max(1u, std::thread::hardware_concurrency());
 }
 
-ThreadBudget::ThreadBudget(unsigned threads) : spare_(resolveThreads(threads) - 1) {}
+ThreadBudget::ThreadBudget(unsigned threads) : size_(resolveThreads(threads)), spare_(size_ - 1) {}
 
 unsigned ThreadBudget::take(unsigned wanted)
 {

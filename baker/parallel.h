@@ -25,11 +25,14 @@ unsigned resolveThreads(unsigned requested);
 class ThreadBudget {
 public:
     explicit ThreadBudget(unsigned threads); // 0: one per hardware thread
+    // The thread count it was made with (the caller's own thread included).
+    unsigned size() const { return size_; }
     // Takes up to `wanted` spare threads (beyond the caller's own); returns how many.
     unsigned take(unsigned wanted);
     void give(unsigned count);
 
 private:
+    unsigned size_;
     std::atomic<unsigned> spare_;
 };
 
