@@ -42,8 +42,8 @@ private:
 // throw, items not yet handed out are skipped and, after every thread has stopped, the
 // exception of the lowest item that threw is rethrown: every item below it had been
 // handed out before it and so ran, hence that is the error a serial loop would have
-// stopped at, whatever the thread count. If a thread cannot be
-// started, the threads that did start (at least the caller) take over its items.
+// stopped at, whatever the thread count. If a thread cannot be started, the threads that
+// did start (at least the caller) take over its items.
 void parallelFor(size_t count, unsigned threads, const std::function<void(size_t)>& body);
 // The same with helper threads taken from `threads` (and given back as they finish).
 void parallelFor(size_t count, ThreadBudget& threads, const std::function<void(size_t)>& body);
