@@ -18,6 +18,7 @@
 
 #include "lfd/pack_layout.h"
 
+#include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -25,9 +26,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <iomanip>
+#include <sstream>
 #include <string>
 
 namespace lfd::bake {
@@ -60,7 +61,7 @@ struct StageTimer {
     }
 };
 
-// What one run measured; a plain struct because it crosses a pipe from the child.
+// What one run measured; crosses from the child process as one line of text.
 struct RunResult {
     uint64_t trianglesIn = 0;
     uint64_t trianglesOut = 0;
@@ -70,8 +71,30 @@ struct RunResult {
     uint64_t level0Pixels = 0;
     uint64_t peakRssBytes = 0;
     uint64_t outputHash = 0; // of every byte the stages produced
-    char error[256] = {};    // empty: the run succeeded
+    std::string error;       // empty: the run succeeded
 };
+
+constexpr const char* kRunTag = "lfd-bake-bench-run";
+
+std::string toLine(const RunResult& r)
+{
+    std::ostringstream line;
+    line << std::setprecision(17) << kRunTag << " " << r.trianglesIn << " " << r.trianglesOut << " "
+         << r.tessellationSeconds << " " << r.tessellationCores << " " << r.statisticsSeconds << " "
+         << r.statisticsCores << " " << r.mipSeconds << " " << r.mipCores << " " << r.level0Pixels << " "
+         << r.peakRssBytes << " " << r.outputHash;
+    return line.str();
+}
+
+bool fromLine(const std::string& text, RunResult& r)
+{
+    std::istringstream line(text);
+    std::string tag;
+    line >> tag >> r.trianglesIn >> r.trianglesOut >> r.tessellationSeconds >> r.tessellationCores >>
+        r.statisticsSeconds >> r.statisticsCores >> r.mipSeconds >> r.mipCores >> r.level0Pixels >>
+        r.peakRssBytes >> r.outputHash;
+    return tag == kRunTag && !line.fail();
+}
 
 // Quads along each side of a mesh's grid, for about `triangles` in all.
 uint32_t gridSize(size_t triangles)
@@ -201,54 +224,53 @@ RunResult runOnce(const BenchOptions& options, unsigned threads)
     return r;
 }
 
-// runOnce in a child process: its ru_maxrss is this run's peak alone, not the highest of
-// all runs so far as it would be inside one process.
+// One run in a fresh process (this executable again, with --bench-run): its ru_maxrss is
+// this run's peak alone, not the highest of all runs so far as it would be in one
+// process. (Not fork(): the libraries lfd-bake loads start threads of their own, and a
+// forked copy of a multi-threaded process must not start threads.)
 RunResult runInChild(const BenchOptions& options, unsigned threads)
 {
     RunResult r;
     int fds[2];
     if (pipe(fds) != 0) {
-        std::snprintf(r.error, sizeof(r.error), "cannot create a pipe: %s", std::strerror(errno));
+        r.error = std::string("cannot create a pipe: ") + std::strerror(errno);
         return r;
     }
-    const pid_t pid = fork();
-    if (pid < 0) {
-        std::snprintf(r.error, sizeof(r.error), "cannot fork: %s", std::strerror(errno));
-        close(fds[0]);
-        close(fds[1]);
-        return r;
-    }
-    if (pid == 0) {
-        close(fds[0]);
-        RunResult child;
-        try {
-            child = runOnce(options, threads);
-        } catch (const std::exception& e) {
-            std::snprintf(child.error, sizeof(child.error), "%s", e.what());
-        } catch (...) {
-            std::snprintf(child.error, sizeof(child.error), "unknown exception");
-        }
-        const bool written = write(fds[1], &child, sizeof(child)) == ssize_t(sizeof(child));
-        close(fds[1]);
-        _exit(written ? 0 : 1); // note: no exit handlers or stream flushes of the parent's state
-    }
+    const std::string arguments[] = {"lfd-bake", "--bench-run", std::to_string(threads), "--bench-triangles",
+                                     std::to_string(options.triangles), "--bench-texture-size",
+                                     std::to_string(options.textureSize)};
+    std::vector<char*> argv;
+    for (const std::string& a : arguments)
+        argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+    posix_spawn_file_actions_addclose(&actions, fds[0]);
+    pid_t pid = -1;
+    const int spawned = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
     close(fds[1]);
-    size_t got = 0;
-    auto* bytes = reinterpret_cast<char*>(&r);
-    while (got < sizeof(r)) {
-        const ssize_t n = read(fds[0], bytes + got, sizeof(r) - got);
-        if (n <= 0)
-            break;
-        got += size_t(n);
+    if (spawned != 0) {
+        close(fds[0]);
+        r.error = std::string("cannot start a bench run: ") + std::strerror(spawned);
+        return r;
     }
+    std::string output;
+    char buffer[4096];
+    for (ssize_t n; (n = read(fds[0], buffer, sizeof buffer)) > 0;)
+        output.append(buffer, size_t(n));
     close(fds[0]);
     int status = 0;
     waitpid(pid, &status, 0);
-    if (got != sizeof(r)) {
+    if (!fromLine(output, r)) {
         r = RunResult{};
-        std::snprintf(r.error, sizeof(r.error), "the run ended without a result (%s %d)",
-                      WIFSIGNALED(status) ? "signal" : "exit status",
-                      WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status));
+        while (!output.empty() && output.back() == '\n')
+            output.pop_back();
+        r.error = output.empty() ? "the run ended without a result (" +
+                                       std::string(WIFSIGNALED(status) ? "signal " : "exit status ") +
+                                       std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status)) + ")"
+                                 : output;
     }
     return r;
 }
@@ -263,12 +285,12 @@ int runBench(const BenchOptions& options, std::ostream& out)
     out << "lfd-bake --bench: " << kMeshes << " meshes, " << kMeshes * 2 * n * n
         << " triangles (each with one edge over the bound), " << options.textureSize << "x" << options.textureSize
         << " sRGB texture; " << resolveThreads(0) << " hardware threads\n"
-        << std::flush; // note: before fork, or the child would inherit unflushed output
+        << std::flush; // shown while the runs work
 
     std::vector<RunResult> runs;
     for (unsigned threads : options.threads) {
         const RunResult r = runInChild(options, threads);
-        if (r.error[0] != '\0') {
+        if (!r.error.empty()) {
             out << "lfd-bake: error: bench with " << threads << " threads: " << r.error << "\n";
             return 1;
         }
@@ -298,6 +320,19 @@ int runBench(const BenchOptions& options, std::ostream& out)
     }
     out << "identical output for every thread count: " << (identical ? "yes" : "NO") << "\n";
     return identical ? 0 : 1;
+}
+
+int runBenchChild(const BenchOptions& options, unsigned threads, std::ostream& out)
+{
+    try {
+        out << toLine(runOnce(options, threads)) << "\n";
+        return 0;
+    } catch (const std::exception& e) {
+        out << e.what() << "\n";
+    } catch (...) {
+        out << "unknown exception\n";
+    }
+    return 1;
 }
 
 } // namespace lfd::bake

@@ -17,10 +17,14 @@ struct BenchOptions {
 };
 
 // Runs tessellation, triangle statistics and the mip chain once per thread count, each
-// run in its own child process so its peak memory (ru_maxrss) is its own, and prints one
-// line per run (triangles per second, megapixels per second, peak memory), the speed-up
-// of every count over the first, and whether every run produced the same bytes.
+// run in its own process so its peak memory (ru_maxrss) is its own, and prints one line
+// per run (triangles per second, megapixels per second, peak memory), the speed-up of
+// every count over the first, and whether every run produced the same bytes.
 // Returns 0, or 1 when a run failed or the outputs differ.
 int runBench(const BenchOptions& options, std::ostream& out);
+
+// One run, in the process runBench starts (lfd-bake --bench-run THREADS): prints its
+// figures as one line for runBench to read. Returns 0, or 1 after printing the error.
+int runBenchChild(const BenchOptions& options, unsigned threads, std::ostream& out);
 
 } // namespace lfd::bake

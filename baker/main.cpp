@@ -36,6 +36,7 @@ struct Options {
     bool strict = false;
     unsigned threads = 0; // 0: one per hardware thread
     bool bench = false;
+    unsigned benchRun = 0; // > 0: one --bench run in this process (started by --bench)
     BenchOptions benchOptions;
 };
 
@@ -194,6 +195,7 @@ int main(int argc, char** argv)
     app.add_option("--bench-texture-size", o.benchOptions.textureSize,
                    "--bench texture width and height (default 16384)")
         ->check(CLI::Range(1u, 16384u));
+    app.add_option("--bench-run", o.benchRun)->check(CLI::Range(1u, 1024u))->group(""); // internal, see bake_bench.h
 
     try {
         app.parse(argc, argv);
@@ -207,6 +209,8 @@ int main(int argc, char** argv)
     try {
         if (!o.inspect.empty())
             return inspect(o.inspect);
+        if (o.benchRun > 0)
+            return runBenchChild(o.benchOptions, o.benchRun, std::cout);
         if (o.bench) {
             if (o.threads > 2)
                 o.benchOptions.threads.push_back(o.threads);
