@@ -13,6 +13,9 @@ namespace lfd::bake {
 struct BenchOptions {
     size_t triangles = size_t(1) << 20; // input triangles, about (8 grid meshes)
     uint32_t textureSize = 16384;       // one square sRGB texture
+    // Each stage runs this many times per thread count and the fastest counts: first
+    // touches of fresh memory (costly in a VM) and other work on the machine count less.
+    unsigned repeat = 3;
     std::vector<unsigned> threads = {1, 2};
 };
 

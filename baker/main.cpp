@@ -195,6 +195,9 @@ int main(int argc, char** argv)
     app.add_option("--bench-texture-size", o.benchOptions.textureSize,
                    "--bench texture width and height (default 16384)")
         ->check(CLI::Range(1u, 16384u));
+    app.add_option("--bench-repeat", o.benchOptions.repeat,
+                   "--bench runs each stage this many times per thread count and reports the fastest (default 3)")
+        ->check(CLI::Range(1u, 100u));
     app.add_option("--bench-run", o.benchRun)->check(CLI::Range(1u, 1024u))->group(""); // internal, see bake_bench.h
 
     try {
