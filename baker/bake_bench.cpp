@@ -8,8 +8,9 @@
 //
 // The texture's mip chain is built from a procedural level 0 at the full requested size
 // (a bake would keep a 16384² texture whole only with --keep-full-textures or a scene the
-// views see that finely: texture_budget.cpp); decoding is left out on purpose, it is
-// OpenImageIO's single-threaded work and the same for any thread count.
+// views see that finely: texture_budget.cpp). Decoding is left out on purpose: it is
+// OpenImageIO's work, one thread per image (with threads, textures overlap each other:
+// texture_prefetch.h), and one generated texture would not show that.
 #include "bake_bench.h"
 
 #include "bake.h"
