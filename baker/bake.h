@@ -94,20 +94,26 @@ struct TessellationStats {
 // edge rates, checked to keep every output edge within the bound (face_pattern.h).
 // Attributes are interpolated from each face's own corners; normals/tangents
 // re-normalised. Triangles within the bound are left untouched. Updates primitives'
-// index ranges.
-TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& log);
+// index ranges. Meshes are tessellated on up to `threads` threads at once (0: one per
+// hardware thread); the result is the same for any thread count (parallel.h).
+TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& log, unsigned threads = 0);
 
 // ---- triangle_stats.cpp ----------------------------------------------------------
 // Paper eqs. texelCount / lfd_UVSize for every triangle. Needs the final (stored) size of
-// each texture (scene.textures[i].width/height set).
-void computeTriangleStats(Scene& scene);
+// each texture (scene.textures[i].width/height set). Ranges of triangles are computed on
+// up to `threads` threads (0: one per hardware thread); the result does not depend on it.
+void computeTriangleStats(Scene& scene, unsigned threads = 0);
 TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
                             const glm::vec2& uv0, const glm::vec2& uv1, const glm::vec2& uv2,
                             const std::vector<glm::uvec2>& textureSizes);
 
 // ---- texture_bake.cpp ------------------------------------------------------------
+class ThreadBudget; // parallel.h
+
 struct TextureBakeOptions {
-    uint32_t maxSize = 16384; // larger dimensions are reduced by powers of two
+    uint32_t maxSize = 16384;      // larger dimensions are reduced by powers of two
+    unsigned threads = 0;          // for the mip chain's row bands (0: one per hardware thread)
+    ThreadBudget* pool = nullptr;  // if set, the bands take their threads from it instead
 };
 
 // Reads only the image header: source size (for n_tex and reporting) before decoding.

@@ -66,7 +66,7 @@ void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const
         out << " " << name << " " << std::setprecision(3) << seconds << " s,";
         total += seconds;
     }
-    out << " total " << total << " s\n";
+    out << " total " << total << " s (" << r.threads << (r.threads == 1 ? " thread" : " threads") << ")\n";
     out << "  peak memory: " << bytes(r.peakRssBytes) << "\n";
     if (r.warnings)
         out << "  warnings: " << r.warnings << " (see above)\n";

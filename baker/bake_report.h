@@ -27,6 +27,7 @@ struct BakeReport {
     std::vector<std::pair<std::string, double>> stageSeconds;
     PackInfo pack;
     size_t peakRssBytes = 0;
+    unsigned threads = 1;
 };
 
 // Peak resident set size of this process (VmHWM), 0 where unavailable.

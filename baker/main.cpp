@@ -1,6 +1,10 @@
 // lfd-bake: glTF 2.0 -> .lfdpack (see README.md "Baking") and `lfd-bake --inspect PACK`.
 #include "bake.h"
+#include "bake_bench.h"
 #include "bake_report.h"
+#include "mip_chain.h"
+#include "parallel.h"
+#include "texture_prefetch.h"
 #include "lfd/pack.h"
 
 #include <CLI/CLI.hpp>
@@ -16,6 +20,11 @@ using namespace lfd;
 using namespace lfd::bake;
 using Clock = std::chrono::steady_clock;
 
+// Most texture memory held at once while textures are baked ahead of the writer: a
+// 16384² texture (1.33 GiB with its mips) is still baked alone, as without threads;
+// 8192² ones (341 MiB) two or three at a time.
+constexpr uint64_t kTextureMemoryLimit = uint64_t(1) << 30;
+
 struct Options {
     std::filesystem::path input, output, display, inspect;
     double maxEdgePx = 100.0;
@@ -25,6 +34,10 @@ struct Options {
     bool keepFullTextures = false;
     bool quiet = false;
     bool strict = false;
+    unsigned threads = 0; // 0: one per hardware thread
+    bool bench = false;
+    unsigned benchRun = 0; // > 0: one --bench run in this process (started by --bench)
+    BenchOptions benchOptions;
 };
 
 double secondsSince(Clock::time_point start)
@@ -73,7 +86,7 @@ int bakeScene(const Options& o)
     report.stageSeconds.emplace_back("bounds", secondsSince(stage));
 
     stage = Clock::now();
-    report.tessellation = tessellateScene(scene, maxEdgeWorld, log);
+    report.tessellation = tessellateScene(scene, maxEdgeWorld, log, o.threads);
     report.stageSeconds.emplace_back("tessellate", secondsSince(stage));
 
     // Texture sizes: GPU limit and what the views can resolve; n_tex uses the stored size.
@@ -92,7 +105,7 @@ int bakeScene(const Options& o)
         texture.height = stored.y;
         report.textures.push_back({texture.name, source, stored, texture.srgb});
     }
-    computeTriangleStats(scene);
+    computeTriangleStats(scene, o.threads);
     report.stageSeconds.emplace_back("triangle stats", secondsSince(stage));
 
     scene.settings.bakerVersion = LFD_VERSION;
@@ -106,13 +119,24 @@ int bakeScene(const Options& o)
     scene.settings.viewPixelWorld = float(viewPixelWorld);
     scene.settings.maxTextureSize = o.maxTextureSize;
 
-    // Textures are decoded and mipmapped one at a time, right before the writer needs them.
+    // Textures are decoded and mipmapped in the order the writer needs them, the ones after
+    // the texture being written on spare threads as far as kTextureMemoryLimit allows.
     stage = Clock::now();
+    ThreadBudget threads(o.threads);
+    std::vector<uint64_t> textureBytes;
+    for (const Texture& t : scene.textures)
+        textureBytes.push_back(mip::chainBytes(mip::chainLayout(t.width, t.height)));
+    TexturePrefetcher prefetcher(
+        [&](uint32_t index) {
+            const Texture& meta = scene.textures[index];
+            return bakeTexture(imported.textureSources[index],
+                               TextureBakeOptions{std::max(meta.width, meta.height), 0, &threads});
+        },
+        textureBytes, threads, kTextureMemoryLimit);
     size_t done = 0;
     const TextureProducer produce = [&](uint32_t index) {
         const Texture& meta = scene.textures[index];
-        Texture baked = bakeTexture(imported.textureSources[index],
-                                    TextureBakeOptions{std::max(meta.width, meta.height)});
+        Texture baked = prefetcher.take(index);
         baked.name = meta.name;
         log.info("textures: " + std::to_string(++done) + "/" + std::to_string(scene.textures.size()) + " " +
                  meta.name + " " + std::to_string(baked.width) + "x" + std::to_string(baked.height));
@@ -131,6 +155,7 @@ int bakeScene(const Options& o)
     report.meanPieceEdgePx = report.tessellation.meanPieceEdgeWorld / viewPixelWorld;
     report.warnings = imported.warnings.size();
     report.peakRssBytes = peakResidentBytes();
+    report.threads = resolveThreads(o.threads);
     if (!o.quiet) // --quiet: warnings and errors only
         printBakeReport(std::cout, o.output, report);
     return 0;
@@ -158,6 +183,22 @@ int main(int argc, char** argv)
     app.add_flag("--keep-full-textures", o.keepFullTextures, "never drop mip levels the views cannot resolve");
     app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
     app.add_flag("--strict", o.strict, "treat every warning (e.g. a glTF schema violation the baker can work around) as an error");
+    app.add_option("--threads", o.threads,
+                   "threads for tessellation, triangle statistics and mip chains (default 0: one per hardware "
+                   "thread; 1: serial); the pack is the same bytes for any count")
+        ->check(CLI::Range(0u, 1024u));
+    app.add_flag("--bench", o.bench,
+                 "measure tessellation, triangle statistics and mip chains with 1 and 2 threads (and --threads N "
+                 "if above 2) on a generated scene; no input or output");
+    app.add_option("--bench-triangles", o.benchOptions.triangles, "--bench scene size (default 1048576 triangles)")
+        ->check(CLI::Range(size_t(16), size_t(1) << 26));
+    app.add_option("--bench-texture-size", o.benchOptions.textureSize,
+                   "--bench texture width and height (default 16384)")
+        ->check(CLI::Range(1u, 16384u));
+    app.add_option("--bench-repeat", o.benchOptions.repeat,
+                   "--bench runs each stage this many times per thread count and reports the fastest (default 3)")
+        ->check(CLI::Range(1u, 100u));
+    app.add_option("--bench-run", o.benchRun)->check(CLI::Range(1u, 1024u))->group(""); // internal, see bake_bench.h
 
     try {
         app.parse(argc, argv);
@@ -171,6 +212,13 @@ int main(int argc, char** argv)
     try {
         if (!o.inspect.empty())
             return inspect(o.inspect);
+        if (o.benchRun > 0)
+            return runBenchChild(o.benchOptions, o.benchRun, std::cout);
+        if (o.bench) {
+            if (o.threads > 2)
+                o.benchOptions.threads.push_back(o.threads);
+            return runBench(o.benchOptions, std::cout);
+        }
         if (o.input.empty() || o.output.empty()) {
             std::cerr << "lfd-bake: need INPUT and -o OUTPUT (or --inspect PACK); see --help\n";
             return 2;

@@ -5,8 +5,6 @@
 #include <array>
 #include <cassert>
 #include <cmath>
-#include <exception>
-#include <thread>
 
 namespace lfd::bake::mip {
 
@@ -246,8 +244,13 @@ void downsampleRows(const uint8_t* src, const MipLevel& srcLevel, uint8_t* dst,
 void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb,
                 unsigned threads)
 {
-    if (threads == 0)
-        threads = std::max(1u, std::thread::hardware_concurrency());
+    ThreadBudget budget(threads);
+    buildChain(texels, levels, srgb, budget);
+}
+
+void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb, ThreadBudget& budget)
+{
+    const unsigned threads = budget.size();
     for (size_t l = 1; l < levels.size(); ++l) {
         const MipLevel& s = levels[l - 1];
         const MipLevel& d = levels[l];
@@ -257,36 +260,14 @@ void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb,
         const uint64_t count = uint64_t(d.width) * d.height;
         const unsigned n = unsigned(
             std::min<uint64_t>({threads, d.height, std::max<uint64_t>(1, count >> 16)}));
-        if (n <= 1) {
-            downsampleRows(src, s, dst, d, srgb, 0, d.height);
-            continue;
-        }
         // Split the output rows into n bands; each band re-reads the input rows it needs,
-        // so bands are independent (an odd-height level shares one input row per seam).
-        std::vector<std::thread> workers;
-        auto band = [&](unsigned t) {
+        // so bands are independent (an odd-height level shares one input row per seam)
+        // and the level is the same bytes for any n.
+        parallelFor(n, budget, [&](size_t t) {
             const uint32_t y0 = uint32_t(uint64_t(d.height) * t / n);
             const uint32_t y1 = uint32_t(uint64_t(d.height) * (t + 1) / n);
             downsampleRows(src, s, dst, d, srgb, y0, y1);
-        };
-        try {
-            for (unsigned t = 1; t < n; ++t)
-                workers.emplace_back(band, t);
-        } catch (...) {
-            // Could not start a thread: do the remaining bands here.
-            for (unsigned t = unsigned(workers.size()) + 1; t < n; ++t)
-                band(t);
-        }
-        std::exception_ptr error;
-        try {
-            band(0);
-        } catch (...) {
-            error = std::current_exception();
-        }
-        for (std::thread& w : workers)
-            w.join();
-        if (error)
-            std::rethrow_exception(error);
+        });
     }
 }
 

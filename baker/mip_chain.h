@@ -18,6 +18,7 @@
 #pragma once
 
 #include "lfd/scene.h"
+#include "parallel.h"
 
 #include <cstdint>
 #include <vector>
@@ -76,8 +77,11 @@ private:
 };
 
 // Fills levels 1.. of `levels` in `texels` from level 0, each level from the one above.
-// Rows of a level are split between up to `threads` threads (0: hardware concurrency).
+// Rows of a level are split between up to `threads` threads (0: one per hardware thread);
+// the bytes do not depend on the thread count.
 void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb,
                 unsigned threads = 0);
+// The same with the bands' threads taken from a budget shared with other work.
+void buildChain(uint8_t* texels, const std::vector<MipLevel>& levels, bool srgb, ThreadBudget& threads);
 
 } // namespace lfd::bake::mip

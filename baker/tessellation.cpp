@@ -19,18 +19,29 @@
 // one side has, the other has too, hence no T-junctions and no cracks, with or without
 // a seam. Attributes of a new point come from the face's own corners, so each side of a
 // seam keeps its own uv/normal at the shared position.
+//
+// Threads (issue 9; the pack must not depend on them, parallel.h): meshes (groups of
+// primitives) are tessellated side by side, each reading the scene and writing only its
+// own new vertices and pieces, which are then appended in mesh order and renumbered as a
+// serial run would have numbered them. Inside a mesh, the patterns of oversized faces
+// (most of the time on finely cut scenes) are computed on the threads other meshes have
+// left, a chunk of faces at a time, while every step that numbers vertices stays in order.
 
 #include "tessellation.h"
 
 #include "face_pattern.h"
+#include "parallel.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <bit>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <mutex>
 #include <string>
 
 namespace lfd::bake {
@@ -47,6 +58,21 @@ static_assert(kMaxOutputTriangles * 3 < std::numeric_limits<uint32_t>::max(),
 constexpr int kMaxEdgeRate = 1 << 14;
 // Input triangles between two progress lines on very large meshes.
 constexpr size_t kProgressInterval = size_t(1) << 20;
+// Faces planned at a time (MeshTessellator::plan): enough work to share between threads,
+// few enough patterns held at once. A chunk also ends at about kPiecesPerChunk pieces, so
+// its patterns stay a few MiB however finely its faces are cut.
+constexpr size_t kFacesPerChunk = 4096;
+constexpr size_t kPiecesPerChunk = size_t(1) << 16;
+// Faces per work item when the patterns of a chunk are shared out.
+constexpr size_t kFacesPerItem = 32;
+// Most vertices a tessellated scene may have (fits int32_t: the limit the splitter has
+// always had).
+constexpr size_t kMaxVertices = size_t(std::numeric_limits<int32_t>::max());
+// note: the refusals name no mesh: groups run concurrently, and the same input must be
+// refused with the same message whatever the thread count and whichever group noticed.
+const char* const kTooManyTriangles =
+    "tessellation: the scene would exceed 268435456 (2^28) triangles at this edge bound; raise the bound";
+const char* const kTooManyVertices = "tessellation: more than 2^31 - 1 vertices; raise the edge bound";
 
 // ---- Small open-addressing hash map ---------------------------------------------------
 // The weld, edge-rate and edge-point maps see millions of inserts on big meshes; linear probing over
@@ -160,30 +186,68 @@ double edgeLength2(const glm::vec3& a, const glm::vec3& b)
 
 // ---- Tessellating one mesh ------------------------------------------------------------
 
+// The vertices one group of primitives sees while it is tessellated: the scene's, read
+// only and shared by every group (so groups can run on different threads), followed by
+// the ones this group adds. Added vertex k is numbered base + k, as if appended to the
+// scene; tessellateMeshes renumbers them once the groups before this one have said how
+// many they added, so the final numbering is the serial one whatever the thread count.
+struct GroupVertices {
+    const VertexStreams& scene;
+    uint32_t base = 0; // scene.size()
+    VertexStreams added;
+
+    const glm::vec3& position(uint32_t i) const { return i < base ? scene.positions[i] : added.positions[i - base]; }
+};
+
 // Tessellates the triangles of one mesh against one bound (object units). Holds the weld,
 // edge-rate and edge-point maps, which must live as long as any triangle of the mesh is
-// being tessellated.
+// being tessellated. Only ever reads the scene: everything it makes lands in `vertices`
+// and in the caller's output indices.
 class MeshTessellator {
 public:
-    // weldOf: per-vertex welded id for the whole vertex buffer; entries of this mesh's
-    // vertices are (re)written by weld(), new vertices are appended.
-    MeshTessellator(VertexStreams& vertices, std::vector<uint32_t>& weldOf, double bound,
-                    size_t expectedVertices, std::string label)
-        : v_(vertices), weldOf_(weldOf), bound_(bound), label_(std::move(label)), weldByPosition_(expectedVertices),
-          rateOf_(expectedVertices), edgePointsOf_(expectedVertices / 2)
+    // The input triangles use scene vertices firstVertex .. firstVertex + vertexSpan - 1
+    // (the weld table covers that range only).
+    MeshTessellator(GroupVertices& vertices, uint32_t firstVertex, size_t vertexSpan, double bound,
+                    size_t expectedVertices)
+        : v_(vertices), firstVertex_(firstVertex), weldOf_(vertexSpan, kInvalid), bound_(bound),
+          weldByPosition_(expectedVertices), rateOf_(expectedVertices), edgePointsOf_(expectedVertices / 2)
     {
         weldPosition_.reserve(expectedVertices);
     }
 
-    void weld(uint32_t vertex) { weldOf_[vertex] = weldId(v_.positions[vertex]); }
+    void weld(uint32_t vertex) { weldOf_[vertex - firstVertex_] = weldId(v_.scene.positions[vertex]); }
 
-    // Appends triangle (a, b, c), or the pieces it is cut into, to out (3 indices each).
-    // Returns whether it was cut. `budget`: how many more output triangles are allowed.
-    bool tessellate(uint32_t a, uint32_t b, uint32_t c, size_t budget, std::vector<uint32_t>& out);
+    // Triangles are tessellated a chunk at a time, in three steps, so that the costly
+    // part - the pattern of each oversized face (face_pattern.cpp) - can run on several
+    // threads while everything that numbers vertices stays in triangle order:
+    //   plan      (in order)  edge rates of the next triangles, the chunk's faces;
+    //   patterns  (parallel)  the pattern of every cut face of the chunk, from positions
+    //                         alone: a pure function of its corners and edge points;
+    //   emit      (in order)  edge points, interior points and pieces, face by face.
+    // The output is the one a face-by-face loop gives, for any thread count.
+    //
+    // plan: takes up to kFacesPerChunk triangles (fewer when their pieces would be many)
+    // from `triangles` (3 scene vertex indices each, `count` triangles) and returns how
+    // many it took. Throws if a face alone could exceed `budget` more triangles.
+    size_t plan(const uint32_t* triangles, size_t count, size_t budget);
+    // Skips the faces left once stopped() says so (the chunk is then abandoned).
+    void patterns(ThreadBudget& threads, const std::function<bool()>& stopped);
+    // Appends chunk face f, or the pieces it is cut into, to out (3 indices each).
+    // Returns whether it was cut.
+    bool emit(size_t f, std::vector<uint32_t>& out);
 
     size_t unresolved() const { return unresolved_; }
 
 private:
+    // A triangle of the chunk being tessellated.
+    struct Face {
+        std::array<uint32_t, 3> corner{};
+        std::array<int, 3> rates{};
+        bool cut = false;
+        FacePattern pattern; // set by patterns() where cut
+    };
+
+    uint32_t weldOf(uint32_t vertex) const { return weldOf_[vertex - firstVertex_]; }
     uint32_t weldId(const glm::vec3& position)
     {
         const glm::vec3 p = canonicalPosition(position);
@@ -196,19 +260,20 @@ private:
 
     int edgeRate(uint32_t wa, uint32_t wb);
     glm::vec3 edgePoint(uint32_t wa, uint32_t wb, int rate, int k) const;
+    glm::vec3 boundaryPoint(uint32_t va, uint32_t vb, int rate, int k) const;
     uint32_t edgePoints(uint32_t va, uint32_t vb, int rate);
     uint32_t appendVertex();
 
-    VertexStreams& v_;
-    std::vector<uint32_t>& weldOf_;
+    GroupVertices& v_;
+    uint32_t firstVertex_;
+    std::vector<uint32_t> weldOf_; // welded id of scene vertex firstVertex_ + i
     double bound_;
-    std::string label_; // for messages
     std::vector<glm::vec3> weldPosition_; // canonical position per welded id
     FlatMap<PositionKey> weldByPosition_;
     FlatMap<uint64_t> rateOf_;       // welded edge -> pieces
     FlatMap<uint64_t> edgePointsOf_; // vertex pair -> first of its rate - 1 edge points
+    std::vector<Face> chunk_;
     std::vector<uint32_t> boundaryIndex_;
-    std::vector<glm::vec3> boundaryPosition_;
     size_t unresolved_ = 0;
 };
 
@@ -269,28 +334,30 @@ int MeshTessellator::edgeRate(uint32_t wa, uint32_t wb)
     return rate;
 }
 
+// note: tessellateMeshes checks the limit again on the sum over all groups.
 uint32_t MeshTessellator::appendVertex()
 {
-    if (v_.positions.size() >= size_t(std::numeric_limits<int32_t>::max()))
-        throw BakeError("tessellation: more than 2^31 - 1 vertices; raise the edge bound");
-    const auto index = uint32_t(v_.positions.size());
-    v_.positions.emplace_back();
-    if (!v_.normals.empty())
-        v_.normals.emplace_back();
-    if (!v_.tangents.empty())
-        v_.tangents.emplace_back();
-    if (!v_.uvs.empty())
-        v_.uvs.emplace_back();
-    weldOf_.push_back(kInvalid);
+    VertexStreams& added = v_.added;
+    if (size_t(v_.base) + added.size() >= kMaxVertices)
+        throw BakeError(kTooManyVertices);
+    const auto index = v_.base + uint32_t(added.size());
+    added.positions.emplace_back();
+    if (!v_.scene.normals.empty())
+        added.normals.emplace_back();
+    if (!v_.scene.tangents.empty())
+        added.tangents.emplace_back();
+    if (!v_.scene.uvs.empty())
+        added.uvs.emplace_back();
     return index;
 }
 
-// Interpolated attributes of a new vertex from corner vertices and their weights (the
-// face's own corners, or an edge's two vertices): uv linearly, normal and tangent
-// re-normalised, tangent handedness from the heaviest corner. Weights that cancel out a
-// direction (opposite normals) keep the heaviest corner's instead of dividing by zero.
+// Interpolated attributes of new vertex `target` (an index into `to`) from scene vertices
+// `from` of `v` and their weights (the face's own corners, or an edge's two vertices): uv
+// linearly, normal and tangent re-normalised, tangent handedness from the heaviest corner.
+// Weights that cancel out a direction (opposite normals) keep the heaviest corner's
+// instead of dividing by zero.
 template <size_t N>
-void interpolateAttributes(VertexStreams& v, uint32_t target, const std::array<uint32_t, N>& from,
+void interpolateAttributes(const VertexStreams& v, VertexStreams& to, size_t target, const std::array<uint32_t, N>& from,
                            const std::array<double, N>& weight)
 {
     size_t heaviest = 0;
@@ -305,15 +372,15 @@ void interpolateAttributes(VertexStreams& v, uint32_t target, const std::array<u
         return length > 1e-20 ? glm::vec3(sum / length) : get(from[heaviest]);
     };
     if (!v.normals.empty())
-        v.normals[target] = direction([&](uint32_t i) { return v.normals[i]; });
+        to.normals[target] = direction([&](uint32_t i) { return v.normals[i]; });
     if (!v.tangents.empty())
-        v.tangents[target] = glm::vec4(direction([&](uint32_t i) { return glm::vec3(v.tangents[i]); }),
-                                       v.tangents[from[heaviest]].w);
+        to.tangents[target] = glm::vec4(direction([&](uint32_t i) { return glm::vec3(v.tangents[i]); }),
+                                        v.tangents[from[heaviest]].w);
     if (!v.uvs.empty()) {
         glm::dvec2 uv(0.0);
         for (size_t i = 0; i < N; ++i)
             uv += weight[i] * glm::dvec2(v.uvs[from[i]]);
-        v.uvs[target] = glm::vec2(uv);
+        to.uvs[target] = glm::vec2(uv);
     }
 }
 
@@ -324,71 +391,118 @@ void interpolateAttributes(VertexStreams& v, uint32_t target, const std::array<u
 // with its own uvs and normals.
 uint32_t MeshTessellator::edgePoints(uint32_t va, uint32_t vb, int rate)
 {
-    const auto next = uint32_t(v_.positions.size());
+    const auto next = v_.base + uint32_t(v_.added.size());
     const uint32_t found = edgePointsOf_.findOrInsert(pairKey(va, vb), next);
     if (found != next)
         return found;
     const uint32_t lo = std::min(va, vb), hi = std::max(va, vb);
     for (int k = 1; k < rate; ++k) {
-        const uint32_t vertex = appendVertex();
-        v_.positions[vertex] = edgePoint(weldOf_[lo], weldOf_[hi], rate, k);
+        const size_t vertex = appendVertex() - v_.base;
+        v_.added.positions[vertex] = boundaryPoint(lo, hi, rate, k);
         const double t = double(k) / double(rate);
-        interpolateAttributes<2>(v_, vertex, {lo, hi}, {1.0 - t, t});
+        interpolateAttributes<2>(v_.scene, v_.added, vertex, {lo, hi}, {1.0 - t, t});
     }
     return next;
 }
 
-bool MeshTessellator::tessellate(uint32_t a, uint32_t b, uint32_t c, size_t budget, std::vector<uint32_t>& out)
+// Where point k of the edge from vertex va to vertex vb is (rate pieces): the position
+// edgePoints() stores for it, computed the same way (from the lower vertex index), so a
+// pattern computed before the point exists sees the bits it will have.
+glm::vec3 MeshTessellator::boundaryPoint(uint32_t va, uint32_t vb, int rate, int k) const
 {
-    const std::array<uint32_t, 3> corner = {a, b, c};
-    std::array<int, 3> rates{};
-    for (size_t i = 0; i < 3; ++i)
-        rates[i] = edgeRate(weldOf_[corner[i]], weldOf_[corner[(i + 1) % 3]]);
-    // Every edge within the bound: the face is emitted as it is.
-    if (rates == std::array<int, 3>{1, 1, 1}) {
+    const uint32_t lo = std::min(va, vb), hi = std::max(va, vb);
+    return edgePoint(weldOf(lo), weldOf(hi), rate, va < vb ? k : rate - k);
+}
+
+size_t MeshTessellator::plan(const uint32_t* triangles, size_t count, size_t budget)
+{
+    chunk_.clear();
+    size_t pieces = 0; // estimated, for the chunk's memory
+    for (size_t t = 0; t < count && chunk_.size() < kFacesPerChunk && pieces < kPiecesPerChunk; ++t) {
+        Face& face = chunk_.emplace_back();
+        face.corner = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
+        for (size_t i = 0; i < 3; ++i)
+            face.rates[i] = edgeRate(weldOf(face.corner[i]), weldOf(face.corner[(i + 1) % 3]));
+        // Every edge within the bound: the face is emitted as it is.
+        face.cut = face.rates != std::array<int, 3>{1, 1, 1};
+        if (!face.cut)
+            continue;
+        // A face of rate n has about n^2 pieces; refuse before allocating them.
+        const double largest = double(std::max({face.rates[0], face.rates[1], face.rates[2]}));
+        if (largest * largest > double(budget))
+            throw BakeError(kTooManyTriangles);
+        pieces += size_t(largest * largest);
+    }
+    return chunk_.size();
+}
+
+void MeshTessellator::patterns(ThreadBudget& threads, const std::function<bool()>& stopped)
+{
+    // note: only reads the weld table and positions, which nothing changes until emit.
+    const size_t ranges = (chunk_.size() + kFacesPerItem - 1) / kFacesPerItem;
+    parallelFor(ranges, threads, [&](size_t r) {
+        std::vector<glm::vec3> boundary;
+        for (size_t f = r * kFacesPerItem; f < std::min(chunk_.size(), (r + 1) * kFacesPerItem); ++f) {
+            Face& face = chunk_[f];
+            if (!face.cut || stopped())
+                continue;
+            // Boundary points in Bfr's order (face_pattern.h): corner i, then edge i's
+            // points from corner i towards corner i + 1.
+            boundary.clear();
+            for (size_t i = 0; i < 3; ++i) {
+                const uint32_t va = face.corner[i], vb = face.corner[(i + 1) % 3];
+                boundary.push_back(v_.scene.positions[va]);
+                for (int k = 1; k < face.rates[i]; ++k)
+                    boundary.push_back(boundaryPoint(va, vb, face.rates[i], k));
+            }
+            const std::array<glm::vec3, 3> position = {v_.scene.positions[face.corner[0]],
+                                                       v_.scene.positions[face.corner[1]],
+                                                       v_.scene.positions[face.corner[2]]};
+            face.pattern = facePattern(position, face.rates, boundary, bound_);
+        }
+    });
+}
+
+bool MeshTessellator::emit(size_t f, std::vector<uint32_t>& out)
+{
+    Face& face = chunk_[f];
+    const std::array<uint32_t, 3>& corner = face.corner;
+    if (!face.cut) {
         out.insert(out.end(), corner.begin(), corner.end());
         return false;
     }
-    // A face of rate n has about n^2 pieces; refuse before allocating them.
-    const double largest = double(std::max({rates[0], rates[1], rates[2]}));
-    if (largest * largest > double(budget))
-        throw BakeError("tessellation: " + label_ + " would exceed " + std::to_string(kMaxOutputTriangles) +
-                        " triangles at this edge bound; raise the bound");
 
-    // Boundary points in Bfr's order (face_pattern.h): corner i, then edge i's points
-    // from corner i towards corner i + 1.
+    // The boundary's vertices, in the order patterns() listed their positions.
     boundaryIndex_.clear();
-    boundaryPosition_.clear();
     for (size_t i = 0; i < 3; ++i) {
         const uint32_t va = corner[i], vb = corner[(i + 1) % 3];
+        const int rate = face.rates[i];
         boundaryIndex_.push_back(va);
-        boundaryPosition_.push_back(v_.positions[va]);
-        if (rates[i] == 1)
+        if (rate == 1)
             continue;
-        const uint32_t first = edgePoints(va, vb, rates[i]);
-        for (int k = 1; k < rates[i]; ++k) {
-            const uint32_t vertex = va < vb ? first + uint32_t(k - 1) : first + uint32_t(rates[i] - k - 1);
-            boundaryIndex_.push_back(vertex);
-            boundaryPosition_.push_back(v_.positions[vertex]);
-        }
+        const uint32_t first = edgePoints(va, vb, rate);
+        for (int k = 1; k < rate; ++k)
+            boundaryIndex_.push_back(va < vb ? first + uint32_t(k - 1) : first + uint32_t(rate - k - 1));
     }
 
-    const std::array<glm::vec3, 3> position = {v_.positions[a], v_.positions[b], v_.positions[c]};
-    const FacePattern pattern = facePattern(position, rates, boundaryPosition_, bound_);
+    const FacePattern& pattern = face.pattern;
     if (!(pattern.longestEdge <= bound_))
         ++unresolved_;
 
     // Interior points belong to this face alone.
-    const auto firstInterior = uint32_t(v_.positions.size());
+    const std::array<glm::vec3, 3> position = {v_.scene.positions[corner[0]], v_.scene.positions[corner[1]],
+                                               v_.scene.positions[corner[2]]};
+    const auto firstInterior = v_.base + uint32_t(v_.added.size());
     for (const glm::dvec3& w : pattern.interiorWeights) {
-        const uint32_t vertex = appendVertex();
-        v_.positions[vertex] = interiorPosition(position, w);
-        interpolateAttributes<3>(v_, vertex, corner, {w.x, w.y, w.z});
+        const size_t vertex = appendVertex() - v_.base;
+        v_.added.positions[vertex] = interiorPosition(position, w);
+        interpolateAttributes<3>(v_.scene, v_.added, vertex, corner, {w.x, w.y, w.z});
     }
     const auto boundaryCount = int(boundaryIndex_.size());
     for (int index : pattern.facets)
         out.push_back(index < boundaryCount ? boundaryIndex_[size_t(index)]
                                             : firstInterior + uint32_t(index - boundaryCount));
+    face.pattern = FacePattern(); // done with it: free its memory now
     return true;
 }
 
@@ -436,12 +550,14 @@ struct EdgeSummary {
     double sum = 0.0;
     size_t count = 0;
 
-    void add(const Scene& scene, const uint32_t* indices, size_t indexCount)
+    // position(i): where vertex i is.
+    template <typename Position>
+    void add(const Position& position, const uint32_t* indices, size_t indexCount)
     {
-        const auto& P = scene.vertices.positions;
         for (size_t i = 0; i < indexCount; i += 3)
             for (size_t e = 0; e < 3; ++e) {
-                const double length = std::sqrt(edgeLength2(P[indices[i + e]], P[indices[i + (e + 1) % 3]]));
+                const double length =
+                    std::sqrt(edgeLength2(position(indices[i + e]), position(indices[i + (e + 1) % 3])));
                 if (!std::isfinite(length))
                     continue;
                 longest = std::max(longest, length);
@@ -460,6 +576,14 @@ void truncateStreams(VertexStreams& v, size_t count)
         v.tangents.resize(count);
     if (!v.uvs.empty())
         v.uvs.resize(count);
+}
+
+void appendStreams(VertexStreams& v, const VertexStreams& added)
+{
+    v.positions.insert(v.positions.end(), added.positions.begin(), added.positions.end());
+    v.normals.insert(v.normals.end(), added.normals.begin(), added.normals.end());
+    v.tangents.insert(v.tangents.end(), added.tangents.begin(), added.tangents.end());
+    v.uvs.insert(v.uvs.end(), added.uvs.begin(), added.uvs.end());
 }
 
 bool usableBound(double bound) { return std::isfinite(bound) && bound > 0.0; }
@@ -524,88 +648,144 @@ std::vector<Group> groupPrimitives(const Scene& scene, const std::vector<double>
 // Edges of a group's triangles, object units.
 EdgeSummary groupEdges(const Scene& scene, const Group& group)
 {
+    const auto& positions = scene.vertices.positions;
     EdgeSummary edges;
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
-        edges.add(scene, scene.indices.data() + prim.firstIndex, prim.indexCount);
+        edges.add([&](uint32_t i) -> const glm::vec3& { return positions[i]; },
+                  scene.indices.data() + prim.firstIndex, prim.indexCount);
     }
     return edges;
 }
 
-// What tessellation produced so far, across groups.
-struct SplitResult {
-    std::vector<std::vector<uint32_t>> indices; // per primitive; used where changed[p]
-    std::vector<bool> changed;
-    std::vector<uint32_t> weldOf; // scratch shared by the groups' tessellators
-    size_t trianglesOut = 0;
+// The pieces of one primitive; `changed` false: none of its triangles was cut and its
+// original index range is kept.
+struct PrimitivePieces {
+    std::vector<uint32_t> indices;
+    bool changed = false;
+};
+
+// What tessellating one group produced. A group reads the scene and writes only its own
+// result and the pieces of its own primitives, so groups can run on different threads.
+struct GroupResult {
+    double longestBefore = 0.0; // object units
+    bool split = false;         // had an oversized edge, so it was tessellated
+    VertexStreams added;        // new vertices, numbered from the scene's vertex count on
+    size_t trianglesAdded = 0;  // output minus input triangles
     size_t trianglesSplit = 0;
     size_t unresolved = 0;
     double pieceEdgeSum = 0.0; // scene units, edges of the pieces of cut triangles
     size_t pieceEdgeCount = 0;
 };
 
+// What the groups of one tessellateMeshes call share: the scene-wide output limit, and
+// which group failed first.
+struct SplitShared {
+    size_t available = 0;        // triangles that may be added: kMaxOutputTriangles minus the input
+    std::atomic<size_t> used{0}; // triangles added by all groups so far
+    // Groups after the lowest failed one stop at their next face (their work is lost
+    // anyway); groups before it run on, since a serial run would have reached them first
+    // and their own error, if any, is the one to report (parallel.h).
+    std::atomic<size_t> firstFailed{std::numeric_limits<size_t>::max()};
+
+    bool stopped(size_t group) const { return firstFailed.load(std::memory_order_relaxed) < group; }
+    void failed(size_t group)
+    {
+        for (size_t seen = firstFailed.load(); group < seen && !firstFailed.compare_exchange_weak(seen, group);) {
+        }
+    }
+};
+
+// Thrown by a group that stopped because an earlier group failed; never reported, as the
+// earlier group's error is always the lower item's.
+struct Stopped {};
+
 // Tessellates the oversized triangles of one group, primitive by primitive.
-void splitGroup(Scene& scene, const Group& group, const std::string& label, SplitResult& result,
+void splitGroup(const Scene& scene, const Group& group, size_t groupIndex, const std::string& label,
+                SplitShared& shared, ThreadBudget& threads, GroupResult& result, std::vector<PrimitivePieces>& pieces,
                 const Log& log)
 {
     size_t groupTriangles = 0;
-    for (uint32_t p : group.primitives)
-        groupTriangles += scene.primitives[p].indexCount / 3;
+    uint32_t firstVertex = kInvalid, lastVertex = 0;
+    for (uint32_t p : group.primitives) {
+        const Primitive& prim = scene.primitives[p];
+        groupTriangles += prim.indexCount / 3;
+        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; ++i) {
+            firstVertex = std::min(firstVertex, scene.indices[i]);
+            lastVertex = std::max(lastVertex, scene.indices[i]);
+        }
+    }
+    if (groupTriangles == 0)
+        return;
+    result.split = true;
 
     // Weld every vertex the group uses.
-    if (result.weldOf.size() < scene.vertices.size())
-        result.weldOf.resize(scene.vertices.size(), kInvalid);
-    MeshTessellator tessellator(scene.vertices, result.weldOf, group.bound, groupTriangles, label);
+    GroupVertices vertices{scene.vertices, uint32_t(scene.vertices.size()), {}};
+    MeshTessellator tessellator(vertices, firstVertex, size_t(lastVertex - firstVertex) + 1, group.bound,
+                                groupTriangles);
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
         for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; ++i)
             tessellator.weld(scene.indices[i]);
     }
+    const auto position = [&](uint32_t i) -> const glm::vec3& { return vertices.position(i); };
 
     // Triangle by triangle; each primitive's pieces stay together and in order.
-    size_t groupSplit = 0, groupOut = 0, done = 0;
+    size_t groupOut = 0, done = 0;
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
-        std::vector<uint32_t>& out = result.indices[p];
+        std::vector<uint32_t>& out = pieces[p].indices;
         out.reserve(prim.indexCount + prim.indexCount / 2);
-        bool primitiveChanged = false;
-        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; i += 3) {
-            const size_t before = out.size();
-            if (tessellator.tessellate(scene.indices[i], scene.indices[i + 1], scene.indices[i + 2],
-                                       kMaxOutputTriangles - result.trianglesOut, out)) {
-                ++groupSplit;
-                primitiveChanged = true;
-                result.trianglesOut += (out.size() - before) / 3 - 1;
-                EdgeSummary pieces;
-                pieces.add(scene, out.data() + before, out.size() - before);
-                result.pieceEdgeSum += pieces.sum * group.scale;
-                result.pieceEdgeCount += pieces.count;
-                if (result.trianglesOut > kMaxOutputTriangles)
-                    throw BakeError("tessellation: " + label + " would exceed " +
-                                    std::to_string(kMaxOutputTriangles) +
-                                    " triangles at this edge bound; raise the bound");
+        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount;) {
+            // note: the limit a face is checked against before it is cut counts this
+            // group's own pieces only, so whether a face is refused does not depend on
+            // how far the other groups have got.
+            const size_t faces = tessellator.plan(scene.indices.data() + i, (prim.firstIndex + prim.indexCount - i) / 3,
+                                                  shared.available - result.trianglesAdded);
+            const auto stopped = [&] { return shared.stopped(groupIndex); };
+            tessellator.patterns(threads, stopped);
+            if (stopped())
+                throw Stopped{};
+            for (size_t f = 0; f < faces; ++f) {
+                const size_t before = out.size();
+                if (tessellator.emit(f, out)) {
+                    ++result.trianglesSplit;
+                    pieces[p].changed = true;
+                    const size_t added = (out.size() - before) / 3 - 1;
+                    result.trianglesAdded += added;
+                    EdgeSummary cut;
+                    cut.add(position, out.data() + before, out.size() - before);
+                    result.pieceEdgeSum += cut.sum * group.scale;
+                    result.pieceEdgeCount += cut.count;
+                    // The scene-wide total only grows: once it is over the limit the bake
+                    // is refused whichever group notices, so stop now rather than let
+                    // every group run up its own worst case in memory.
+                    if (shared.used.fetch_add(added) + added > shared.available)
+                        throw BakeError(kTooManyTriangles);
+                }
+                if (++done % kProgressInterval == 0)
+                    log.info("tessellation: " + label + ": " + std::to_string(done) + " / " +
+                             std::to_string(groupTriangles) + " triangles");
             }
-            if (++done % kProgressInterval == 0)
-                log.info("tessellation: " + label + ": " + std::to_string(done) + " / " +
-                         std::to_string(groupTriangles) + " triangles");
+            i += uint32_t(3 * faces);
         }
         groupOut += out.size() / 3;
-        result.changed[p] = primitiveChanged;
-        if (!primitiveChanged)
+        if (!pieces[p].changed)
             std::vector<uint32_t>().swap(out); // unchanged: the original range is kept
     }
-    result.unresolved += tessellator.unresolved();
-    result.trianglesSplit += groupSplit;
+    result.added = std::move(vertices.added);
+    result.unresolved = tessellator.unresolved();
     log.info("tessellation: " + label + ": " + std::to_string(groupTriangles) + " -> " +
-             std::to_string(groupOut) + " triangles (" + std::to_string(groupSplit) + " split)");
+             std::to_string(groupOut) + " triangles (" + std::to_string(result.trianglesSplit) + " split)");
 }
 
 // New index buffer: primitives in index order, changed ones replaced by their pieces;
 // triangles outside any primitive are carried over unchanged.
-void rebuildIndexBuffer(Scene& scene, const std::vector<uint32_t>& order, SplitResult& result)
+void rebuildIndexBuffer(Scene& scene, const std::vector<uint32_t>& order, std::vector<PrimitivePieces>& pieces,
+                        size_t trianglesOut)
 {
     std::vector<uint32_t> indices;
-    indices.reserve(result.trianglesOut * 3);
+    indices.reserve(trianglesOut * 3);
     uint32_t cursor = 0; // next old index not yet copied
     for (uint32_t p : order) {
         Primitive& prim = scene.primitives[p];
@@ -613,23 +793,38 @@ void rebuildIndexBuffer(Scene& scene, const std::vector<uint32_t>& order, SplitR
             indices.insert(indices.end(), scene.indices.begin() + cursor, scene.indices.begin() + prim.firstIndex);
         cursor = std::max(cursor, prim.firstIndex + prim.indexCount);
         const auto first = uint32_t(indices.size());
-        if (result.changed[p])
-            indices.insert(indices.end(), result.indices[p].begin(), result.indices[p].end());
+        if (pieces[p].changed)
+            indices.insert(indices.end(), pieces[p].indices.begin(), pieces[p].indices.end());
         else
             indices.insert(indices.end(), scene.indices.begin() + prim.firstIndex,
                            scene.indices.begin() + prim.firstIndex + prim.indexCount);
         prim.firstIndex = first;
         prim.indexCount = uint32_t(indices.size()) - first;
-        std::vector<uint32_t>().swap(result.indices[p]);
+        std::vector<uint32_t>().swap(pieces[p].indices);
     }
     indices.insert(indices.end(), scene.indices.begin() + cursor, scene.indices.end());
     scene.indices = std::move(indices);
 }
 
+// A Log whose calls may come from several threads at once (one line at a time).
+Log serialisedLog(const Log& log, std::mutex& mutex)
+{
+    Log out;
+    out.info = [&log, &mutex](const std::string& s) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        log.info(s);
+    };
+    out.warn = [&log, &mutex](const std::string& s) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        log.warn(s);
+    };
+    return out;
+}
+
 } // namespace
 
 TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxEdgeObject,
-                                   const std::vector<float>& meshScale, const Log& log)
+                                   const std::vector<float>& meshScale, const Log& log, unsigned threads)
 {
     if (maxEdgeObject.size() != scene.meshes.size() || meshScale.size() != scene.meshes.size())
         throw BakeError("tessellation: expected one bound and one scale per mesh");
@@ -639,46 +834,94 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
 
     TessellationStats stats;
     stats.trianglesIn = scene.triangleCount();
-    SplitResult result;
-    result.indices.resize(scene.primitives.size());
-    result.changed.assign(scene.primitives.size(), false);
-    result.trianglesOut = stats.trianglesIn;
 
-    // Split the groups that have an oversized edge (the others need no welding).
-    const size_t vertexCountIn = scene.vertices.size();
-    try {
-        for (uint32_t g = 0; g < groups.size(); ++g) {
-            const double longest = groupEdges(scene, groups[g]).longest;
-            stats.maxEdgeWorldBefore = std::max(stats.maxEdgeWorldBefore, longest * groups[g].scale);
-            if (longest > groups[g].bound)
-                splitGroup(scene, groups[g], meshLabel(scene, g), result, log);
+    // Split the groups that have an oversized edge (the others need no welding), each
+    // into its own result: the scene is not touched until every group is done.
+    std::vector<GroupResult> results(groups.size());
+    std::vector<PrimitivePieces> pieces(scene.primitives.size());
+    SplitShared shared;
+    shared.available = kMaxOutputTriangles - std::min(stats.trianglesIn, kMaxOutputTriangles);
+    std::mutex logMutex;
+    const Log groupLog = serialisedLog(log, logMutex);
+    // Groups run side by side; a group's face patterns use the threads other groups
+    // have finished with (a scene's largest mesh is often most of its work).
+    ThreadBudget pool(threads);
+    parallelFor(groups.size(), pool, [&](size_t g) {
+        try {
+            results[g].longestBefore = groupEdges(scene, groups[g]).longest;
+            if (results[g].longestBefore > groups[g].bound)
+                splitGroup(scene, groups[g], g, meshLabel(scene, uint32_t(g)), shared, pool, results[g], pieces,
+                           groupLog);
+        } catch (const Stopped&) {
+            throw;
+        } catch (...) {
+            shared.failed(g);
+            throw;
         }
-    } catch (...) {
-        // Leave the scene as it was: drop the vertices appended so far.
-        truncateStreams(scene.vertices, vertexCountIn);
-        throw;
+    });
+
+    // Combine in group order, as a serial run would have: group g's new vertices follow
+    // those of the groups before it.
+    const size_t vertexCountIn = scene.vertices.size();
+    size_t vertexCount = vertexCountIn, trianglesAdded = 0;
+    double pieceEdgeSum = 0.0;
+    size_t pieceEdgeCount = 0, unresolved = 0;
+    for (size_t g = 0; g < groups.size(); ++g) {
+        const GroupResult& r = results[g];
+        stats.maxEdgeWorldBefore = std::max(stats.maxEdgeWorldBefore, r.longestBefore * groups[g].scale);
+        if (!r.split)
+            continue;
+        const auto shift = uint32_t(vertexCount - vertexCountIn);
+        if (shift > 0)
+            for (uint32_t p : groups[g].primitives)
+                for (uint32_t& index : pieces[p].indices)
+                    if (index >= vertexCountIn)
+                        index += shift;
+        vertexCount += r.added.size();
+        if (vertexCount > kMaxVertices)
+            throw BakeError(kTooManyVertices);
+        trianglesAdded += r.trianglesAdded;
+        stats.trianglesSplit += r.trianglesSplit;
+        pieceEdgeSum += r.pieceEdgeSum;
+        pieceEdgeCount += r.pieceEdgeCount;
+        unresolved += r.unresolved;
     }
-    stats.trianglesSplit = result.trianglesSplit;
 
     if (stats.trianglesSplit > 0) {
-        rebuildIndexBuffer(scene, order, result);
+        try {
+            VertexStreams& v = scene.vertices;
+            v.positions.reserve(vertexCount);
+            v.normals.reserve(v.normals.empty() ? 0 : vertexCount);
+            v.tangents.reserve(v.tangents.empty() ? 0 : vertexCount);
+            v.uvs.reserve(v.uvs.empty() ? 0 : vertexCount);
+            for (GroupResult& r : results) {
+                appendStreams(v, r.added);
+                r.added = VertexStreams(); // free it before the next group is appended
+            }
+        } catch (...) {
+            // Leave the scene as it was: drop the vertices appended so far.
+            truncateStreams(scene.vertices, vertexCountIn);
+            throw;
+        }
+        rebuildIndexBuffer(scene, order, pieces, stats.trianglesIn + trianglesAdded);
         scene.triangleStats.clear(); // no longer lines up with the triangles
     }
 
-    // Report.
+    // Report (sums in group order, so the figures do not depend on the thread count).
     stats.trianglesOut = scene.triangleCount();
+    std::vector<EdgeSummary> after(groups.size());
+    parallelFor(groups.size(), threads, [&](size_t g) { after[g] = groupEdges(scene, groups[g]); });
     double edgeSum = 0.0;
     size_t edgeCount = 0;
-    for (const Group& group : groups) {
-        const EdgeSummary edges = groupEdges(scene, group);
-        stats.maxEdgeWorldAfter = std::max(stats.maxEdgeWorldAfter, edges.longest * group.scale);
-        edgeSum += edges.sum * group.scale;
-        edgeCount += edges.count;
+    for (size_t g = 0; g < groups.size(); ++g) {
+        stats.maxEdgeWorldAfter = std::max(stats.maxEdgeWorldAfter, after[g].longest * groups[g].scale);
+        edgeSum += after[g].sum * groups[g].scale;
+        edgeCount += after[g].count;
     }
     stats.meanEdgeWorldAfter = edgeCount > 0 ? edgeSum / double(edgeCount) : 0.0;
-    stats.meanPieceEdgeWorld = result.pieceEdgeCount > 0 ? result.pieceEdgeSum / double(result.pieceEdgeCount) : 0.0;
-    if (result.unresolved > 0)
-        log.warn("tessellation: " + std::to_string(result.unresolved) +
+    stats.meanPieceEdgeWorld = pieceEdgeCount > 0 ? pieceEdgeSum / double(pieceEdgeCount) : 0.0;
+    if (unresolved > 0)
+        log.warn("tessellation: " + std::to_string(unresolved) +
                  " edges or triangles could not be cut within the bound (float precision); they exceed it");
     log.info("tessellation: " + std::to_string(stats.trianglesIn) + " -> " +
              std::to_string(stats.trianglesOut) + " triangles (" + std::to_string(stats.trianglesSplit) +
@@ -689,7 +932,7 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
     return stats;
 }
 
-TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& log)
+TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& log, unsigned threads)
 {
     if (!(maxEdgeWorld > 0.0))
         throw BakeError("tessellation: the maximum edge length must be positive, got " +
@@ -703,7 +946,7 @@ TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& 
     for (size_t m = 0; m < scale.size(); ++m)
         if (std::isfinite(scale[m]) && scale[m] > 0.0f)
             maxEdgeObject[m] = maxEdgeWorld / double(scale[m]); // unused meshes: untouched
-    return tessellateMeshes(scene, maxEdgeObject, scale, log);
+    return tessellateMeshes(scene, maxEdgeObject, scale, log, threads);
 }
 
 MeshTopology meshTopology(const Scene& scene, uint32_t mesh)

@@ -14,9 +14,10 @@ namespace lfd::bake {
 // tessellateScene without the scene graph: maxEdgeObject[m] is the bound for mesh m in
 // its own object units (+infinity, NaN or <= 0 leaves the mesh untouched) and
 // meshScale[m] the factor that converts its lengths to scene units (reported in
-// TessellationStats only). Both vectors must have scene.meshes.size() entries.
+// TessellationStats only). Both vectors must have scene.meshes.size() entries. `threads`
+// as for tessellateScene.
 TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxEdgeObject,
-                                   const std::vector<float>& meshScale, const Log& log);
+                                   const std::vector<float>& meshScale, const Log& log, unsigned threads = 0);
 
 // Topology of one mesh after welding vertices with bit-identical positions (UV/normal
 // seams closed), built as an OpenMesh TriMesh.

@@ -279,7 +279,10 @@ Texture bakeTexture(const TextureSource& source, const TextureBakeOptions& optio
         }
         image.input->close();
 
-        mip::buildChain(texture.texels.data(), texture.mips, texture.srgb);
+        if (options.pool)
+            mip::buildChain(texture.texels.data(), texture.mips, texture.srgb, *options.pool);
+        else
+            mip::buildChain(texture.texels.data(), texture.mips, texture.srgb, options.threads);
     } catch (const std::bad_alloc&) {
         fail(source, "out of memory baking " + std::to_string(sourceSize.x) + "x" +
                          std::to_string(sourceSize.y) + " texture");

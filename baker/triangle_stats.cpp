@@ -9,6 +9,7 @@
 // area scale).
 
 #include "bake.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,6 +20,9 @@ namespace {
 
 // Below this the triangle has no meaningful world area (collinear or coincident corners).
 constexpr double kDegenerateArea = 1e-30;
+// Triangles per work item: a few milliseconds each, so a thread start is amortised and
+// small scenes stay on the calling thread.
+constexpr size_t kTrianglesPerRange = size_t(1) << 16;
 
 glm::dvec3 toDouble(const glm::vec3& v) { return glm::dvec3(v); }
 glm::dvec2 toDouble(const glm::vec2& v) { return glm::dvec2(v); }
@@ -102,27 +106,18 @@ TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm:
     return stats;
 }
 
-void computeTriangleStats(Scene& scene)
+void computeTriangleStats(Scene& scene, unsigned threads)
 {
     const VertexStreams& v = scene.vertices;
     if (scene.indices.size() % 3 != 0)
         throw BakeError("triangle stats: index count is not a multiple of 3");
     if (!v.uvs.empty() && v.uvs.size() != v.positions.size())
         throw BakeError("triangle stats: uv stream length differs from the position stream");
-    for (uint32_t index : scene.indices)
-        if (index >= v.positions.size())
-            throw BakeError("triangle stats: vertex index " + std::to_string(index) +
-                            " out of range (" + std::to_string(v.positions.size()) + " vertices)");
-
-    // Triangles outside every primitive use the default material: untextured.
-    const size_t triangleCount = scene.triangleCount();
-    std::vector<int32_t> materialOf(triangleCount, kNone);
     for (size_t p = 0; p < scene.primitives.size(); ++p) {
         const Primitive& prim = scene.primitives[p];
         if (prim.firstIndex % 3 != 0 || prim.indexCount % 3 != 0 ||
             uint64_t(prim.firstIndex) + prim.indexCount > scene.indices.size())
             throw BakeError("triangle stats: primitive " + std::to_string(p) + " has an invalid index range");
-        std::fill_n(materialOf.begin() + prim.firstIndex / 3, prim.indexCount / 3, prim.material);
     }
 
     // Texture sizes per material (computed once; kNone maps to the last entry: none).
@@ -137,15 +132,37 @@ void computeTriangleStats(Scene& scene)
         return v.uvs.empty() ? sizesOf.back() : sizesOf[size_t(material)]; // no uvs: untextured
     };
 
+    // Every triangle's statistics depend on that triangle alone: ranges of triangles go to
+    // the threads, each checking its own indices and writing its own slots (the error
+    // reported is the first bad triangle's, as in a serial loop: parallel.h).
+    const size_t triangleCount = scene.triangleCount();
     scene.triangleStats.resize(triangleCount);
     const glm::vec2 noUv(0.0f);
-    for (size_t t = 0; t < triangleCount; ++t) {
-        const uint32_t i0 = scene.indices[3 * t], i1 = scene.indices[3 * t + 1], i2 = scene.indices[3 * t + 2];
-        const bool hasUv = !v.uvs.empty();
-        scene.triangleStats[t] = triangleStats(v.positions[i0], v.positions[i1], v.positions[i2],
-                                               hasUv ? v.uvs[i0] : noUv, hasUv ? v.uvs[i1] : noUv,
-                                               hasUv ? v.uvs[i2] : noUv, sizesFor(materialOf[t]));
-    }
+    const size_t ranges = (triangleCount + kTrianglesPerRange - 1) / kTrianglesPerRange;
+    parallelFor(ranges, threads, [&](size_t r) {
+        const size_t first = r * kTrianglesPerRange, end = std::min(triangleCount, first + kTrianglesPerRange);
+        // Material of each triangle of the range: triangles outside every primitive use
+        // the default material (untextured); where primitives overlap, the last one wins.
+        std::vector<int32_t> materialOf(end - first, kNone);
+        for (const Primitive& prim : scene.primitives) {
+            const size_t a = std::max<size_t>(first, prim.firstIndex / 3);
+            const size_t b = std::min<size_t>(end, (size_t(prim.firstIndex) + prim.indexCount) / 3);
+            if (a < b)
+                std::fill(materialOf.begin() + ptrdiff_t(a - first), materialOf.begin() + ptrdiff_t(b - first),
+                          prim.material);
+        }
+        for (size_t t = first; t < end; ++t) {
+            const uint32_t i0 = scene.indices[3 * t], i1 = scene.indices[3 * t + 1], i2 = scene.indices[3 * t + 2];
+            for (uint32_t index : {i0, i1, i2})
+                if (index >= v.positions.size())
+                    throw BakeError("triangle stats: vertex index " + std::to_string(index) + " out of range (" +
+                                    std::to_string(v.positions.size()) + " vertices)");
+            const bool hasUv = !v.uvs.empty();
+            scene.triangleStats[t] = triangleStats(v.positions[i0], v.positions[i1], v.positions[i2],
+                                                   hasUv ? v.uvs[i0] : noUv, hasUv ? v.uvs[i1] : noUv,
+                                                   hasUv ? v.uvs[i2] : noUv, sizesFor(materialOf[t - first]));
+        }
+    });
 }
 
 } // namespace lfd::bake
