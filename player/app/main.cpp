@@ -6,6 +6,7 @@
 #include "frame_stages.h"
 #include "frame_stats.h"
 #include "gl_context.h"
+#include "gl_debug_output.h"
 #include "player_session.h"
 #include "quilt.h"
 #include "quilt_input.h"
@@ -62,6 +63,8 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
 {
     app.add_option("PACK", f.pack, "packed scene from lfd-bake (or --quilt-in instead)");
     app.add_flag("--headless", o.headless, "render without a window (EGL)");
+    app.add_flag("--gl-debug", o.glDebug,
+                 "debug GL context: print every KHR_debug message; a GL error fails the frame naming the call");
     app.add_option("--renderer", o.renderer, "renderer: " + rendererList())->capture_default_str();
     app.add_flag("--no-lfd-sampling", f.noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
     app.add_flag("--no-texture-splatting", f.noTextureSplatting, "lfdpr: no density reduction by texture");
@@ -394,16 +397,18 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
                 std::vector<fs::path> quilts)
 {
     using namespace lfd::player;
-    std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless();
+    std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless(options.glDebug);
     std::printf("lfd-play: %s\n", context->describeWithCodePaths().c_str());
     std::fflush(stdout);
     context->require(options.renderer == "mvr-layered" && scene);
+    lfd::gl::GlErrorWatch glErrors("lfd-play", options.glDebug);
 
     const uint64_t triangles = scene ? scene->triangleCount() : 0;
     const uint64_t drawnTriangles = scene ? scene->drawnTriangleCount() : 0;
     const std::string packName = options.pack.filename().string();
     PlayerSession session = scene ? PlayerSession(options, profile, std::move(*scene), packName)
                                   : PlayerSession(options, profile, std::move(quilts));
+    glErrors.check("the upload of " + (scene ? packName : std::string("the quilts")));
     const FrameQuality quality =
         options.preview == PreviewMode::Always ? FrameQuality::Preview : FrameQuality::Full;
     GpuTimer& timer = quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
@@ -422,6 +427,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
     try {
         for (uint32_t k = 0; k < options.frames; ++k) {
             session.renderFrame(double(k) / options.fps, quality);
+            glErrors.check("frame " + std::to_string(k));
             if (k == outputFrame && wantOutputs) {
                 outputs = session.readOutputs(k);
                 outputProfile = session.profile();

@@ -50,6 +50,7 @@ struct PlayOptions {
     uint32_t windowWidth = 1280, windowHeight = 800;
     std::string show = "eia";              // windowed: first output shown (eia|quilt|view|viewer)
     bool framesGiven = false;              // windowed: exit after `frames` frames
+    bool glDebug = false;                  // --gl-debug: debug context, KHR_debug messages printed
 
     // Driving a display (README "Driving a display").
     bool fullscreen = false;               // borderless fullscreen, EIA 1:1 on the monitor

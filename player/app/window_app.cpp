@@ -2,6 +2,7 @@
 
 #include "camera_controls.h"
 #include "gl_context.h"
+#include "gl_debug_output.h"
 #include "image_output.h"
 #include "monitor_selection.h"
 #include "quilt.h"
@@ -327,7 +328,8 @@ WindowSetup createWindow(const PlayOptions& options, const DisplayProfile& profi
 {
     WindowSetup setup;
     if (!options.fullscreen) {
-        setup.context = gl::GlContext::createWindow(int(options.windowWidth), int(options.windowHeight), "lfd-play");
+        setup.context = gl::GlContext::createWindow(int(options.windowWidth), int(options.windowHeight), "lfd-play",
+                                                    options.glDebug);
         return setup;
     }
     setup.fullscreen = true;
@@ -336,7 +338,7 @@ WindowSetup createWindow(const PlayOptions& options, const DisplayProfile& profi
                                   options.allowMismatch);
     const MonitorInfo& m = setup.monitors[setup.monitor];
     setup.placement = placePanel(m.width, m.height, profile.panelWidth, profile.panelHeight);
-    setup.context = gl::GlContext::createFullscreenWindow(int(setup.monitor), "lfd-play");
+    setup.context = gl::GlContext::createFullscreenWindow(int(setup.monitor), "lfd-play", options.glDebug);
     std::printf("lfd-play: fullscreen on monitor %zu '%s' %ux%u @ %d Hz, EIA %ux%u at %+d%+d%s\n", setup.monitor,
                 m.name.c_str(), m.width, m.height, m.refreshHz, profile.panelWidth, profile.panelHeight,
                 setup.placement.left, setup.placement.top,
@@ -363,7 +365,7 @@ GLFWwindow* createCompanion(const WindowSetup& setup, Input& input)
 }
 
 // The frame loop shared by scene and quilt input.
-int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& options)
+int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& options, gl::GlErrorWatch& glErrors)
 {
     GLFWwindow* window = setup.context->window();
     const DisplayProfile& display = session.displayProfile();
@@ -445,6 +447,7 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
         const bool previewNow = preview == PreviewMode::Always ||
                                 (preview == PreviewMode::Auto && controls.interacting(wall, options.previewHoldSeconds));
         session.renderFrame(animationTime, previewNow ? FrameQuality::Preview : FrameQuality::Full);
+        glErrors.check("frame " + std::to_string(previewFrames + fullFrames));
         ++(previewNow ? previewFrames : fullFrames);
 
         // Step 3: show the chosen output: the EIA 1:1 fullscreen, anything scaled to fit in a window.
@@ -576,8 +579,10 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
     WindowSetup setup = createWindow(options, profile);
     printStart(*setup.context);
     setup.context->require(options.renderer == "mvr-layered");
+    gl::GlErrorWatch glErrors("lfd-play", options.glDebug);
     PlayerSession session(options, profile, std::move(scene), packName);
-    return runLoop(setup, session, options);
+    glErrors.check("the upload of " + packName);
+    return runLoop(setup, session, options, glErrors);
 }
 
 int runWindowedQuilts(const PlayOptions& options, const DisplayProfile& profile,
@@ -586,8 +591,10 @@ int runWindowedQuilts(const PlayOptions& options, const DisplayProfile& profile,
     WindowSetup setup = createWindow(options, profile);
     printStart(*setup.context);
     setup.context->require(false);
+    gl::GlErrorWatch glErrors("lfd-play", options.glDebug);
     PlayerSession session(options, profile, std::move(quilts));
-    return runLoop(setup, session, options);
+    glErrors.check("the upload of the quilts");
+    return runLoop(setup, session, options, glErrors);
 }
 
 int listMonitorsCommand(const DisplayProfile& profile)

@@ -8,6 +8,7 @@
 #include "cli_support.h"
 #include "frame_pipeline.h"
 #include "gl_context.h"
+#include "gl_debug_output.h"
 
 #include "lfd/display_profile.h"
 #include "lfd/pack.h"
@@ -114,6 +115,8 @@ int main(int argc, char** argv)
                    "bench.csv, speed_vs_error.svg and PNGs (in DIR itself for one pack and view count, else in "
                    "DIR/<scene>-<N>v/)");
     app.add_flag("--quiet", options.quiet, "no progress lines");
+    bool glDebug = false;
+    app.add_flag("--gl-debug", glDebug, "debug GL context: print every KHR_debug message (GL errors fail the run either way)");
 
     if (const auto exit = lfd::cli::parseCommandLine(app, argc, argv, "lfd-bench"))
         return *exit;
@@ -180,7 +183,8 @@ int main(int argc, char** argv)
                 throw UsageError(pack + ": no such pack file");
 
         // Step 3: one GL context for every renderer and run.
-        std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless();
+        std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless(glDebug);
+        lfd::gl::GlErrorWatch glErrors("lfd-bench", glDebug); // messages printed as they arrive
         const bool layered = std::find(options.renderers.begin(), options.renderers.end(), "mvr-layered") !=
                                  options.renderers.end() ||
                              options.reference == "mvr-layered";

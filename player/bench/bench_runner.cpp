@@ -1,5 +1,7 @@
 #include "bench_runner.h"
 
+#include "gl_debug_output.h"
+
 #include "frame_pipeline.h"
 #include "frame_stages.h"
 #include "gstd_cache.h"
@@ -279,8 +281,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
         qualityTimer.finish();
         if (!result.timed)
             result.extra = renderer->extraStats();
-        if (const GLenum error = glGetError(); error != GL_NO_ERROR)
-            throw std::runtime_error("GL error " + std::to_string(error) + " while rendering with " + name);
+        gl::checkGlError("rendering with " + name);
         CapturedFrame frame = capture(pipeline);
         renderer.reset();
 

@@ -68,7 +68,7 @@ private:
 
 // Tries to make a GL 4.5 core context on one display; returns EGL_NO_CONTEXT (and leaves
 // the reason in `why`) when the display cannot provide one.
-EGLContext createOnDisplay(EGLDisplay display, std::string& why)
+EGLContext createOnDisplay(EGLDisplay display, bool debug, std::string& why)
 {
     EGLint major = 0, minor = 0;
     if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) {
@@ -101,7 +101,13 @@ EGLContext createOnDisplay(EGLDisplay display, std::string& why)
     const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    EGLContext context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttribs);
+    // EGL 1.5's debug attribute; a driver without it gets the plain context below.
+    const EGLint debugAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                   EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                   EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE, EGL_NONE};
+    EGLContext context = debug ? eglCreateContext(display, config, EGL_NO_CONTEXT, debugAttribs) : EGL_NO_CONTEXT;
+    if (context == EGL_NO_CONTEXT)
+        context = eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttribs);
     if (context == EGL_NO_CONTEXT) {
         why = "no OpenGL 4.5 core context (" + eglErrorName(eglGetError()) + ")";
         eglTerminate(display);
@@ -123,7 +129,7 @@ class GlfwContext final : public GlContext {
 public:
     // monitorIndex < 0: a desktop window of width x height; else fullscreen on that
     // monitor at its current mode (width and height ignored).
-    GlfwContext(int width, int height, const std::string& title, int monitorIndex = -1)
+    GlfwContext(int width, int height, const std::string& title, int monitorIndex, bool debug)
     {
         glfwSetErrorCallback(onGlfwError);
         if (!glfwInit())
@@ -133,6 +139,7 @@ public:
         glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
         glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
         glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+        glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug ? GLFW_TRUE : GLFW_FALSE);
         GLFWmonitor* monitor = monitorIndex >= 0 ? fullscreenHints(monitorIndex, width, height) : nullptr;
         window_ = glfwCreateWindow(width, height, title.c_str(), monitor, nullptr);
         if (!window_) {
@@ -202,7 +209,7 @@ private:
 
 } // namespace
 
-std::unique_ptr<GlContext> GlContext::createHeadless()
+std::unique_ptr<GlContext> GlContext::createHeadless(bool debug)
 {
     const char* clientExtensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     const bool platformBase = hasToken(clientExtensions, "EGL_EXT_platform_base");
@@ -240,7 +247,7 @@ std::unique_ptr<GlContext> GlContext::createHeadless()
     std::string reasons;
     for (const auto& [label, display] : candidates) {
         std::string why;
-        EGLContext context = createOnDisplay(display, why);
+        EGLContext context = createOnDisplay(display, debug, why);
         if (context != EGL_NO_CONTEXT)
             return std::make_unique<EglContext>(display, context);
         reasons += (reasons.empty() ? "" : "; ") + label + ": " + why;
@@ -248,14 +255,15 @@ std::unique_ptr<GlContext> GlContext::createHeadless()
     throw GlError("cannot create a headless OpenGL 4.5 core context through EGL (" + reasons + ")");
 }
 
-std::unique_ptr<GlContext> GlContext::createWindow(int width, int height, const std::string& title)
+std::unique_ptr<GlContext> GlContext::createWindow(int width, int height, const std::string& title, bool debug)
 {
-    return std::make_unique<GlfwContext>(width, height, title);
+    return std::make_unique<GlfwContext>(width, height, title, -1, debug);
 }
 
-std::unique_ptr<GlContext> GlContext::createFullscreenWindow(int monitorIndex, const std::string& title)
+std::unique_ptr<GlContext> GlContext::createFullscreenWindow(int monitorIndex, const std::string& title,
+                                                             bool debug)
 {
-    return std::make_unique<GlfwContext>(0, 0, title, monitorIndex);
+    return std::make_unique<GlfwContext>(0, 0, title, monitorIndex, debug);
 }
 
 void GlContext::queryCaps()

@@ -32,14 +32,18 @@ struct GlCapabilities {
 class GlContext {
 public:
     // Throws GlError with a clear message when no context, or no GL 4.5 core, can be made.
-    static std::unique_ptr<GlContext> createHeadless();
+    // `debug`: ask for a debug context (`--gl-debug`; KHR_debug messages in full), falling
+    // back to a plain one where the driver has none.
+    static std::unique_ptr<GlContext> createHeadless(bool debug = false);
     // Visible window with a GL 4.5 core context (GLFW; works under Xvfb).
-    static std::unique_ptr<GlContext> createWindow(int width, int height, const std::string& title);
+    static std::unique_ptr<GlContext> createWindow(int width, int height, const std::string& title,
+                                                   bool debug = false);
     // Fullscreen on monitor `monitorIndex` (glfwGetMonitors order) at its current video
     // mode - same size, bit depths and refresh rate, so nothing switches modes -
     // undecorated, no sRGB framebuffer, no iconify on focus loss, vsync on. Throws GlError
     // when the framebuffer is not the mode's size (a scaled desktop would resample it).
-    static std::unique_ptr<GlContext> createFullscreenWindow(int monitorIndex, const std::string& title);
+    static std::unique_ptr<GlContext> createFullscreenWindow(int monitorIndex, const std::string& title,
+                                                             bool debug = false);
     virtual ~GlContext() = default;
 
     virtual void makeCurrent() = 0;
