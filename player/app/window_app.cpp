@@ -3,6 +3,7 @@
 #include "camera_controls.h"
 #include "gl_context.h"
 #include "gl_debug_output.h"
+#include "gl_handles.h"
 #include "image_output.h"
 #include "monitor_selection.h"
 #include "quilt.h"
@@ -161,7 +162,8 @@ bool applyCameraInput(Input& input, CameraControls& controls, double mmPerPixel,
 
 // A 2D RGBA8 texture plus a read framebuffer on it, (re)allocated on size changes.
 struct BlitSource {
-    GLuint texture = 0, fbo = 0;
+    gl::Texture texture;
+    gl::Framebuffer fbo;
     uint32_t width = 0, height = 0;
     void ensure(uint32_t w, uint32_t h)
     {
@@ -170,20 +172,17 @@ struct BlitSource {
         release();
         width = w;
         height = h;
-        glCreateTextures(GL_TEXTURE_2D, 1, &texture);
+        texture = gl::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(texture, 1, GL_RGBA8, GLsizei(w), GLsizei(h));
-        glCreateFramebuffers(1, &fbo);
+        fbo = gl::createFramebuffer();
         glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, texture, 0);
         const uint8_t black[4] = {0, 0, 0, 255}; // quilt tiles past the last view stay black
         glClearTexImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, black);
     }
     void release()
     {
-        if (fbo)
-            glDeleteFramebuffers(1, &fbo);
-        if (texture)
-            glDeleteTextures(1, &texture);
-        fbo = texture = 0;
+        fbo.reset();
+        texture.reset();
     }
 };
 
@@ -393,9 +392,7 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
     GLFWwindow* companion = createCompanion(setup, input);
 
     BlitSource quilt, viewer;
-    GLuint layerFbo = 0, eiaFbo = 0;
-    glCreateFramebuffers(1, &layerFbo);
-    glCreateFramebuffers(1, &eiaFbo);
+    gl::Framebuffer layerFbo = gl::createFramebuffer(), eiaFbo = gl::createFramebuffer();
 
     // Animation clock: wall time minus paused time, or k / fps for a fixed frame count.
     const double startWall = glfwGetTime();
@@ -556,10 +553,12 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
                 "mean), %.1f fps over the run\n",
                 fullFrames, meanTotal(session.timer()), previewFrames, meanTotal(session.previewTimer()),
                 double(frame) / std::max(glfwGetTime() - startWall, 1e-9));
+    // Deleted here, with the panel's context current: framebuffers are not shared with the
+    // companion window's context.
     quilt.release();
     viewer.release();
-    glDeleteFramebuffers(1, &layerFbo);
-    glDeleteFramebuffers(1, &eiaFbo);
+    layerFbo.reset();
+    eiaFbo.reset();
     if (companion)
         glfwDestroyWindow(companion);
     return status;

@@ -130,24 +130,17 @@ std::vector<glm::vec3> reconstructionSamples(Reconstruction mode, uint64_t seed)
 
 EiaBuilder::EiaBuilder(const DisplayProfile& profile, uint64_t seed) : profile_(profile), seed_(seed) {
     validateDisplayProfile(profile_, profile_.name.empty() ? "display profile" : profile_.name);
-    program_ = gl::buildProgram({{GL_COMPUTE_SHADER, "eia_construct.comp"}});
-    glCreateTextures(GL_TEXTURE_2D, 1, &eia_);
+    program_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_construct.comp"}}));
+    eia_ = gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(eia_, 1, GL_RGBA8, GLsizei(profile_.panelWidth),
                        GLsizei(profile_.panelHeight));
     glTextureParameteri(eia_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(eia_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     if (glGetError() != GL_NO_ERROR) {
-        glDeleteTextures(1, &eia_);
-        glDeleteProgram(program_);
         throw gl::GlError("EIA: cannot allocate a " + std::to_string(profile_.panelWidth) + "x" +
                           std::to_string(profile_.panelHeight) +
                           " RGBA8 texture for display profile '" + profile_.name + "'");
     }
-}
-
-EiaBuilder::~EiaBuilder() {
-    glDeleteTextures(1, &eia_);
-    glDeleteProgram(program_);
 }
 
 void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& timer) {
@@ -183,8 +176,7 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
     GLint textureUnit = 0, imageUnit = 0;
     glGetUniformiv(program_, uniformLocation(program_, "views"), &textureUnit);
     glGetUniformiv(program_, uniformLocation(program_, "eia"), &imageUnit);
-    GLuint sampler = 0;
-    glCreateSamplers(1, &sampler);
+    const gl::Sampler sampler = gl::createSampler();
     glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTextureUnit(GLuint(textureUnit), views.colorArray());
@@ -203,7 +195,6 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 
     glBindSampler(GLuint(textureUnit), 0);
-    glDeleteSamplers(1, &sampler);
     glBindImageTexture(GLuint(imageUnit), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glUseProgram(0);
 }

@@ -8,6 +8,8 @@
 // offsets for every subpixel, averaged in linear light.
 #pragma once
 
+#include "gl_handles.h"
+
 #include "lfd/display_profile.h"
 
 #include <glm/glm.hpp>
@@ -47,19 +49,18 @@ class EiaBuilder {
 public:
     // Panel-size RGBA8 output texture; `seed` picks the reconstruction samples.
     explicit EiaBuilder(const DisplayProfile& profile, uint64_t seed = ReconstructionFilter::kDefaultSeed);
-    ~EiaBuilder();
     EiaBuilder(const EiaBuilder&) = delete;
     EiaBuilder& operator=(const EiaBuilder&) = delete;
 
     void build(const ViewTargets& views, Reconstruction mode, GpuTimer& timer); // stage "eia"
-    unsigned texture() const { return eia_; }
+    unsigned texture() const { return eia_.get(); }
     std::vector<uint8_t> read() const; // RGBA8, panel size, rows top to bottom
 
 private:
     DisplayProfile profile_;
     uint64_t seed_;
-    unsigned eia_ = 0;
-    unsigned program_ = 0;
+    gl::Texture eia_;
+    gl::Program program_;
 };
 
 // CPU reference of the same mapping (tests, simulated viewer): views are RGBA8 images in

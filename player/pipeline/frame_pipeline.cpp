@@ -105,11 +105,7 @@ void FramePipeline::buildEia(GpuTimer& timer, Reconstruction reconstruction)
     eia_->build(*targets_, reconstruction, timer);
 }
 
-FramePipeline::~FramePipeline()
-{
-    if (downsample_)
-        glDeleteProgram(downsample_);
-}
+FramePipeline::~FramePipeline() = default; // here, where the members' types are complete
 
 void FramePipeline::setSupersampling(Supersampling ss, uint64_t seed)
 {
@@ -124,7 +120,7 @@ void FramePipeline::setSupersampling(Supersampling ss, uint64_t seed)
     ssTargets_ = ss == Supersampling::Spatial2x ? std::make_unique<ViewTargets>(n, 2 * w, 2 * h)
                                                 : std::make_unique<ViewTargets>(2 * n, w, h);
     if (!downsample_)
-        downsample_ = gl::buildProgram({{GL_COMPUTE_SHADER, "view_downsample.comp"}});
+        downsample_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "view_downsample.comp"}}));
 }
 
 void FramePipeline::renderFrame(Renderer& renderer, double time, GpuTimer& timer, Reconstruction reconstruction)

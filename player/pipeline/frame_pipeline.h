@@ -6,6 +6,8 @@
 // builder, created once so switching renderers (R key, bench) pays no upload.
 #pragma once
 
+#include "gl_handles.h"
+
 #include "eia_builder.h"
 #include "frame.h"
 #include "gpu_scene.h"
@@ -121,7 +123,7 @@ private:
     Supersampling ss_ = Supersampling::None;
     uint64_t ssSeed_ = kSupersamplingSeed;
     std::unique_ptr<ViewTargets> ssTargets_; // the supersampled views
-    unsigned downsample_ = 0;                // shaders/view_downsample.comp
+    gl::Program downsample_;                 // shaders/view_downsample.comp
 
 public:
     ~FramePipeline();

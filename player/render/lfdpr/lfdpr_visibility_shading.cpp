@@ -23,14 +23,6 @@ std::vector<std::string> atomicsDefines(bool int64)
     return int64 ? std::vector<std::string>{"LFDPR_INT64 1"} : std::vector<std::string>{};
 }
 
-GLuint makeBuffer(size_t bytes, GLbitfield flags = 0)
-{
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(std::max<size_t>(bytes, 16)), nullptr, flags);
-    return buffer;
-}
-
 uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 
 // LFDPR_SHADE_WORK_BUFFER: LfdprShadeCountersGpu (repairCount first), then the dispatches.
@@ -40,67 +32,48 @@ constexpr GLintptr kDispatchOffset = 16;
 
 LfdprVisibilityShading::LfdprVisibilityShading(bool int64) : int64_(int64)
 {
+    // A shader error thrown below leaves nothing behind: the programs built so far are
+    // owned by their handles.
     const std::vector<std::string> defines = atomicsDefines(int64);
-    try {
-        splatProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines);
-        if (!int64)
-            indexProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"});
-        classifyProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines);
-        dispatchProgram_ = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}});
-        // The untextured group's program is always needed; built now so a shader error
-        // surfaces at construction, not in the middle of a frame.
-        shadeProgram(0u);
-    } catch (...) {
-        glDeleteProgram(splatProgram_);
-        glDeleteProgram(indexProgram_);
-        glDeleteProgram(classifyProgram_);
-        glDeleteProgram(dispatchProgram_);
-        for (const auto& [mask, program] : shadePrograms_)
-            glDeleteProgram(program);
-        throw;
-    }
+    splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines));
+    if (!int64)
+        indexProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"}));
+    classifyProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines));
+    dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}));
+    // The untextured group's program is always needed; built now so a shader error
+    // surfaces at construction, not in the middle of a frame.
+    shadeProgram(0u);
 }
 
-LfdprVisibilityShading::~LfdprVisibilityShading()
-{
-    const GLuint buffers[] = {depth_, index_, pixelStates_, shadeWork_, materialGroups_};
-    glDeleteBuffers(5, buffers);
-    glDeleteProgram(splatProgram_);
-    glDeleteProgram(indexProgram_);
-    glDeleteProgram(classifyProgram_);
-    glDeleteProgram(dispatchProgram_);
-    for (const auto& [mask, program] : shadePrograms_)
-        glDeleteProgram(program);
-}
+LfdprVisibilityShading::~LfdprVisibilityShading() = default;
 
 unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask)
 {
     if (const auto it = shadePrograms_.find(textureMask); it != shadePrograms_.end())
-        return it->second;
+        return it->second.get();
     std::vector<std::string> defines = atomicsDefines(int64_);
     char mask[48];
     std::snprintf(mask, sizeof(mask), "LFD_TEXTURE_MASK 0x%Xu", textureMask);
     defines.emplace_back(mask);
-    const GLuint program = gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines);
-    shadePrograms_[textureMask] = program;
-    return program;
+    gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines));
+    const unsigned name = program.get();
+    shadePrograms_[textureMask] = std::move(program);
+    return name;
 }
 
 void LfdprVisibilityShading::resize(uint32_t viewCount, uint32_t width, uint32_t height)
 {
     if (viewCount == views_ && width == width_ && height == height_ && depth_)
         return;
-    const GLuint old[] = {depth_, index_, pixelStates_};
-    glDeleteBuffers(3, old);
     views_ = viewCount;
     width_ = width;
     height_ = height;
     const uint32_t tile = LfdprConstants::get().shadeTile;
     tileCount_ = divideUp(width, tile) * divideUp(height, tile) * viewCount;
     const size_t pixels = std::max<size_t>(size_t(viewCount) * width * height, 1);
-    depth_ = makeBuffer(pixels * (int64_ ? 8 : 4));
-    index_ = int64_ ? 0 : makeBuffer(pixels * 4);
-    pixelStates_ = makeBuffer(pixels * 4);
+    depth_ = gl::createBuffer(pixels * (int64_ ? 8 : 4));
+    index_ = int64_ ? gl::Buffer() : gl::createBuffer(pixels * 4);
+    pixelStates_ = gl::createBuffer(pixels * 4);
     shadeWorkBytes_ = 0; // the tile lists depend on the tile count: sized again
 }
 
@@ -158,15 +131,13 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
     // Step 2: the buffers (grown, never shrunk, so a steady scene allocates nothing).
     const size_t groupBytes = groupOfMaterial_.size() * sizeof(uint32_t);
     if (groupBytes > materialGroupsBytes_) {
-        glDeleteBuffers(1, &materialGroups_);
-        materialGroups_ = makeBuffer(groupBytes, GL_DYNAMIC_STORAGE_BIT);
+        materialGroups_ = gl::createBuffer(groupBytes, GL_DYNAMIC_STORAGE_BIT);
         materialGroupsBytes_ = groupBytes;
     }
     glNamedBufferSubData(materialGroups_, 0, GLsizeiptr(groupBytes), groupOfMaterial_.data());
     const size_t workBytes = kDispatchOffset + size_t(k.maxShadeGroups) * 16 + size_t(groupCount_) * tileCount_ * 4;
     if (workBytes > shadeWorkBytes_) {
-        glDeleteBuffers(1, &shadeWork_);
-        shadeWork_ = makeBuffer(workBytes);
+        shadeWork_ = gl::createBuffer(workBytes);
         shadeWorkBytes_ = workBytes;
     }
 }

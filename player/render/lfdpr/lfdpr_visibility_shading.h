@@ -7,6 +7,8 @@
 // its tiles only, with a program compiled for that group's textures.
 #pragma once
 
+#include "gl_handles.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -59,11 +61,11 @@ private:
     unsigned shadeProgram(uint32_t textureMask);
 
     bool int64_;
-    unsigned splatProgram_ = 0, indexProgram_ = 0; // 32-bit path: the depth pass, the index pass
-    unsigned classifyProgram_ = 0, dispatchProgram_ = 0;
-    std::map<uint32_t, unsigned> shadePrograms_; // by LFD_TEXTURE_MASK
-    unsigned depth_ = 0, index_ = 0, pixelStates_ = 0; // 64-bit path: depth_ holds the words
-    unsigned shadeWork_ = 0, materialGroups_ = 0;
+    gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
+    gl::Program classifyProgram_, dispatchProgram_;
+    std::map<uint32_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK
+    gl::Buffer depth_, index_, pixelStates_; // 64-bit path: depth_ holds the words
+    gl::Buffer shadeWork_, materialGroups_;
     size_t shadeWorkBytes_ = 0, materialGroupsBytes_ = 0;
     std::vector<Group> groups_;
     std::vector<uint32_t> groupOfMaterial_; // per GPU material

@@ -35,14 +35,6 @@ namespace {
 
 using lfdpr_bindings::LfdprDrawGpu; // generated from shaders/lfdpr_bindings.glsl, checked by the layout test
 
-GLuint makeBuffer(size_t bytes, GLbitfield flags = 0, const void* data = nullptr)
-{
-    GLuint buffer = 0;
-    glCreateBuffers(1, &buffer);
-    glNamedBufferStorage(buffer, GLsizeiptr(std::max<size_t>(bytes, 16)), data, flags);
-    return buffer;
-}
-
 class LfdprVisibilityRenderer final : public LfdprRenderer {
 public:
     explicit LfdprVisibilityRenderer(const LfdprOptions& options)
@@ -54,20 +46,13 @@ public:
             std::max<uint32_t>(options.maxPointCapacity, 1),
             std::max<uint64_t>(uint64_t(std::max<GLint64>(maxBlockBytes, 0)) / k_.compactPointBytes, 1)));
         pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
-        points_ = makeBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
-        counters_ = makeBuffer(k_.visCounterBytes, GL_DYNAMIC_STORAGE_BIT);
-        frameUbo_ = makeBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
-        lineUbo_ = makeBuffer(sizeof(LfdprCameraLineGpu), GL_DYNAMIC_STORAGE_BIT);
-        dummy_ = makeBuffer(16);
+        points_ = gl::createBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
+        counters_ = gl::createBuffer(k_.visCounterBytes, GL_DYNAMIC_STORAGE_BIT);
+        frameUbo_ = gl::createBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
+        lineUbo_ = gl::createBuffer(sizeof(LfdprCameraLineGpu), GL_DYNAMIC_STORAGE_BIT);
+        dummy_ = gl::createBuffer(16);
         info_.int64Atomics = shading_.int64();
         info_.bytesPerPoint = k_.compactPointBytes;
-    }
-
-    ~LfdprVisibilityRenderer() override
-    {
-        const GLuint buffers[] = {points_, counters_, frameUbo_, lineUbo_, dummy_, records_,
-                                  large_, largeDispatch_, draws_};
-        glDeleteBuffers(GLsizei(std::size(buffers)), buffers);
     }
 
     std::string name() const override { return "lfdpr"; }
@@ -129,9 +114,8 @@ public:
             if (c.pointCount <= pointCapacity_ || pointCapacity_ >= maxPointCapacity_)
                 break;
             // note: never drop points silently: grow to the needed count * 1.25 and redo.
-            glDeleteBuffers(1, &points_);
             pointCapacity_ = uint32_t(std::min<double>(std::ceil(double(c.pointCount) * 1.25), double(maxPointCapacity_)));
-            points_ = makeBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
+            points_ = gl::createBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
             ++info_.regenerations;
         }
         timer.end();
@@ -221,13 +205,11 @@ private:
         }
         if (triangles > 0xFFFFFFFFull)
             throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
-        const GLuint old[] = {records_, large_, largeDispatch_, draws_};
-        glDeleteBuffers(4, old);
         triangleCapacity_ = std::max<uint64_t>(triangles, 1);
-        records_ = makeBuffer(triangleCapacity_ * k_.recordBytes);
-        large_ = makeBuffer(triangleCapacity_ * sizeof(uint32_t));
-        largeDispatch_ = makeBuffer(std::max<size_t>(draws.size(), 1) * k_.largeDispatchBytes);
-        draws_ = makeBuffer(draws.size() * sizeof(LfdprDrawGpu), 0, draws.empty() ? nullptr : draws.data());
+        records_ = gl::createBuffer(triangleCapacity_ * k_.recordBytes);
+        large_ = gl::createBuffer(triangleCapacity_ * sizeof(uint32_t));
+        largeDispatch_ = gl::createBuffer(std::max<size_t>(draws.size(), 1) * k_.largeDispatchBytes);
+        draws_ = gl::createBuffer(draws.size() * sizeof(LfdprDrawGpu), 0, draws.empty() ? nullptr : draws.data());
     }
 
     static bool hasTextures(const Material& m)
@@ -277,8 +259,7 @@ private:
     size_t drawCount_ = 0;
     std::vector<uint32_t> largeBase_;
     std::vector<int32_t> texturedMaterials_;
-    unsigned points_ = 0, counters_ = 0, frameUbo_ = 0, lineUbo_ = 0, dummy_ = 0, records_ = 0, large_ = 0,
-             largeDispatch_ = 0, draws_ = 0;
+    gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, large_, largeDispatch_, draws_;
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t triangleCapacity_ = 0, trianglesCoarsened_ = 0;
 };
