@@ -444,6 +444,18 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
         lastWall = wall;
         const bool previewNow = preview == PreviewMode::Always ||
                                 (preview == PreviewMode::Auto && controls.interacting(wall, options.previewHoldSeconds));
+        if (TextureStreamer* streamer = session.streamer(); streamer && !streamer->resident()) {
+            // Streaming: the first frame waits for the geometry and the coarsest mips only;
+            // after that a bounded amount per frame keeps the window responsive while the
+            // textures sharpen. Runs with --frames (screenshots, tests) wait for it all so
+            // their output does not depend on upload speed.
+            if (options.framesGiven)
+                streamer->untilResident();
+            else if (!streamer->renderable())
+                streamer->untilRenderable();
+            else
+                streamer->step(kStreamBytesPerFrame);
+        }
         session.renderFrame(animationTime, previewNow ? FrameQuality::Preview : FrameQuality::Full);
         ++(previewNow ? previewFrames : fullFrames);
 
@@ -518,6 +530,12 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
             }
             if (input.paused)
                 title += " - paused";
+            if (const TextureStreamer* streamer = session.streamer(); streamer && !streamer->resident()) {
+                char loading[48];
+                std::snprintf(loading, sizeof(loading), " - loading %.0f%%",
+                              100.0 * double(streamer->uploadedBytes()) / double(std::max<uint64_t>(streamer->totalBytes(), 1)));
+                title += loading;
+            }
             title += session.lastQuality() == FrameQuality::Preview ? " - preview" : " - full";
             if (session.quiltInput())
                 title += " - " + session.quilts().currentFile().filename().string();
@@ -577,6 +595,16 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
     printStart(*setup.context);
     setup.context->require(options.renderer == "mvr-layered");
     PlayerSession session(options, profile, std::move(scene), packName);
+    return runLoop(setup, session, options);
+}
+
+int runWindowedStreamed(const PlayOptions& options, const DisplayProfile& profile, std::shared_ptr<MappedPack> pack,
+                        const std::string& packName)
+{
+    WindowSetup setup = createWindow(options, profile);
+    printStart(*setup.context);
+    setup.context->require(options.renderer == "mvr-layered");
+    PlayerSession session(options, profile, std::move(pack), packName);
     return runLoop(setup, session, options);
 }
 
