@@ -83,8 +83,9 @@ MappedPack::MappedPack(const std::filesystem::path& path) : name_(path.string())
         throw;
     }
     // decodeScene checked that the textures' chains are consecutive and cover TEXL.
+    textures_ = scene_.textures;
     uint64_t start = 0;
-    for (const Texture& t : scene_.textures) {
+    for (const Texture& t : textures_) {
         textureTexelStart_.push_back(start);
         start += pack::mipChainBytes(t.width, t.height);
     }
@@ -110,14 +111,14 @@ std::span<const uint8_t> MappedPack::section(uint32_t tag) const
 
 uint64_t MappedPack::mipTexelOffset(uint32_t texture, uint32_t level) const
 {
-    const Texture& t = scene_.textures.at(texture);
+    const Texture& t = textures_.at(texture);
     return textureTexelStart_[texture] + t.mips.at(level).offset;
 }
 
 std::span<const uint8_t> MappedPack::mipBytes(uint32_t texture, uint32_t level) const
 {
     const uint64_t offset = mipTexelOffset(texture, level);
-    return {data_ + texlOffset_ + offset, size_t(scene_.textures[texture].mips[level].size)};
+    return {data_ + texlOffset_ + offset, size_t(textures_[texture].mips[level].size)};
 }
 
 void MappedPack::hashRange(uint64_t offset, uint64_t size)

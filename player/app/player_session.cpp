@@ -58,7 +58,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     GpuSceneOptions sceneOptions;
     sceneOptions.plan = &plan_;
     sceneOptions.streamed = true;
-    pipeline_ = std::make_unique<FramePipeline>(profile, mapped_->scene(), options.turntablePeriod, sceneOptions);
+    pipeline_ = std::make_unique<FramePipeline>(profile, mapped_->takeScene(), options.turntablePeriod, sceneOptions);
     streamer_ = std::make_unique<TextureStreamer>(pipeline_->scene(), mapped_, options.streamChunkBytes);
     reconstruction_ = parseReconstruction(options.reconstruction);
     pipeline_->setSupersampling(parseSupersampling(options.supersampling));

@@ -29,7 +29,7 @@ TextureStreamer::TextureStreamer(GpuScene& scene, std::shared_ptr<MappedPack> pa
     // Step 2: texture levels, smallest first across all textures: within a texture each
     // level is smaller than the one above it, so this is coarsest-first per texture too,
     // and every texture's coarsest level comes before any texture's second level.
-    const std::vector<Texture>& textures = pack_->scene().textures;
+    const std::vector<Texture>& textures = pack_->textures();
     resident_.assign(textures.size(), 0);
     std::vector<Job> levels;
     for (size_t t = 0; t < textures.size(); ++t) {

@@ -25,7 +25,7 @@ inline constexpr size_t kDefaultStreamChunkBytes = size_t(32) << 20;
 
 class TextureStreamer {
 public:
-    // `scene` was built from pack->scene() with GpuSceneOptions::streamed; both must
+    // `scene` was built from pack->scene() (or takeScene()) with GpuSceneOptions::streamed; both must
     // outlive the streamer. Needs a current GL context for every call.
     TextureStreamer(GpuScene& scene, std::shared_ptr<MappedPack> pack, size_t chunkBytes = kDefaultStreamChunkBytes);
 

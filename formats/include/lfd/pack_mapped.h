@@ -36,7 +36,13 @@ public:
     uint64_t fileSize() const { return size_; }
     const PackInfo& info() const { return info_; }
     // Textures carry metadata and mips only; every other field as readPack returns it.
+    // Empty after takeScene().
     const Scene& scene() const { return scene_; }
+    // Moves the scene out (the player's GpuScene keeps it), so the decoded geometry is
+    // not held twice; textures() and the texel accessors keep working.
+    Scene takeScene() { return std::move(scene_); }
+    // Texture metadata (mip chains), kept for the texel accessors.
+    const std::vector<Texture>& textures() const { return textures_; }
 
     // The payload of section `tag` (pack_layout.h kTag*) in the mapping; empty when absent.
     // Every payload but TEXL has been checksummed.
@@ -74,6 +80,7 @@ private:
     bool mapped_ = false;
     PackInfo info_;
     Scene scene_;
+    std::vector<Texture> textures_; // scene_.textures (metadata only), outlives takeScene()
     uint64_t texlOffset_ = 0, texlSize_ = 0, texlChecksum_ = 0;
     std::vector<uint64_t> textureTexelStart_; // offset of each texture's level 0 in TEXL
     std::vector<std::pair<uint32_t, std::span<const uint8_t>>> sections_;
