@@ -55,7 +55,11 @@ public:
 // PackError naming `name`.
 void emitPack(Sink& sink, const Scene& scene, const TextureProducer& produce, const std::string& name);
 
-SectionTable validateStructure(const uint8_t* data, size_t size, const std::string& name);
+// deferredChecksumTag: a section whose payload checksum is not checked here because the
+// caller verifies it while reading the payload (the mapped reader's texels, which are
+// hashed as they stream to the GPU instead of being read twice); 0 checks every payload.
+SectionTable validateStructure(const uint8_t* data, size_t size, const std::string& name,
+                               uint32_t deferredChecksumTag = 0);
 
 // Builds the Scene from structurally valid sections, checking the cross-section ranges
 // (strings, channel/key runs, mip chains, texel runs) before any allocation they drive,

@@ -58,7 +58,8 @@ bool allZero(const uint8_t* p, uint64_t n)
 
 class StructureChecker {
 public:
-    StructureChecker(const uint8_t* data, size_t size, const std::string& name) : data_(data), size_(size), name_(name)
+    StructureChecker(const uint8_t* data, size_t size, const std::string& name, uint32_t deferredChecksumTag)
+        : data_(data), size_(size), name_(name), deferredChecksumTag_(deferredChecksumTag)
     {
     }
 
@@ -171,7 +172,7 @@ private:
     void checkPayloads() const
     {
         for (const SectionEntry& e : table_.entries)
-            if (checksum(data_ + e.offset, size_t(e.size)) != e.checksum)
+            if (e.tag != deferredChecksumTag_ && checksum(data_ + e.offset, size_t(e.size)) != e.checksum)
                 fail(quoted(e.tag) + " checksum mismatch (corrupt payload)");
     }
 
@@ -214,6 +215,7 @@ private:
     const uint8_t* data_;
     size_t size_;
     const std::string& name_;
+    uint32_t deferredChecksumTag_; // its payload is verified by the caller as it is read
     FileHeader header_{};
     uint64_t tableEnd_ = 0;
     SectionTable table_;
@@ -229,9 +231,10 @@ const SectionEntry* SectionTable::find(uint32_t tag) const
     return nullptr;
 }
 
-SectionTable validateStructure(const uint8_t* data, size_t size, const std::string& name)
+SectionTable validateStructure(const uint8_t* data, size_t size, const std::string& name,
+                               uint32_t deferredChecksumTag)
 {
-    return StructureChecker(data, size, name).run();
+    return StructureChecker(data, size, name, deferredChecksumTag).run();
 }
 
 } // namespace lfd::pack

@@ -15,10 +15,13 @@
 
 #include "lfd/display_profile.h"
 #include "lfd/pack.h"
+#include "lfd/pack_mapped.h"
 
 #include <CLI/CLI.hpp>
+#include <epoxy/gl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -107,6 +110,13 @@ void addOutputFlags(CLI::App& app, PlayOptions& o)
                    "every frame's quilt as a video (.mp4 H.264 or .webm VP9, via ffmpeg; a _qs suffix is added)");
     app.add_option("--views-out", o.viewsOut, "directory for view_000.png ... (view 0 = leftmost)");
     app.add_option("--stats", o.statsOut, "stats JSON (and a CSV beside it)");
+    app.add_flag("!--no-streaming", o.streaming,
+                 "read the whole pack and upload everything before the first frame (default: map the pack and "
+                 "stream it in bounded chunks; headless runs still wait until all is resident before timing)");
+    app.add_option("--gpu-memory-budget", o.gpuMemoryBudgetMiB,
+                   "GPU memory for the scene in MiB: geometry must fit, textures lose top mips to fit (default: "
+                   "the driver's available memory where GL_NVX_gpu_memory_info / GL_ATI_meminfo report it, else "
+                   "unlimited)");
     app.add_option("--viewer-out", o.viewerOut, "simulated viewer PNG");
     app.add_option("--viewer-pos", o.viewerPosition, "simulated viewer position in views [0, N) (default N/2)");
 }
@@ -388,27 +398,63 @@ lfd::player::RunInfo runInfo(lfd::player::PlayerSession& session, const PlayOpti
     info.sceneGpuBytes = session.quiltInput() ? 0 : session.scene().gpuBytes();
     info.triangles = triangles;
     info.drawnTriangles = drawnTriangles;
+    info.peakHostMemoryMiB = lfd::player::peakHostMemoryMiB();
     if (!session.quiltInput())
         info.extra = session.renderer().extraStats();
     return info;
 }
 
-int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, std::optional<lfd::Scene> scene,
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// The pack as read: the whole scene (--no-streaming) or its mapping (streaming).
+struct PackInput {
+    std::optional<lfd::Scene> scene;
+    std::shared_ptr<lfd::MappedPack> mapped;
+    Clock::time_point start; // before the pack was opened
+    bool present() const { return scene || mapped; }
+};
+
+int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, PackInput input,
                 std::vector<fs::path> quilts)
 {
     using namespace lfd::player;
     std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless(options.glDebug);
     std::printf("lfd-play: %s\n", context->describeWithCodePaths().c_str());
     std::fflush(stdout);
-    context->require(options.renderer == "mvr-layered" && scene);
+    context->require(options.renderer == "mvr-layered" && input.present());
     lfd::gl::GlErrorWatch glErrors("lfd-play", options.glDebug);
 
-    const uint64_t triangles = scene ? scene->triangleCount() : 0;
-    const uint64_t drawnTriangles = scene ? scene->drawnTriangleCount() : 0;
+    const lfd::Scene* cpuScene = input.mapped ? &input.mapped->scene() : input.scene ? &*input.scene : nullptr;
+    const uint64_t triangles = cpuScene ? cpuScene->triangleCount() : 0;
+    const uint64_t drawnTriangles = cpuScene ? cpuScene->drawnTriangleCount() : 0;
     const std::string packName = options.pack.filename().string();
-    PlayerSession session = scene ? PlayerSession(options, profile, std::move(*scene), packName)
-                                  : PlayerSession(options, profile, std::move(quilts));
-    glErrors.check("the upload of " + (scene ? packName : std::string("the quilts")));
+    PlayerSession session = input.mapped ? PlayerSession(options, profile, input.mapped, packName)
+                            : input.scene ? PlayerSession(options, profile, std::move(*input.scene), packName)
+                                          : PlayerSession(options, profile, std::move(quilts));
+    glErrors.check("the upload of " + (input.present() ? packName : std::string("the quilts")));
+    // Loading figures (README "Streaming"). Streaming: one untimed frame as soon as the
+    // geometry and the coarsest mips are in (time to first frame), then everything is
+    // made resident before the timed frames, so no benchmark times a half-resident scene.
+    double firstFrameMs = -1.0, residentMs = -1.0;
+    if (input.present()) {
+        if (TextureStreamer* streamer = session.streamer()) {
+            streamer->untilRenderable();
+            session.renderUntimedFrame(0.0);
+            firstFrameMs = msSince(input.start);
+            streamer->untilResident();
+            glFinish();
+            residentMs = msSince(input.start);
+        } else {
+            glFinish();
+            residentMs = msSince(input.start);
+        }
+        glErrors.check("the streamed upload of " + packName);
+    }
     const FrameQuality quality =
         options.preview == PreviewMode::Always ? FrameQuality::Preview : FrameQuality::Full;
     GpuTimer& timer = quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
@@ -428,6 +474,10 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
         for (uint32_t k = 0; k < options.frames; ++k) {
             session.renderFrame(double(k) / options.fps, quality);
             glErrors.check("frame " + std::to_string(k));
+            if (k == 0 && firstFrameMs < 0.0 && input.present()) {
+                glFinish();
+                firstFrameMs = msSince(input.start);
+            }
             if (k == outputFrame && wantOutputs) {
                 outputs = session.readOutputs(k);
                 outputProfile = session.profile();
@@ -453,7 +503,11 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
         if (wantOutputs)
             writeFrameOutputs(single, outputProfile, outputs, written);
         if (!options.statsOut.empty()) {
-            writeStats(options.statsOut, runInfo(session, options, *context, triangles, drawnTriangles), stages);
+            RunInfo info = runInfo(session, options, *context, triangles, drawnTriangles);
+            info.streaming = input.mapped != nullptr;
+            info.timeToFirstFrameMs = firstFrameMs;
+            info.timeToResidentMs = residentMs;
+            writeStats(options.statsOut, info, stages);
             written.push_back(options.statsOut);
         }
 
@@ -507,8 +561,9 @@ int main(int argc, char** argv)
         if (flags.listMonitors)
             return lfd::player::listMonitorsCommand(profile);
 
-        // Step 3: the input - the pack (fully validated by readPack) or the quilt files.
-        std::optional<lfd::Scene> scene;
+        // Step 3: the input - the pack (fully validated by readPack, or mapped with its texels
+        // verified as they stream) or the quilt files.
+        PackInput input;
         std::vector<fs::path> quilts;
         if (!options.quiltIn.empty()) {
             try {
@@ -519,14 +574,21 @@ int main(int argc, char** argv)
         } else {
             if (!fs::is_regular_file(options.pack))
                 throw UsageError(options.pack.string() + ": no such pack file");
-            scene = lfd::readPack(options.pack);
+            input.start = Clock::now();
+            if (options.streaming)
+                input.mapped = std::make_shared<lfd::MappedPack>(options.pack);
+            else
+                input.scene = lfd::readPack(options.pack);
         }
 
         // Step 4: render.
         if (options.headless)
-            return runHeadless(options, profile, std::move(scene), std::move(quilts));
-        if (scene)
-            return lfd::player::runWindowed(options, profile, std::move(*scene), options.pack.filename().string());
+            return runHeadless(options, profile, std::move(input), std::move(quilts));
+        if (input.mapped)
+            return lfd::player::runWindowedStreamed(options, profile, input.mapped, options.pack.filename().string());
+        if (input.scene)
+            return lfd::player::runWindowed(options, profile, std::move(*input.scene),
+                                            options.pack.filename().string());
         return lfd::player::runWindowedQuilts(options, profile, std::move(quilts));
     });
 }

@@ -23,11 +23,43 @@ PreviewMode parsePreviewMode(const std::string& name)
     throw std::invalid_argument("expected off, auto or always, got '" + name + "'");
 }
 
+GpuMemoryPlan planSceneMemory(const PlayOptions& options, const Scene& scene, const std::string& packName)
+{
+    const GpuLimits limits = queryGpuLimits();
+    std::optional<uint64_t> budget = limits.availableBytes;
+    if (options.gpuMemoryBudgetMiB)
+        budget = *options.gpuMemoryBudgetMiB << 20;
+    GpuMemoryPlan plan = planGpuMemory(scene, packName, budget, limits.maxTextureSize);
+    for (const std::string& warning : plan.warnings)
+        std::fprintf(stderr, "lfd-play: warning: %s\n", warning.c_str());
+    return plan;
+}
+
 PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
                              std::string packName)
     : options_(options), displayProfile_(profile), packName_(std::move(packName)),
-      pipeline_(std::make_unique<FramePipeline>(profile, scene, options.turntablePeriod))
+      plan_(planSceneMemory(options, scene, packName_))
 {
+    GpuSceneOptions sceneOptions;
+    sceneOptions.plan = &plan_;
+    pipeline_ = std::make_unique<FramePipeline>(profile, std::move(scene), options.turntablePeriod, sceneOptions);
+    reconstruction_ = parseReconstruction(options.reconstruction);
+    pipeline_->setSupersampling(parseSupersampling(options.supersampling));
+    pipeline_->setViewControls(options.controls);
+    pipeline_->setPreviewShape(options.previewShape);
+    switchRenderer(options.renderer);
+}
+
+PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& profile,
+                             std::shared_ptr<MappedPack> pack, std::string packName)
+    : options_(options), displayProfile_(profile), packName_(std::move(packName)),
+      plan_(planSceneMemory(options, pack->scene(), packName_)), mapped_(std::move(pack))
+{
+    GpuSceneOptions sceneOptions;
+    sceneOptions.plan = &plan_;
+    sceneOptions.streamed = true;
+    pipeline_ = std::make_unique<FramePipeline>(profile, mapped_->takeScene(), options.turntablePeriod, sceneOptions);
+    streamer_ = std::make_unique<TextureStreamer>(pipeline_->scene(), mapped_, options.streamChunkBytes);
     reconstruction_ = parseReconstruction(options.reconstruction);
     pipeline_->setSupersampling(parseSupersampling(options.supersampling));
     pipeline_->setViewControls(options.controls);
@@ -93,6 +125,18 @@ void PlayerSession::renderFrame(double time, FrameQuality quality)
     else
         pipeline_->renderFrame(*renderer_, time, timer_, reconstruction_);
     lastQuality_ = quality;
+}
+
+void PlayerSession::renderUntimedFrame(double time)
+{
+    if (quilts_) {
+        renderFrame(time);
+        return;
+    }
+    GpuTimer scratch;
+    pipeline_->renderFrame(*renderer_, time, scratch, reconstruction_);
+    scratch.finish();
+    lastQuality_ = FrameQuality::Full;
 }
 
 FrameOutputs PlayerSession::readOutputs(uint32_t frameIndex) const

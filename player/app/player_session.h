@@ -10,8 +10,10 @@
 #include "gpu_timer.h"
 #include "quilt_slideshow.h"
 #include "renderer_registry.h"
+#include "texture_streamer.h"
 
 #include "lfd/display_profile.h"
+#include "lfd/pack_mapped.h"
 #include "lfd/scene.h"
 
 #include <filesystem>
@@ -61,6 +63,14 @@ struct PlayOptions {
     PreviewShape previewShape;             // --preview-view-step, --preview-size-divisor
     double previewHoldSeconds = 0.3;       // preview lasts this long after the last input
 
+    // Streaming (README "Streaming"): map the pack and upload it in bounded chunks; the
+    // window shows frames while finer mip levels arrive, headless runs wait until all is
+    // resident before the first timed frame. false (--no-streaming): readPack, everything
+    // uploaded before the first frame.
+    bool streaming = true;
+    std::optional<uint64_t> gpuMemoryBudgetMiB; // unset: what the driver reports free, else unlimited
+    size_t streamChunkBytes = kDefaultStreamChunkBytes;
+
     // Quilt input (--quilt-in FILE|DIR) instead of a pack.
     std::filesystem::path quiltIn;
     uint32_t quiltViews = 0;               // 0: every tile is a view
@@ -71,6 +81,10 @@ class PlayerSession {
 public:
     // Needs a current GL context. The profile carries the overrides already.
     PlayerSession(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
+                  std::string packName);
+    // Streaming: the scene is uploaded from the mapping by streamer() (GpuScene built with
+    // GpuSceneOptions::streamed); nothing is resident until the streamer runs.
+    PlayerSession(const PlayOptions& options, const DisplayProfile& profile, std::shared_ptr<MappedPack> pack,
                   std::string packName);
     // Quilt input: the views come from the files (a slideshow when more than one).
     PlayerSession(const PlayOptions& options, const DisplayProfile& profile,
@@ -95,6 +109,9 @@ public:
     const GpuScene& scene() const { return pipeline_->scene(); }
     const FramePipeline& pipeline() const { return *pipeline_; }
     const QuiltSlideshow& quilts() const { return *quilts_; }
+    // The streamer of a streaming session, else null (already resident).
+    TextureStreamer* streamer() { return streamer_.get(); }
+    const GpuMemoryPlan& memoryPlan() const { return plan_; }
     // Of the last frame (full or preview).
     const ViewTargets& targets() const;
     const EiaBuilder& eia() const;
@@ -107,13 +124,19 @@ public:
     // "total" around both) on timer() or, for a preview frame, previewTimer(). Quilt
     // input has no preview (nothing to render).
     void renderFrame(double time, FrameQuality quality = FrameQuality::Full);
+    // A full-quality frame on a scratch timer, not counted in timer()'s statistics (the
+    // headless first frame while a streamed scene is not yet resident).
+    void renderUntimedFrame(double time);
     FrameOutputs readOutputs(uint32_t frameIndex) const;
 
 private:
     PlayOptions options_;
     DisplayProfile displayProfile_;
     std::string packName_;
+    GpuMemoryPlan plan_;
     std::unique_ptr<FramePipeline> pipeline_;
+    std::shared_ptr<MappedPack> mapped_;
+    std::unique_ptr<TextureStreamer> streamer_;
     std::unique_ptr<QuiltSlideshow> quilts_;
     std::string rendererName_;
     std::unique_ptr<Renderer> renderer_;
@@ -121,6 +144,11 @@ private:
     FrameQuality lastQuality_ = FrameQuality::Full;
     GpuTimer timer_, previewTimer_;
 };
+
+// The GPU memory plan for `scene` under the options' budget (MiB; unset: the driver's
+// available memory where reported) and GL_MAX_TEXTURE_SIZE; warnings go to stderr as
+// "lfd-play: warning: ...". Needs a current GL context.
+GpuMemoryPlan planSceneMemory(const PlayOptions& options, const Scene& scene, const std::string& packName);
 
 // The renderers the window's R key cycles through, starting after `current`: the methods
 // (rendererNames()), gstd only when the window was started with it (seconds to minutes per

@@ -443,6 +443,18 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
         lastWall = wall;
         const bool previewNow = preview == PreviewMode::Always ||
                                 (preview == PreviewMode::Auto && controls.interacting(wall, options.previewHoldSeconds));
+        if (TextureStreamer* streamer = session.streamer(); streamer && !streamer->resident()) {
+            // Streaming: the first frame waits for the geometry and the coarsest mips only;
+            // after that a bounded amount per frame keeps the window responsive while the
+            // textures sharpen. Runs with --frames (screenshots, tests) wait for it all so
+            // their output does not depend on upload speed.
+            if (options.framesGiven)
+                streamer->untilResident();
+            else if (!streamer->renderable())
+                streamer->untilRenderable();
+            else
+                streamer->step(kStreamBytesPerFrame);
+        }
         session.renderFrame(animationTime, previewNow ? FrameQuality::Preview : FrameQuality::Full);
         glErrors.check("frame " + std::to_string(previewFrames + fullFrames));
         ++(previewNow ? previewFrames : fullFrames);
@@ -518,6 +530,12 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
             }
             if (input.paused)
                 title += " - paused";
+            if (const TextureStreamer* streamer = session.streamer(); streamer && !streamer->resident()) {
+                char loading[48];
+                std::snprintf(loading, sizeof(loading), " - loading %.0f%%",
+                              100.0 * double(streamer->uploadedBytes()) / double(std::max<uint64_t>(streamer->totalBytes(), 1)));
+                title += loading;
+            }
             title += session.lastQuality() == FrameQuality::Preview ? " - preview" : " - full";
             if (session.quiltInput())
                 title += " - " + session.quilts().currentFile().filename().string();
@@ -581,6 +599,18 @@ int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene
     gl::GlErrorWatch glErrors("lfd-play", options.glDebug);
     PlayerSession session(options, profile, std::move(scene), packName);
     glErrors.check("the upload of " + packName);
+    return runLoop(setup, session, options, glErrors);
+}
+
+int runWindowedStreamed(const PlayOptions& options, const DisplayProfile& profile, std::shared_ptr<MappedPack> pack,
+                        const std::string& packName)
+{
+    WindowSetup setup = createWindow(options, profile);
+    printStart(*setup.context);
+    setup.context->require(options.renderer == "mvr-layered");
+    gl::GlErrorWatch glErrors("lfd-play", options.glDebug);
+    PlayerSession session(options, profile, std::move(pack), packName);
+    glErrors.check("the start of the upload of " + packName);
     return runLoop(setup, session, options, glErrors);
 }
 

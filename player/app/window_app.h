@@ -17,6 +17,11 @@ namespace lfd::player {
 // Creates the window and its context, then runs until closed. Returns the exit status.
 int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
                 const std::string& packName);
+// The same for a mapped pack: kStreamBytesPerFrame uploaded per frame until resident
+// (README "Streaming"), the title shows the progress.
+inline constexpr uint64_t kStreamBytesPerFrame = uint64_t(64) << 20;
+int runWindowedStreamed(const PlayOptions& options, const DisplayProfile& profile, std::shared_ptr<MappedPack> pack,
+                        const std::string& packName);
 // The same for --quilt-in: the views come from the quilt files.
 int runWindowedQuilts(const PlayOptions& options, const DisplayProfile& profile,
                       std::vector<std::filesystem::path> quilts);

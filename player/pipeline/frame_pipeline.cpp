@@ -84,12 +84,13 @@ FrameSetup supersampledFrame(const FrameSetup& frame, Supersampling ss, uint64_t
     return out;
 }
 
-FramePipeline::FramePipeline(const DisplayProfile& profile, const Scene& scene, double turntablePeriod)
+FramePipeline::FramePipeline(const DisplayProfile& profile, Scene scene, double turntablePeriod,
+                             const GpuSceneOptions& sceneOptions)
     : profile_(profile), turntablePeriod_(turntablePeriod)
 {
     const double fill = scene.settings.framingFill > 0.0f ? double(scene.settings.framingFill) : 1.0;
     framing_ = fitSceneToDisplay(profile_, scene.bounds, fill);
-    scene_ = std::make_unique<GpuScene>(scene);
+    scene_ = std::make_unique<GpuScene>(std::move(scene), sceneOptions);
     targets_ = std::make_unique<ViewTargets>(profile_.viewCount, profile_.viewWidth, profile_.viewHeight);
     eia_ = std::make_unique<EiaBuilder>(profile_);
 }

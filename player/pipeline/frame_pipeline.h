@@ -68,7 +68,8 @@ class FramePipeline {
 public:
     // Needs a current GL context. The scene is framed as the baker assumed (its fill), so
     // pixel sizes agree with the pack; `turntablePeriod` seconds per revolution, 0 = still.
-    FramePipeline(const DisplayProfile& profile, const Scene& scene, double turntablePeriod);
+    FramePipeline(const DisplayProfile& profile, Scene scene, double turntablePeriod,
+                  const GpuSceneOptions& sceneOptions = {});
 
     const DisplayProfile& profile() const { return profile_; }
     const Framing& framing() const { return framing_; }

@@ -7,9 +7,18 @@
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace lfd::player {
+
+double peakHostMemoryMiB()
+{
+    struct rusage usage {};
+    if (::getrusage(RUSAGE_SELF, &usage) != 0)
+        return 0.0;
+    return double(usage.ru_maxrss) / 1024.0; // Linux reports KiB
+}
 
 nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageTimes>& stages)
 {
@@ -28,6 +37,11 @@ nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageT
     j["panel_height"] = info.panelHeight;
     j["view_buffer_bytes"] = info.viewBufferBytes;
     j["scene_gpu_bytes"] = info.sceneGpuBytes;
+    j["gpu_scene_bytes"] = info.sceneGpuBytes;
+    j["streaming"] = info.streaming;
+    j["time_to_first_frame_ms"] = info.timeToFirstFrameMs;
+    j["time_to_resident_ms"] = info.timeToResidentMs;
+    j["peak_host_memory_mib"] = info.peakHostMemoryMiB;
     j["triangles"] = info.triangles;
     j["drawn_triangles"] = info.drawnTriangles;
 

@@ -23,12 +23,22 @@ struct RunInfo {
     uint32_t panelWidth = 0, panelHeight = 0;
     uint64_t viewBufferBytes = 0, sceneGpuBytes = 0, triangles = 0, drawnTriangles = 0;
     std::vector<std::pair<std::string, double>> extra; // Renderer::extraStats()
+    // Loading (README "Streaming"): wall milliseconds from the start of reading the pack to
+    // the end of the first frame and to the whole scene resident on the GPU (< 0: not
+    // measured, e.g. quilt input), and the process's peak resident set (getrusage).
+    double timeToFirstFrameMs = -1.0, timeToResidentMs = -1.0, peakHostMemoryMiB = 0.0;
+    bool streaming = false;
 };
 
 // Keys: renderer, views, view_width, view_height, frames, gpu, <stage>_ms (means) for
 // every stage (view_generation_ms, eia_ms, total_ms at least), stages {name: {mean,
 // median, min, max, samples}}, view_buffer_bytes, scene_gpu_bytes, triangles, drawn_triangles,
-// panel_width, panel_height, profile, pack, reconstruction, and the extra stats.
+// panel_width, panel_height, profile, pack, reconstruction, streaming, time_to_first_frame_ms,
+// time_to_resident_ms, peak_host_memory_mib, gpu_scene_bytes (= scene_gpu_bytes), and the
+// extra stats.
+// ru_maxrss of this process in MiB.
+double peakHostMemoryMiB();
+
 nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageTimes>& stages);
 // "frame,stage,ms" header, then one row per recorded sample.
 std::string statsCsv(const std::map<std::string, StageTimes>& stages);

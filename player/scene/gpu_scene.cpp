@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <string>
 
 namespace lfd::player {
@@ -56,15 +57,27 @@ uint32_t materialTextureFlags(const Material& m)
            (m.emissiveTexture != kNone ? bindings::kMaterialEmissiveTexture : 0u);
 }
 
-GpuScene::GpuScene(const Scene& scene) : scene_(scene)
+GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options) : scene_(std::move(scene))
 {
+    // Step 0: what fits (GL_MAX_TEXTURE_SIZE, the budget); planned before any allocation.
+    GpuMemoryPlan ownPlan;
+    const GpuMemoryPlan* plan = options.plan;
+    if (!plan) {
+        ownPlan = planGpuMemory(scene_, "scene", std::nullopt, queryGpuLimits().maxTextureSize);
+        for (const std::string& warning : ownPlan.warnings)
+            std::fprintf(stderr, "warning: %s\n", warning.c_str());
+        plan = &ownPlan;
+    }
+    const GLbitfield streamedFlags = options.streamed ? GL_DYNAMIC_STORAGE_BIT : 0;
+
     // Step 1: one vertex buffer per present stream, bound at binding index = location.
     vao_ = gl::createVertexArray();
     auto addStream = [&](unsigned location, const void* data, size_t count, GLint components,
                          size_t stride) {
         if (count == 0)
             return;
-        streamVbos_[location] = makeBuffer(data, count * stride, 0, gpuBytes_);
+        streamVbos_[location] =
+            makeBuffer(options.streamed ? nullptr : data, count * stride, streamedFlags, gpuBytes_);
         glVertexArrayVertexBuffer(vao_, location, streamVbos_[location], 0, GLsizei(stride));
         glVertexArrayAttribFormat(vao_, location, components, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(vao_, location, location);
@@ -75,7 +88,8 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene)
     addStream(bindings::kAttribNormal, v.normals.data(), v.normals.size(), 3, sizeof(glm::vec3));
     addStream(bindings::kAttribTangent, v.tangents.data(), v.tangents.size(), 4, sizeof(glm::vec4));
     addStream(bindings::kAttribUv, v.uvs.data(), v.uvs.size(), 2, sizeof(glm::vec2));
-    ibo_ = makeBuffer(scene_.indices.data(), scene_.indices.size() * sizeof(uint32_t), 0, gpuBytes_);
+    ibo_ = makeBuffer(options.streamed ? nullptr : scene_.indices.data(), scene_.indices.size() * sizeof(uint32_t),
+                      streamedFlags, gpuBytes_);
     glVertexArrayElementBuffer(vao_, ibo_);
 
     // Step 2: textures with the pack's full mip chain; colour textures decode sRGB in the
@@ -83,26 +97,34 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene)
     textures_.reserve(scene_.textures.size());
     for (size_t t = 0; t < scene_.textures.size(); ++t) {
         Texture& tex = scene_.textures[t];
-        if (tex.mips.empty() || tex.texels.empty())
+        if (tex.mips.empty() || (!options.streamed && tex.texels.empty()))
             throw gl::GlError("pack texture " + std::to_string(t) + " (" + tex.name +
                               ") has no texels to upload");
+        // Top levels the plan leaves out: GL level l holds pack level first + l.
+        const uint32_t first = t < plan->droppedLevels.size() ? plan->droppedLevels[t] : 0u;
+        const GpuTextureLayout layout{first, uint32_t(tex.mips.size()) - first};
         gl::Texture name = gl::createTexture(GL_TEXTURE_2D);
-        const GLsizei levels = GLsizei(tex.mips.size());
+        const GLsizei levels = GLsizei(layout.levels);
         glTextureStorage2D(name, levels, tex.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8,
-                           GLsizei(tex.mips[0].width), GLsizei(tex.mips[0].height));
+                           GLsizei(tex.mips[first].width), GLsizei(tex.mips[first].height));
         glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
         for (GLsizei level = 0; level < levels; ++level) {
-            const MipLevel& mip = tex.mips[size_t(level)];
-            glTextureSubImage2D(name, level, 0, 0, GLsizei(mip.width), GLsizei(mip.height), GL_RGBA,
-                                GL_UNSIGNED_BYTE, tex.texels.data() + mip.offset);
+            const MipLevel& mip = tex.mips[size_t(level) + first];
+            if (!options.streamed)
+                glTextureSubImage2D(name, level, 0, 0, GLsizei(mip.width), GLsizei(mip.height), GL_RGBA,
+                                    GL_UNSIGNED_BYTE, tex.texels.data() + mip.offset);
             gpuBytes_ += mip.size;
         }
+        // Streamed: nothing is resident yet; the streamer lowers the base level as finer
+        // levels arrive, so sampling never reads a level that has not been uploaded.
+        glTextureParameteri(name, GL_TEXTURE_BASE_LEVEL, options.streamed ? levels - 1 : 0);
         glTextureParameteri(name, GL_TEXTURE_MAX_LEVEL, levels - 1);
         glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
         glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
         glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_REPEAT);
         glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_REPEAT);
         textures_.push_back(std::move(name));
+        layouts_.push_back(layout);
         // The texels live on the GPU now; keep the metadata only.
         std::vector<uint8_t>().swap(tex.texels);
     }
@@ -115,8 +137,8 @@ GpuScene::GpuScene(const Scene& scene) : scene_(scene)
         materials.push_back(toGpu(m));
     materials.push_back(toGpu(Material{}));
     materialSsbo_ = makeBuffer(materials.data(), materials.size() * sizeof(materials[0]), 0, gpuBytes_);
-    statsSsbo_ = makeBuffer(scene_.triangleStats.data(),
-                            scene_.triangleStats.size() * sizeof(TriangleStats), 0, gpuBytes_);
+    statsSsbo_ = makeBuffer(options.streamed ? nullptr : scene_.triangleStats.data(),
+                            scene_.triangleStats.size() * sizeof(TriangleStats), streamedFlags, gpuBytes_);
 
     // Step 4: one draw per (node, primitive) of every node that has a mesh.
     for (uint32_t n = 0; n < scene_.nodes.size(); ++n) {

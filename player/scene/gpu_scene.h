@@ -5,6 +5,7 @@
 #pragma once
 
 #include "gl_handles.h"
+#include "gpu_memory_budget.h"
 
 #include "lfd/scene.h"
 
@@ -27,9 +28,27 @@ struct DrawItem {
 // The LFD_MATERIAL_*_TEXTURE bits of a material: the textures it samples.
 uint32_t materialTextureFlags(const Material& material);
 
+struct GpuSceneOptions {
+    // Top mip levels to leave out and the budget figures; null: planned in the constructor
+    // for GL_MAX_TEXTURE_SIZE only (no budget), warnings to stderr.
+    const GpuMemoryPlan* plan = nullptr;
+    // Streaming (TextureStreamer): allocate the buffers and texture storage only; the
+    // streamer fills them from a MappedPack. Textures then sample nothing until their
+    // first level is resident (GL_TEXTURE_BASE_LEVEL starts at the coarsest level).
+    bool streamed = false;
+};
+
+// Which pack levels a GL texture holds: GL level l is pack level firstPackLevel + l.
+struct GpuTextureLayout {
+    uint32_t firstPackLevel = 0;
+    uint32_t levels = 0;
+};
+
 class GpuScene {
 public:
-    explicit GpuScene(const Scene& scene); // needs a current GL context
+    // Needs a current GL context. Without options.streamed the scene's textures must carry
+    // their texels (readPack).
+    explicit GpuScene(Scene scene, const GpuSceneOptions& options = {});
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;
 
@@ -53,12 +72,14 @@ public:
     unsigned triangleStatsBuffer() const { return statsSsbo_.get(); }
     unsigned nodeTransformBuffer() const { return nodeSsbo_.get(); }
     size_t gpuBytes() const { return gpuBytes_; }
+    const GpuTextureLayout& textureLayout(size_t index) const { return layouts_[index]; }
 
 private:
     Scene scene_;
     std::vector<DrawItem> draws_;
     std::vector<glm::mat4> sceneFromNode_;
     std::vector<gl::Texture> textures_;
+    std::vector<GpuTextureLayout> layouts_;
     std::array<gl::Buffer, 4> streamVbos_; // by LFD_ATTRIB_* location; empty when absent
     gl::VertexArray vao_;
     gl::Buffer ibo_, materialSsbo_, statsSsbo_, nodeSsbo_;

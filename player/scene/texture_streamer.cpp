@@ -1,0 +1,141 @@
+#include "texture_streamer.h"
+
+#include "scene_bindings.h"
+
+#include "lfd/pack_layout.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+
+namespace lfd::player {
+
+TextureStreamer::TextureStreamer(GpuScene& scene, std::shared_ptr<MappedPack> pack, size_t chunkBytes)
+    : scene_(scene), pack_(std::move(pack)), chunkBytes_(std::max<size_t>(chunkBytes, 4096))
+{
+    // Step 1: geometry, every buffer whole before any texel (nothing draws without it).
+    auto addBuffer = [&](uint32_t tag, unsigned buffer) {
+        const std::span<const uint8_t> bytes = pack_->section(tag);
+        if (!bytes.empty() && buffer != 0)
+            jobs_.push_back(Job{bytes, buffer});
+    };
+    addBuffer(pack::kTagPositions, scene_.streamBuffer(bindings::kAttribPosition));
+    addBuffer(pack::kTagNormals, scene_.streamBuffer(bindings::kAttribNormal));
+    addBuffer(pack::kTagTangents, scene_.streamBuffer(bindings::kAttribTangent));
+    addBuffer(pack::kTagUvs, scene_.streamBuffer(bindings::kAttribUv));
+    addBuffer(pack::kTagIndices, scene_.indexBuffer());
+    addBuffer(pack::kTagTriangleStats, scene_.triangleStatsBuffer());
+
+    // Step 2: texture levels, smallest first across all textures: within a texture each
+    // level is smaller than the one above it, so this is coarsest-first per texture too,
+    // and every texture's coarsest level comes before any texture's second level.
+    const std::vector<Texture>& textures = pack_->textures();
+    resident_.assign(textures.size(), 0);
+    std::vector<Job> levels;
+    for (size_t t = 0; t < textures.size(); ++t) {
+        const GpuTextureLayout& layout = scene_.textureLayout(t);
+        for (uint32_t l = 0; l < layout.levels; ++l) {
+            const uint32_t packLevel = layout.firstPackLevel + l;
+            const MipLevel& mip = textures[t].mips[packLevel];
+            levels.push_back(Job{pack_->mipBytes(uint32_t(t), packLevel), 0, t, l, mip.width, mip.height,
+                                 pack_->mipTexelOffset(uint32_t(t), packLevel)});
+        }
+    }
+    std::stable_sort(levels.begin(), levels.end(), [](const Job& a, const Job& b) {
+        return a.bytes.size() != b.bytes.size() ? a.bytes.size() < b.bytes.size() : a.texture < b.texture;
+    });
+    firstFinerJob_ = jobs_.size();
+    jobs_.insert(jobs_.end(), levels.begin(), levels.end());
+    std::vector<bool> seen(textures.size(), false);
+    size_t coarsestSeen = 0;
+    // The renderable point: after the job that completes the last texture's first level.
+    const size_t geometryJobs = firstFinerJob_;
+    for (size_t j = geometryJobs; j < jobs_.size() && coarsestSeen < textures.size(); ++j) {
+        if (!seen[jobs_[j].texture]) {
+            seen[jobs_[j].texture] = true;
+            ++coarsestSeen;
+        }
+        firstFinerJob_ = j + 1;
+    }
+    for (const Job& job : jobs_)
+        total_ += job.bytes.size();
+    if (textures.empty()) {
+        pack_->finishTexelVerification(); // TEXL is empty: its checksum is still checked
+        verified_ = true;
+    }
+}
+
+void TextureStreamer::uploadChunk()
+{
+    Job& job = jobs_[next_];
+    bool jobDone = false;
+    if (job.texture == SIZE_MAX) {
+        // GL copies the client bytes before glNamedBufferSubData returns (GL 4.5 section
+        // 6.2), so the chunk's pages can be dropped right after the call.
+        const uint64_t n = std::min<uint64_t>(chunkBytes_, job.bytes.size() - doneInJob_);
+        const uint8_t* src = job.bytes.data() + doneInJob_;
+        glNamedBufferSubData(job.buffer, GLintptr(doneInJob_), GLsizeiptr(n), src);
+        pack_->releasePages(src, size_t(n));
+        doneInJob_ += n;
+        uploaded_ += n;
+        jobDone = doneInJob_ == job.bytes.size();
+    } else {
+        // Whole rows per chunk (at least one: a 65536-wide level has 256 KiB rows).
+        const uint64_t rowBytes = uint64_t(job.width) * 4;
+        const uint64_t rows = std::clamp<uint64_t>(chunkBytes_ / rowBytes, 1, job.height - doneInJob_);
+        const uint64_t offset = doneInJob_ * rowBytes;
+        const uint8_t* src = job.bytes.data() + offset;
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        glTextureSubImage2D(scene_.texture(int32_t(job.texture)), GLint(job.glLevel), 0, GLint(doneInJob_),
+                            GLsizei(job.width), GLsizei(rows), GL_RGBA, GL_UNSIGNED_BYTE, src);
+        pack_->noteTexelsRead(job.texelOffset + offset, rows * rowBytes);
+        pack_->releasePages(src, size_t(rows * rowBytes));
+        doneInJob_ += rows;
+        uploaded_ += rows * rowBytes;
+        jobDone = doneInJob_ == job.height;
+        if (jobDone) {
+            // Levels arrive finest-last per texture, so this one is the finest resident.
+            resident_[job.texture] += 1;
+            glTextureParameteri(scene_.texture(int32_t(job.texture)), GL_TEXTURE_BASE_LEVEL, GLint(job.glLevel));
+        }
+    }
+    if (jobDone) {
+        ++next_;
+        doneInJob_ = 0;
+        if (next_ == jobs_.size() && !verified_) {
+            pack_->finishTexelVerification(); // throws PackError on corrupt texels
+            verified_ = true;
+        }
+    }
+}
+
+bool TextureStreamer::step(uint64_t bytes)
+{
+    const uint64_t start = uploaded_;
+    do {
+        if (next_ == jobs_.size()) {
+            if (!verified_) {
+                pack_->finishTexelVerification();
+                verified_ = true;
+            }
+            break;
+        }
+        uploadChunk();
+    } while (uploaded_ - start < bytes);
+    return resident();
+}
+
+void TextureStreamer::untilRenderable()
+{
+    while (!renderable())
+        uploadChunk();
+}
+
+void TextureStreamer::untilResident()
+{
+    while (!resident())
+        step(UINT64_MAX);
+}
+
+} // namespace lfd::player
