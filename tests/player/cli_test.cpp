@@ -316,6 +316,11 @@ TEST_F(CliTest, BadInputFailsCleanly)
         {"--headless " + q(pack_) + small + " --frames 0" + outputs, "--frames"},
         {"--headless " + q(pack_) + small + " --out " + q(dir_ / "no_such_dir" / "eia.png"), "no_such_dir"},
         {"--headless " + q(pack_) + small + " --bogus-flag", "--bogus-flag"},
+        // Beyond GL limits (README "Faults"): refused before anything is allocated.
+        {"--headless " + q(pack_) + " --display " + q(profile_) + " --views 100000 --view-size 64x48" + outputs,
+         "--views"},
+        {"--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 100000x16" + outputs,
+         "view_width"},
     };
     for (const auto& [args, culprit] : cases) {
         const RunResult r = runPlay(dir_, args);
