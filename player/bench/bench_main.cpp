@@ -62,33 +62,44 @@ std::vector<std::string> parseModeList(const std::string& flag, const std::strin
     return names;
 }
 
-} // namespace
-
-int main(int argc, char** argv)
-{
-    using namespace lfd::player;
-    BenchOptions options;
-    CLI::App app{"lfd-bench: time renderers on a packed scene (.lfdpack) in one GL context and "
-                 "compare their views and EIA with a reference renderer"};
+// Raw flag values as CLI11 fills them (options bound straight into BenchOptions are not here).
+struct BenchFlags {
     std::vector<std::string> packs;
     std::string renderers = "mvr,mvr-layered,lfdpr", viewSize, displayProfile, views, aaList = "none", ssList = "1";
     bool variants = false;
-    app.add_option("PACK", packs, "packed scenes from lfd-bake (one matrix run per pack and view count)")
+    std::string gstdCache;
+    bool noGstdCache = false;
+    std::string outDir;
+    bool glDebug = false;
+    CLI::Option* viewsOpt = nullptr;
+    CLI::Option* sizeOpt = nullptr;
+};
+
+// What the validated flags add to BenchOptions: the view counts and an optional view size.
+struct MatrixShape {
+    std::vector<uint32_t> viewCounts;
+    std::optional<std::pair<uint32_t, uint32_t>> size;
+};
+
+// Declares every lfd-bench flag, bound to `flags` or straight into `options`.
+void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& options)
+{
+    app.add_option("PACK", flags.packs, "packed scenes from lfd-bake (one matrix run per pack and view count)")
         ->required();
-    app.add_option("--aa", aaList,
+    app.add_option("--aa", flags.aaList,
                    "comma-separated EIA reconstructions to run every renderer with: none|spatial|view|view-spatial")
         ->capture_default_str();
-    app.add_option("--ss", ssList,
+    app.add_option("--ss", flags.ssList,
                    "comma-separated supersampling modes to run every renderer with: 1|2s|2v")
         ->capture_default_str();
-    app.add_option("--renderers", renderers, "comma-separated renderers to time")->capture_default_str();
-    app.add_flag("--lfdpr-variants", variants,
+    app.add_option("--renderers", flags.renderers, "comma-separated renderers to time")->capture_default_str();
+    app.add_flag("--lfdpr-variants", flags.variants,
                  "also time the paper's pipeline (lfdpr-paper) and lfdpr with each innovation "
                  "disabled (lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting, lfdpr-no-mv-mipmapping)");
-    app.add_option("--display", displayProfile, "display profile JSON (default: the paper's prototype)");
-    auto* viewsOpt = app.add_option("--views", views, "number of views (overrides the profile); a comma-separated "
-                                                      "list runs the matrix once per view count");
-    auto* sizeOpt = app.add_option("--view-size", viewSize, "view size WxH (overrides the profile)");
+    app.add_option("--display", flags.displayProfile, "display profile JSON (default: the paper's prototype)");
+    flags.viewsOpt = app.add_option("--views", flags.views, "number of views (overrides the profile); a "
+                                                            "comma-separated list runs the matrix once per view count");
+    flags.sizeOpt = app.add_option("--view-size", flags.viewSize, "view size WxH (overrides the profile)");
     app.add_option("--frames", options.frames, "timed frames per renderer")->capture_default_str();
     app.add_option("--warmup", options.warmup, "untimed frames before them")->capture_default_str();
     app.add_option("--fps", options.fps, "frame k is at time k / fps")->capture_default_str();
@@ -103,154 +114,229 @@ int main(int argc, char** argv)
     app.add_option("--gstd-factor", options.rendererOptions.gstd.factor,
                    "gstd: sub-views render at this many times the view resolution")
         ->capture_default_str();
-    std::string gstdCache;
-    bool noGstdCache = false;
-    app.add_option("--gstd-cache", gstdCache,
+    app.add_option("--gstd-cache", flags.gstdCache,
                    "directory caching gstd's quality-frame views (default $XDG_CACHE_HOME/lfdpr/gstd, "
                    "else ~/.cache/lfdpr/gstd)");
-    app.add_flag("--no-gstd-cache", noGstdCache, "render gstd every time (neither read nor write the cache)");
-    std::string outDir;
-    app.add_option("--out", outDir,
+    app.add_flag("--no-gstd-cache", flags.noGstdCache, "render gstd every time (neither read nor write the cache)");
+    app.add_option("--out", flags.outDir,
                    "directory for results.csv/json, table.md, chart.png/svg (the matrix), and per run bench.json, "
                    "bench.csv, speed_vs_error.svg and PNGs (in DIR itself for one pack and view count, else in "
                    "DIR/<scene>-<N>v/)");
     app.add_flag("--quiet", options.quiet, "no progress lines");
-    bool glDebug = false;
-    app.add_flag("--gl-debug", glDebug, "debug GL context: print every KHR_debug message (GL errors fail the run either way)");
+    app.add_flag("--gl-debug", flags.glDebug,
+                 "debug GL context: print every KHR_debug message (GL errors fail the run either way)");
+}
+
+// --renderers, --lfdpr-variants, --aa, --ss, --reference, --gstd-*: into `options`.
+void validateRendererFlags(const BenchFlags& flags, lfd::player::BenchOptions& options)
+{
+    using namespace lfd::player;
+    options.renderers = parseRendererList(flags.renderers);
+    options.aa = parseModeList("--aa", flags.aaList, lfd::player::parseReconstruction);
+    options.ss = parseModeList("--ss", flags.ssList, lfd::player::parseSupersampling);
+    if (flags.variants)
+        for (const std::string& v : lfdprVariantNames())
+            if (std::find(options.renderers.begin(), options.renderers.end(), v) == options.renderers.end())
+                options.renderers.push_back(v);
+    if (!isKnownRenderer(options.reference))
+        throw UsageError("--reference: unknown renderer '" + options.reference + "' (known: " +
+                         joinNames(allRendererNames()) + ")");
+    try {
+        lfd::player::validateGstdOptions(options.rendererOptions.gstd);
+    } catch (const std::exception& e) {
+        throw UsageError(std::string("--gstd-factor: ") + e.what());
+    }
+    options.gstdCache = flags.gstdCache;
+    options.gstdCacheEnabled = !flags.noGstdCache;
+}
+
+// --frames, --fps, --turntable-period: in range.
+void validateTimingFlags(const lfd::player::BenchOptions& options)
+{
+    if (options.frames == 0)
+        throw UsageError("--frames: must be at least 1");
+    if (!std::isfinite(options.fps) || options.fps <= 0.0)
+        throw UsageError("--fps: must be a positive number");
+    if (!std::isfinite(options.turntablePeriod) || options.turntablePeriod < 0.0)
+        throw UsageError("--turntable-period: must be >= 0");
+}
+
+// --views "24,48" -> {24, 48}; empty when the flag is not given (the profile's count is used).
+std::vector<uint32_t> parseViewCounts(const BenchFlags& flags)
+{
+    std::vector<uint32_t> viewCounts;
+    if (*flags.viewsOpt) {
+        for (const std::string& item : lfd::cli::splitList(flags.views)) {
+            char* end = nullptr;
+            const unsigned long n = std::strtoul(item.c_str(), &end, 10);
+            if (item.empty() || *end != '\0' || n == 0 || n > 2048)
+                throw UsageError("--views: expected 1..2048, got '" + item + "'");
+            viewCounts.push_back(uint32_t(n));
+        }
+        if (viewCounts.empty())
+            throw UsageError("--views: empty list");
+    }
+    return viewCounts;
+}
+
+// --out: not a file, and created now.
+void prepareOutDir(const BenchFlags& flags, lfd::player::BenchOptions& options)
+{
+    options.outDir = flags.outDir;
+    if (!options.outDir.empty() && std::filesystem::exists(options.outDir) &&
+        !std::filesystem::is_directory(options.outDir))
+        throw UsageError("--out: '" + flags.outDir + "' exists and is not a directory");
+    if (!options.outDir.empty()) {
+        // Created now so an unwritable place fails before minutes of rendering.
+        std::error_code ec;
+        std::filesystem::create_directories(options.outDir, ec);
+        if (ec)
+            throw UsageError("--out: cannot create '" + flags.outDir + "': " + ec.message());
+    }
+}
+
+// Step 1: every flag checked (and --out created) before touching pack files or the GPU.
+MatrixShape validateFlags(const BenchFlags& flags, lfd::player::BenchOptions& options)
+{
+    validateRendererFlags(flags, options);
+    validateTimingFlags(options);
+    MatrixShape shape;
+    shape.viewCounts = parseViewCounts(flags);
+    if (*flags.sizeOpt)
+        shape.size = lfd::cli::parseSize("--view-size", flags.viewSize);
+    prepareOutDir(flags, options);
+    return shape;
+}
+
+// Step 2: the display profile (filling in the default view count); every pack must exist.
+lfd::DisplayProfile loadProfileAndCheckPacks(const BenchFlags& flags, MatrixShape& shape)
+{
+    const lfd::DisplayProfile baseProfile = flags.displayProfile.empty()
+                                                ? lfd::prototypeDisplayProfile()
+                                                : lfd::loadDisplayProfile(flags.displayProfile);
+    if (shape.viewCounts.empty())
+        shape.viewCounts.push_back(baseProfile.viewCount);
+    for (const std::string& pack : flags.packs)
+        if (!std::filesystem::is_regular_file(pack))
+            throw UsageError(pack + ": no such pack file");
+    return baseProfile;
+}
+
+// Step 3 (after the context exists): its features checked, described, and Ctrl-C hooked up.
+void prepareContext(lfd::gl::GlContext& context, lfd::player::BenchOptions& options)
+{
+    const bool layered = std::find(options.renderers.begin(), options.renderers.end(), "mvr-layered") !=
+                             options.renderers.end() ||
+                         options.reference == "mvr-layered";
+    context.require(layered);
+    if (!options.quiet)
+        std::cout << "lfd-bench: " << context.describeWithCodePaths() << std::endl;
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    options.shouldStop = [] { return gStop.load(); };
+}
+
+// One matrix run (one pack, one view count): benchmarked, its table printed, its files written.
+lfd::player::BenchReport runOne(const lfd::player::BenchOptions& options, const lfd::DisplayProfile& profile,
+                                lfd::Scene scene, uint32_t n, const std::vector<lfd::player::BenchReport>& reports,
+                                bool single, const lfd::gl::GlContext& context)
+{
+    using namespace lfd::player;
+    const size_t slot = reports.size();
+    BenchOptions runOptions = options;
+    if (!options.outDir.empty())
+        runOptions.onResult = [&](const BenchReport& partial) {
+            std::vector<BenchReport> all(reports.begin(), reports.begin() + long(slot));
+            all.push_back(partial);
+            writeMatrixTables(options.outDir, all);
+        };
+    std::map<std::string, FrameImages> images;
+    BenchReport report = runBenchmark(runOptions, profile, std::move(scene), options.pack.filename().string(),
+                                      context.describe(), std::cout, options.outDir.empty() ? nullptr : &images);
+    std::cout << "\n" << benchTable(report) << std::flush;
+    if (!options.outDir.empty()) {
+        std::filesystem::path runDir = options.outDir;
+        if (!single) {
+            std::string stem = options.pack.stem().string();
+            runDir /= stem + "-" + std::to_string(n) + "v";
+        }
+        const auto written = writeBenchOutputs(runDir, report, images);
+        if (!options.quiet)
+            std::cout << "lfd-bench: wrote " << written.size() << " files to " << runDir.string() << std::endl;
+    }
+    return report;
+}
+
+// Step 4: the matrix: per pack and view count one run of every configuration; the
+// matrix files are rewritten after every finished configuration.
+std::vector<lfd::player::BenchReport> runMatrix(lfd::player::BenchOptions& options,
+                                                const lfd::DisplayProfile& baseProfile,
+                                                const std::vector<std::string>& packs, const MatrixShape& shape,
+                                                const lfd::gl::GlContext& context)
+{
+    const bool single = packs.size() == 1 && shape.viewCounts.size() == 1;
+    std::vector<lfd::player::BenchReport> reports;
+    const size_t runs = packs.size() * shape.viewCounts.size();
+    for (const std::string& pack : packs) {
+        for (const uint32_t n : shape.viewCounts) {
+            if (gStop)
+                break;
+            const lfd::DisplayProfile profile =
+                lfd::withViews(baseProfile, n, shape.size ? shape.size->first : baseProfile.viewWidth,
+                               shape.size ? shape.size->second : baseProfile.viewHeight);
+            options.pack = pack;
+            lfd::Scene scene = lfd::readPack(options.pack);
+            if (!options.quiet)
+                std::cout << "lfd-bench: run " << (reports.size() + 1) << "/" << runs << ": " << pack << ", " << n
+                          << " views" << std::endl;
+            reports.push_back(runOne(options, profile, std::move(scene), n, reports, single, context));
+        }
+    }
+    return reports;
+}
+
+// The matrix files (results.csv/json, table.md) once more with every run, and the chart.
+void writeMatrixOutputs(const lfd::player::BenchOptions& options, const std::vector<lfd::player::BenchReport>& reports)
+{
+    if (options.outDir.empty())
+        return;
+    lfd::player::writeMatrixTables(options.outDir, reports);
+    std::string why;
+    if (lfd::player::drawMatrixChart(options.outDir, why)) {
+        if (!options.quiet)
+            std::cout << "lfd-bench: wrote results.csv, results.json, table.md, chart.png, chart.svg to "
+                      << options.outDir.string() << std::endl;
+    } else {
+        std::cout << "lfd-bench: chart.png not drawn: " << why << "; results.csv, results.json and table.md are written"
+                  << std::endl;
+    }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    using namespace lfd::player;
+    BenchOptions options;
+    CLI::App app{"lfd-bench: time renderers on a packed scene (.lfdpack) in one GL context and "
+                 "compare their views and EIA with a reference renderer"};
+    BenchFlags flags;
+    addBenchFlags(app, flags, options);
 
     if (const auto exit = lfd::cli::parseCommandLine(app, argc, argv, "lfd-bench"))
         return *exit;
 
     return lfd::cli::runReportingErrors("lfd-bench", [&] {
-        // Step 1: validate flags before touching files or the GPU.
-        options.renderers = parseRendererList(renderers);
-        options.aa = parseModeList("--aa", aaList, lfd::player::parseReconstruction);
-        options.ss = parseModeList("--ss", ssList, lfd::player::parseSupersampling);
-        if (variants)
-            for (const std::string& v : lfdprVariantNames())
-                if (std::find(options.renderers.begin(), options.renderers.end(), v) == options.renderers.end())
-                    options.renderers.push_back(v);
-        if (!isKnownRenderer(options.reference))
-            throw UsageError("--reference: unknown renderer '" + options.reference + "' (known: " +
-                             joinNames(allRendererNames()) + ")");
-        try {
-            lfd::player::validateGstdOptions(options.rendererOptions.gstd);
-        } catch (const std::exception& e) {
-            throw UsageError(std::string("--gstd-factor: ") + e.what());
-        }
-        options.gstdCache = gstdCache;
-        options.gstdCacheEnabled = !noGstdCache;
-        if (options.frames == 0)
-            throw UsageError("--frames: must be at least 1");
-        if (!std::isfinite(options.fps) || options.fps <= 0.0)
-            throw UsageError("--fps: must be a positive number");
-        if (!std::isfinite(options.turntablePeriod) || options.turntablePeriod < 0.0)
-            throw UsageError("--turntable-period: must be >= 0");
-        std::vector<uint32_t> viewCounts;
-        if (*viewsOpt) {
-            for (const std::string& item : lfd::cli::splitList(views)) {
-                char* end = nullptr;
-                const unsigned long n = std::strtoul(item.c_str(), &end, 10);
-                if (item.empty() || *end != '\0' || n == 0 || n > 2048)
-                    throw UsageError("--views: expected 1..2048, got '" + item + "'");
-                viewCounts.push_back(uint32_t(n));
-            }
-            if (viewCounts.empty())
-                throw UsageError("--views: empty list");
-        }
-        std::optional<std::pair<uint32_t, uint32_t>> size;
-        if (*sizeOpt)
-            size = lfd::cli::parseSize("--view-size", viewSize);
-        options.outDir = outDir;
-        if (!options.outDir.empty() && std::filesystem::exists(options.outDir) &&
-            !std::filesystem::is_directory(options.outDir))
-            throw UsageError("--out: '" + outDir + "' exists and is not a directory");
-        if (!options.outDir.empty()) {
-            // Created now so an unwritable place fails before minutes of rendering.
-            std::error_code ec;
-            std::filesystem::create_directories(options.outDir, ec);
-            if (ec)
-                throw UsageError("--out: cannot create '" + outDir + "': " + ec.message());
-        }
-
-        // Step 2: the display profile; every pack must exist before anything runs.
-        const lfd::DisplayProfile baseProfile = displayProfile.empty() ? lfd::prototypeDisplayProfile()
-                                                                       : lfd::loadDisplayProfile(displayProfile);
-        if (viewCounts.empty())
-            viewCounts.push_back(baseProfile.viewCount);
-        for (const std::string& pack : packs)
-            if (!std::filesystem::is_regular_file(pack))
-                throw UsageError(pack + ": no such pack file");
+        MatrixShape shape = validateFlags(flags, options);
+        const lfd::DisplayProfile baseProfile = loadProfileAndCheckPacks(flags, shape);
 
         // Step 3: one GL context for every renderer and run.
-        std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless(glDebug);
-        lfd::gl::GlErrorWatch glErrors("lfd-bench", glDebug); // messages printed as they arrive
-        const bool layered = std::find(options.renderers.begin(), options.renderers.end(), "mvr-layered") !=
-                                 options.renderers.end() ||
-                             options.reference == "mvr-layered";
-        context->require(layered);
-        if (!options.quiet)
-            std::cout << "lfd-bench: " << context->describeWithCodePaths() << std::endl;
-        std::signal(SIGINT, onSignal);
-        std::signal(SIGTERM, onSignal);
-        options.shouldStop = [] { return gStop.load(); };
+        std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless(flags.glDebug);
+        lfd::gl::GlErrorWatch glErrors("lfd-bench", flags.glDebug); // messages printed as they arrive
+        prepareContext(*context, options);
 
-        // Step 4: the matrix: per pack and view count one run of every configuration; the
-        // matrix files are rewritten after every finished configuration.
-        const bool single = packs.size() == 1 && viewCounts.size() == 1;
-        std::vector<BenchReport> reports;
-        const size_t runs = packs.size() * viewCounts.size();
-        for (const std::string& pack : packs) {
-            for (const uint32_t n : viewCounts) {
-                if (gStop)
-                    break;
-                lfd::DisplayProfile profile =
-                    lfd::withViews(baseProfile, n, size ? size->first : baseProfile.viewWidth,
-                                   size ? size->second : baseProfile.viewHeight);
-                options.pack = pack;
-                lfd::Scene scene = lfd::readPack(options.pack);
-                if (!options.quiet)
-                    std::cout << "lfd-bench: run " << (reports.size() + 1) << "/" << runs << ": " << pack << ", " << n
-                              << " views" << std::endl;
-                const size_t slot = reports.size();
-                BenchOptions runOptions = options;
-                if (!options.outDir.empty())
-                    runOptions.onResult = [&](const BenchReport& partial) {
-                        std::vector<BenchReport> all(reports.begin(), reports.begin() + long(slot));
-                        all.push_back(partial);
-                        writeMatrixTables(options.outDir, all);
-                    };
-                std::map<std::string, FrameImages> images;
-                BenchReport report =
-                    runBenchmark(runOptions, profile, std::move(scene), options.pack.filename().string(),
-                                 context->describe(), std::cout, options.outDir.empty() ? nullptr : &images);
-                std::cout << "\n" << benchTable(report) << std::flush;
-                if (!options.outDir.empty()) {
-                    std::filesystem::path runDir = options.outDir;
-                    if (!single) {
-                        std::string stem = options.pack.stem().string();
-                        runDir /= stem + "-" + std::to_string(n) + "v";
-                    }
-                    const auto written = writeBenchOutputs(runDir, report, images);
-                    if (!options.quiet)
-                        std::cout << "lfd-bench: wrote " << written.size() << " files to " << runDir.string()
-                                  << std::endl;
-                }
-                reports.push_back(std::move(report));
-            }
-        }
-        if (!options.outDir.empty()) {
-            writeMatrixTables(options.outDir, reports);
-            std::string why;
-            if (drawMatrixChart(options.outDir, why)) {
-                if (!options.quiet)
-                    std::cout << "lfd-bench: wrote results.csv, results.json, table.md, chart.png, chart.svg to "
-                              << options.outDir.string() << std::endl;
-            } else {
-                std::cout << "lfd-bench: chart.png not drawn: " << why
-                          << "; results.csv, results.json and table.md are written" << std::endl;
-            }
-        }
+        const std::vector<BenchReport> reports = runMatrix(options, baseProfile, flags.packs, shape, *context);
+        writeMatrixOutputs(options, reports);
         if (gStop) {
             std::cout << "lfd-bench: interrupted; kept the configurations that finished" << std::endl;
             return 130;
