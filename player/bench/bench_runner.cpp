@@ -18,6 +18,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <ostream>
 #include <stdexcept>
@@ -62,6 +63,289 @@ struct Config {
     std::string renderer, aa, ss;
     std::string name() const { return configName(renderer, aa, ss); }
 };
+
+// Configuration lists and ordering.
+struct ConfigPlan {
+    std::vector<Config> configs; // the user's order: renderers, then supersampling, then reconstruction
+    std::vector<Config> order;   // the run order: the reference first, then `configs` without it
+    bool referenceTimed = false; // the reference is one of `configs` (else it is rendered untimed)
+};
+
+// Everything one benchmark run shares between its configurations.
+struct BenchRun {
+    const BenchOptions& options;
+    const DisplayProfile& profile;
+    const std::string& packName;
+    std::ostream& progress;
+    std::map<std::string, FrameImages>* images;
+    FramePipeline& pipeline;
+    ConfigPlan plan;
+    double qualityTime;
+    std::optional<GstdCache> gstdCache;
+    std::string gstdKey;
+    CapturedFrame reference;
+    Image referenceLens;
+    std::vector<RendererResult> results;
+    BenchReport& report;
+};
+
+using Say = std::function<void(const std::string&)>;
+
+// The option checks lfd-bench also does on its flags (for callers filling BenchOptions themselves).
+void validateOptions(const BenchOptions& options)
+{
+    if (options.frames == 0)
+        throw std::invalid_argument("frames: must be at least 1");
+    if (options.renderers.empty())
+        throw std::invalid_argument("renderers: the list is empty");
+    for (const std::string& name : options.renderers)
+        if (!isKnownRenderer(name))
+            createRenderer(name); // throws the one-line "unknown renderer" error
+    if (!isKnownRenderer(options.reference))
+        createRenderer(options.reference);
+    validateGstdOptions(options.rendererOptions.gstd);
+}
+
+// The report's header: options, GL, pack, profile and scene sizes.
+BenchReport startReport(const BenchOptions& options, const DisplayProfile& profile, const Scene& scene,
+                        const std::string& packName, const std::string& glDescription)
+{
+    BenchReport report;
+    report.options = options;
+    report.gl = glDescription;
+    report.packName = packName;
+    report.profile = profile;
+    report.triangles = scene.triangleCount();
+    report.drawnTriangles = scene.drawnTriangleCount();
+    return report;
+}
+
+// Step 2: the reference runs first so every other configuration is compared as soon
+// as it has rendered (only the reference's frame is kept); the table keeps the user's
+// order: renderers, then supersampling, then reconstruction.
+ConfigPlan planConfigs(const BenchOptions& options)
+{
+    if (options.aa.empty() || options.ss.empty())
+        throw std::invalid_argument("aa, ss: the lists must not be empty");
+    for (const std::string& a : options.aa)
+        parseReconstruction(a);
+    for (const std::string& x : options.ss)
+        parseSupersampling(x);
+    ConfigPlan plan;
+    for (const std::string& r : options.renderers)
+        for (const std::string& x : options.ss)
+            for (const std::string& a : options.aa)
+                plan.configs.push_back({r, a, x});
+    const std::string referenceName = options.reference;
+    plan.referenceTimed = std::any_of(plan.configs.begin(), plan.configs.end(), [&](const Config& c) {
+        return c.name() == referenceName;
+    });
+    plan.order.push_back({options.reference, "none", "1"});
+    for (const Config& c : plan.configs)
+        if (c.name() != referenceName)
+            plan.order.push_back(c);
+    return plan;
+}
+
+// The report's results from the finished ones: the user's order, an untimed reference last.
+void publish(BenchReport& report, const ConfigPlan& plan, const std::vector<RendererResult>& done, bool interrupted)
+{
+    report.results.clear();
+    for (const Config& c : plan.configs)
+        for (const RendererResult& r : done)
+            if (r.name == c.name())
+                report.results.push_back(r);
+    if (!plan.referenceTimed && !done.empty())
+        report.results.push_back(done.front());
+    report.interrupted = interrupted;
+}
+
+// Whether the caller asked the run to stop.
+bool stopRequested(const BenchOptions& options)
+{
+    return options.shouldStop && options.shouldStop();
+}
+
+// gstd's quality frame comes from the disk cache when the pack is a file (its content
+// hash is part of the key); a failed cache write only costs the next run a re-render.
+void openGstdCache(BenchRun& run, const std::string& glDescription)
+{
+    const BenchOptions& options = run.options;
+    const std::vector<Config>& order = run.plan.order;
+    if (options.gstdCacheEnabled &&
+        std::any_of(order.begin(), order.end(), [](const Config& c) { return c.name() == "gstd"; }) &&
+        std::filesystem::is_regular_file(options.pack)) {
+        const std::filesystem::path dir = options.gstdCache.empty() ? defaultGstdCacheDir() : options.gstdCache;
+        if (!dir.empty()) {
+            run.gstdCache.emplace(dir);
+            run.gstdKey = gstdCacheKey(hashFileContents(options.pack), run.qualityTime, options.turntablePeriod,
+                                       run.profile, options.rendererOptions.gstd, glDescription);
+        }
+    }
+}
+
+// A progress printer for configuration `i`: pack, view layout, place in the run, name.
+Say progressFor(const BenchRun& run, size_t i, const std::string& name)
+{
+    return [&run, i, name](const std::string& line) {
+        if (!run.options.quiet)
+            run.progress << "lfd-bench: " << run.packName << " " << run.profile.viewCount << "x"
+                         << run.profile.viewWidth << "x" << run.profile.viewHeight << " [" << (i + 1) << "/"
+                         << run.plan.order.size() << "] " << name << ": " << line << std::endl;
+    };
+}
+
+// Step 3: warm-up frames (shader compilation, buffer growth), then timed frames;
+// the warm-up replays the first timed frames' times and is timed separately.
+// Returns false when a stop request cut the timing short.
+bool timeFrames(BenchRun& run, Renderer& renderer, Reconstruction aa, RendererResult& result, const Say& say)
+{
+    const BenchOptions& options = run.options;
+    say("warm-up " + std::to_string(options.warmup) + " frame(s), then " + std::to_string(options.frames) +
+        " timed frame(s)");
+    GpuTimer warmTimer;
+    for (uint32_t k = 0; k < options.warmup && !stopRequested(options); ++k)
+        run.pipeline.renderFrame(renderer, double(k % options.frames) / options.fps, warmTimer, aa);
+    warmTimer.finish();
+    GpuTimer timer;
+    for (uint32_t k = 0; k < options.frames && !stopRequested(options); ++k)
+        run.pipeline.renderFrame(renderer, double(k) / options.fps, timer, aa);
+    timer.finish();
+    if (stopRequested(options))
+        return false;
+    result.stages = timer.stages();
+    result.extra = renderer.extraStats();
+    char line[128];
+    std::snprintf(line, sizeof(line), "mean total %.2f ms", result.stageMean(std::string(stage::kTotal)));
+    say(line);
+    return true;
+}
+
+// Step 4: the quality frame, untimed (gstd's views from the cache when it has them; the
+// EIA is built from them as usual), left in the pipeline's targets.
+void renderQualityFrame(BenchRun& run, Renderer& renderer, Reconstruction aa, RendererResult& result,
+                        const Say& say)
+{
+    using Clock = std::chrono::steady_clock;
+    const std::string& name = result.name;
+    GpuTimer qualityTimer;
+    const bool cacheable = name == "gstd" && run.gstdCache; // (gstd, none, 1) only
+    if (cacheable) {
+        run.pipeline.animate(run.qualityTime);
+        result.fromCache = run.gstdCache->load(run.gstdKey, run.pipeline.targets());
+        if (result.fromCache) {
+            run.pipeline.buildEia(qualityTimer, aa);
+            say("quality frame from the gstd cache " + run.gstdCache->entryPath(run.gstdKey).string());
+        }
+    }
+    if (!result.fromCache) {
+        const Clock::time_point qualityStart = Clock::now();
+        run.pipeline.renderFrame(renderer, run.qualityTime, qualityTimer, aa);
+        if (cacheable) {
+            try {
+                run.gstdCache->store(run.gstdKey, run.pipeline.targets());
+            } catch (const std::exception& e) {
+                run.progress << "lfd-bench: warning: gstd cache not written: " << e.what() << std::endl;
+            }
+        }
+        char line[160];
+        std::snprintf(line, sizeof(line), "quality frame rendered in %.2f s%s",
+                      std::chrono::duration<double>(Clock::now() - qualityStart).count(),
+                      cacheable ? " (stored in the gstd cache)" : "");
+        if (name == "gstd")
+            say(line);
+    }
+    qualityTimer.finish();
+}
+
+// Every view against the reference's: RMSE over all views' pixels and mean SSIM (no FLIP).
+Quality compareAllViews(const CapturedFrame& frame, const CapturedFrame& reference)
+{
+    double mse = 0.0, ssim = 0.0;
+    for (size_t v = 0; v < frame.views.size(); ++v) {
+        const double e = rmse(frame.views[v], reference.views[v]);
+        mse += e * e;
+        ssim += ssimLuma(frame.views[v], reference.views[v]);
+    }
+    const double n = double(frame.views.size());
+    return {std::sqrt(mse / n), psnrFromRmse(std::sqrt(mse / n)), ssim / n, std::numeric_limits<double>::quiet_NaN()};
+}
+
+// The captured frame's quality against the reference; configuration 0 is the reference
+// and its frame (moved from `frame`) is kept for the others.
+void compareWithReference(BenchRun& run, size_t i, CapturedFrame& frame, RendererResult& result, const Say& say)
+{
+    const DisplayProfile& profile = run.profile;
+    // Through the lens: what an eye at the centre view position sees of this EIA.
+    const double eyePosition = 0.5 * double(profile.viewCount);
+    const Image lens{profile.viewWidth, profile.viewHeight, 4,
+                     simulateViewer(profile, frame.eia.pixels, eyePosition)};
+    if (i == 0) {
+        // The reference against itself: identical.
+        const Quality identical{0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0};
+        result.eia = result.centreView = result.allViews = result.lens = identical;
+        run.reference = std::move(frame);
+        run.referenceLens = lens;
+        return;
+    }
+    result.lens = compare(lens, run.referenceLens);
+    result.eia = compare(frame.eia, run.reference.eia);
+    const size_t centre = frame.views.size() / 2;
+    result.centreView = compare(frame.views[centre], run.reference.views[centre]);
+    result.allViews = compareAllViews(frame, run.reference);
+    char line[200];
+    std::snprintf(line, sizeof(line),
+                  "vs %s: EIA RMSE %.2f SSIM %.4f FLIP %.4f, centre view RMSE %.2f SSIM %.4f FLIP %.4f",
+                  run.options.reference.c_str(), result.eia.rmse, result.eia.ssim, result.eia.flip,
+                  result.centreView.rmse, result.centreView.ssim, result.centreView.flip);
+    say(line);
+}
+
+// One configuration: timed (unless it is an untimed reference), its quality frame compared
+// and its result published. Returns false when a stop request cut it short.
+bool runConfig(BenchRun& run, size_t i)
+{
+    using Clock = std::chrono::steady_clock;
+    const BenchOptions& options = run.options;
+    const Config& config = run.plan.order[i];
+    const std::string name = config.name();
+    const Reconstruction aa = parseReconstruction(config.aa);
+    run.pipeline.setSupersampling(parseSupersampling(config.ss));
+    const Clock::time_point start = Clock::now();
+    RendererResult result;
+    result.name = name;
+    result.renderer = config.renderer;
+    result.aa = config.aa;
+    result.ss = config.ss;
+    result.timed = name != options.reference || run.plan.referenceTimed;
+    const Say say = progressFor(run, i, name);
+    std::unique_ptr<Renderer> renderer = createRenderer(config.renderer, options.rendererOptions);
+
+    if (result.timed) {
+        if (!timeFrames(run, *renderer, aa, result, say))
+            return false;
+    } else {
+        say("reference only (not in --renderers): quality frame");
+    }
+    renderQualityFrame(run, *renderer, aa, result, say);
+    if (!result.timed)
+        result.extra = renderer->extraStats();
+    gl::checkGlError("rendering with " + name);
+    CapturedFrame frame = capture(run.pipeline);
+    renderer.reset();
+
+    compareWithReference(run, i, frame, result, say);
+    const CapturedFrame& kept = i == 0 ? run.reference : frame;
+    if (run.images)
+        (*run.images)[name] = {kept.eia.pixels, kept.views[kept.views.size() / 2].pixels};
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    run.results.push_back(std::move(result));
+    // Step 5: the report so far (the user's order, an untimed reference last).
+    publish(run.report, run.plan, run.results, false);
+    if (options.onResult)
+        options.onResult(run.report);
+    return true;
+}
 
 } // namespace
 
@@ -121,212 +405,24 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
                          const std::string& packName, const std::string& glDescription,
                          std::ostream& progress, std::map<std::string, FrameImages>* images)
 {
-    using Clock = std::chrono::steady_clock;
-    if (options.frames == 0)
-        throw std::invalid_argument("frames: must be at least 1");
-    if (options.renderers.empty())
-        throw std::invalid_argument("renderers: the list is empty");
-    for (const std::string& name : options.renderers)
-        if (!isKnownRenderer(name))
-            createRenderer(name); // throws the one-line "unknown renderer" error
-    if (!isKnownRenderer(options.reference))
-        createRenderer(options.reference);
-    validateGstdOptions(options.rendererOptions.gstd);
-
-    BenchReport report;
-    report.options = options;
-    report.gl = glDescription;
-    report.packName = packName;
-    report.profile = profile;
-    report.triangles = scene.triangleCount();
-    report.drawnTriangles = scene.drawnTriangleCount();
+    validateOptions(options);
+    BenchReport report = startReport(options, profile, scene, packName, glDescription);
 
     // Step 1: upload once into the frame pipeline lfd-play uses too.
     FramePipeline pipeline(profile, scene, options.turntablePeriod);
     scene = Scene{}; // the GPU copy is all that is needed from here on
     report.sceneGpuBytes = pipeline.scene().gpuBytes();
 
-    // Step 2: the reference runs first so every other configuration is compared as soon
-    // as it has rendered (only the reference's frame is kept); the table keeps the user's
-    // order: renderers, then supersampling, then reconstruction.
-    if (options.aa.empty() || options.ss.empty())
-        throw std::invalid_argument("aa, ss: the lists must not be empty");
-    for (const std::string& a : options.aa)
-        parseReconstruction(a);
-    for (const std::string& x : options.ss)
-        parseSupersampling(x);
-    std::vector<Config> configs;
-    for (const std::string& r : options.renderers)
-        for (const std::string& x : options.ss)
-            for (const std::string& a : options.aa)
-                configs.push_back({r, a, x});
-    const std::string referenceName = options.reference;
-    const bool referenceTimed = std::any_of(configs.begin(), configs.end(), [&](const Config& c) {
-        return c.name() == referenceName;
-    });
-    std::vector<Config> order;
-    order.push_back({options.reference, "none", "1"});
-    for (const Config& c : configs)
-        if (c.name() != referenceName)
-            order.push_back(c);
-    auto publish = [&](std::vector<RendererResult>& done, bool interrupted) {
-        report.results.clear();
-        for (const Config& c : configs)
-            for (const RendererResult& r : done)
-                if (r.name == c.name())
-                    report.results.push_back(r);
-        if (!referenceTimed && !done.empty())
-            report.results.push_back(done.front());
-        report.interrupted = interrupted;
-    };
-
-    CapturedFrame reference;
-    Image referenceLens;
-    std::vector<RendererResult> results;
-    const double qualityTime = double(options.qualityFrame) / options.fps;
-
-    // gstd's quality frame comes from the disk cache when the pack is a file (its content
-    // hash is part of the key); a failed cache write only costs the next run a re-render.
-    std::optional<GstdCache> gstdCache;
-    std::string gstdKey;
-    if (options.gstdCacheEnabled && std::any_of(order.begin(), order.end(), [](const Config& c) { return c.name() == "gstd"; }) &&
-        std::filesystem::is_regular_file(options.pack)) {
-        const std::filesystem::path dir = options.gstdCache.empty() ? defaultGstdCacheDir() : options.gstdCache;
-        if (!dir.empty()) {
-            gstdCache.emplace(dir);
-            gstdKey = gstdCacheKey(hashFileContents(options.pack), qualityTime, options.turntablePeriod, profile,
-                                   options.rendererOptions.gstd, glDescription);
-        }
-    }
-    auto stopRequested = [&] { return options.shouldStop && options.shouldStop(); };
-    for (size_t i = 0; i < order.size(); ++i) {
-        if (stopRequested()) {
-            publish(results, true);
+    BenchRun run{options, profile, packName, progress, images, pipeline, planConfigs(options),
+                 double(options.qualityFrame) / options.fps, {}, {}, {}, {}, {}, report};
+    openGstdCache(run, glDescription);
+    for (size_t i = 0; i < run.plan.order.size(); ++i) {
+        if (stopRequested(options) || !runConfig(run, i)) {
+            publish(report, run.plan, run.results, true);
             return report;
         }
-        const Config& config = order[i];
-        const std::string name = config.name();
-        const Reconstruction aa = parseReconstruction(config.aa);
-        pipeline.setSupersampling(parseSupersampling(config.ss));
-        const Clock::time_point start = Clock::now();
-        RendererResult result;
-        result.name = name;
-        result.renderer = config.renderer;
-        result.aa = config.aa;
-        result.ss = config.ss;
-        result.timed = name != options.reference || referenceTimed;
-        auto say = [&](const std::string& line) {
-            if (!options.quiet)
-                progress << "lfd-bench: " << packName << " " << profile.viewCount << "x" << profile.viewWidth << "x"
-                         << profile.viewHeight << " [" << (i + 1) << "/" << order.size() << "] " << name << ": "
-                         << line << std::endl;
-        };
-        std::unique_ptr<Renderer> renderer = createRenderer(config.renderer, options.rendererOptions);
-
-        // Step 3: warm-up frames (shader compilation, buffer growth), then timed frames;
-        // the warm-up replays the first timed frames' times and is timed separately.
-        if (result.timed) {
-            say("warm-up " + std::to_string(options.warmup) + " frame(s), then " +
-                std::to_string(options.frames) + " timed frame(s)");
-            GpuTimer warmTimer;
-            for (uint32_t k = 0; k < options.warmup && !stopRequested(); ++k)
-                pipeline.renderFrame(*renderer, double(k % options.frames) / options.fps, warmTimer, aa);
-            warmTimer.finish();
-            GpuTimer timer;
-            for (uint32_t k = 0; k < options.frames && !stopRequested(); ++k)
-                pipeline.renderFrame(*renderer, double(k) / options.fps, timer, aa);
-            timer.finish();
-            if (stopRequested()) {
-                publish(results, true);
-                return report;
-            }
-            result.stages = timer.stages();
-            result.extra = renderer->extraStats();
-            char line[128];
-            std::snprintf(line, sizeof(line), "mean total %.2f ms", result.stageMean(std::string(stage::kTotal)));
-            say(line);
-        } else {
-            say("reference only (not in --renderers): quality frame");
-        }
-
-        // Step 4: the quality frame, untimed, compared with the reference's (gstd's views
-        // from the cache when it has them; the EIA is built from them as usual).
-        GpuTimer qualityTimer;
-        const bool cacheable = name == "gstd" && gstdCache; // (gstd, none, 1) only
-        if (cacheable) {
-            pipeline.animate(qualityTime);
-            result.fromCache = gstdCache->load(gstdKey, pipeline.targets());
-            if (result.fromCache) {
-                pipeline.buildEia(qualityTimer, aa);
-                say("quality frame from the gstd cache " + gstdCache->entryPath(gstdKey).string());
-            }
-        }
-        if (!result.fromCache) {
-            const Clock::time_point qualityStart = Clock::now();
-            pipeline.renderFrame(*renderer, qualityTime, qualityTimer, aa);
-            if (cacheable) {
-                try {
-                    gstdCache->store(gstdKey, pipeline.targets());
-                } catch (const std::exception& e) {
-                    progress << "lfd-bench: warning: gstd cache not written: " << e.what() << std::endl;
-                }
-            }
-            char line[160];
-            std::snprintf(line, sizeof(line), "quality frame rendered in %.2f s%s",
-                          std::chrono::duration<double>(Clock::now() - qualityStart).count(),
-                          cacheable ? " (stored in the gstd cache)" : "");
-            if (name == "gstd")
-                say(line);
-        }
-        qualityTimer.finish();
-        if (!result.timed)
-            result.extra = renderer->extraStats();
-        gl::checkGlError("rendering with " + name);
-        CapturedFrame frame = capture(pipeline);
-        renderer.reset();
-
-        // Through the lens: what an eye at the centre view position sees of this EIA.
-        const double eyePosition = 0.5 * double(profile.viewCount);
-        const Image lens{profile.viewWidth, profile.viewHeight, 4,
-                         simulateViewer(profile, frame.eia.pixels, eyePosition)};
-        if (i == 0) {
-            // The reference against itself: identical.
-            const Quality identical{0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0};
-            result.eia = result.centreView = result.allViews = result.lens = identical;
-            reference = std::move(frame);
-            referenceLens = lens;
-        } else {
-            result.lens = compare(lens, referenceLens);
-            result.eia = compare(frame.eia, reference.eia);
-            const size_t centre = frame.views.size() / 2;
-            result.centreView = compare(frame.views[centre], reference.views[centre]);
-            double mse = 0.0, ssim = 0.0;
-            for (size_t v = 0; v < frame.views.size(); ++v) {
-                const double e = rmse(frame.views[v], reference.views[v]);
-                mse += e * e;
-                ssim += ssimLuma(frame.views[v], reference.views[v]);
-            }
-            const double n = double(frame.views.size());
-            result.allViews = {std::sqrt(mse / n), psnrFromRmse(std::sqrt(mse / n)), ssim / n,
-                               std::numeric_limits<double>::quiet_NaN()};
-            char line[200];
-            std::snprintf(line, sizeof(line),
-                          "vs %s: EIA RMSE %.2f SSIM %.4f FLIP %.4f, centre view RMSE %.2f SSIM %.4f FLIP %.4f",
-                          options.reference.c_str(), result.eia.rmse, result.eia.ssim, result.eia.flip,
-                          result.centreView.rmse, result.centreView.ssim, result.centreView.flip);
-            say(line);
-        }
-        const CapturedFrame& kept = i == 0 ? reference : frame;
-        if (images)
-            (*images)[name] = {kept.eia.pixels, kept.views[kept.views.size() / 2].pixels};
-        result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        results.push_back(std::move(result));
-        // Step 5: the report so far (the user's order, an untimed reference last).
-        publish(results, false);
-        if (options.onResult)
-            options.onResult(report);
     }
-    publish(results, false);
+    publish(report, run.plan, run.results, false);
     return report;
 }
 
