@@ -616,57 +616,74 @@ std::vector<Vec> gather(const gltf::FloatArray& a, const std::vector<uint32_t>& 
     return out;
 }
 
-std::optional<PrimitiveData> readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim,
-                                           const std::string& label, const Material* material, StreamNeeds needs,
-                                           const std::string& file, Warnings& warnings)
-{
-    auto attribute = [&prim](const char* name) {
-        auto it = prim.attributes.find(name);
-        return it == prim.attributes.end() ? -1 : it->second;
-    };
+// Where a primitive's data comes from, and the names its errors and warnings use.
+struct PrimitiveSource {
+    const tinygltf::Model& model;
+    const tinygltf::Primitive& prim;
+    const std::string& label;
+    const std::string& file;
+    size_t vertexCount = 0; // POSITION's count, once read
+};
 
-    // Step 1: positions (required, finite).
-    const int positionAccessor = attribute("POSITION");
+// The accessor of attribute `name`, or -1.
+int attributeAccessor(const tinygltf::Primitive& prim, const char* name)
+{
+    auto it = prim.attributes.find(name);
+    return it == prim.attributes.end() ? -1 : it->second;
+}
+
+// Step 1: positions (required, finite).
+gltf::FloatArray readPositions(const PrimitiveSource& src)
+{
+    const int positionAccessor = attributeAccessor(src.prim, "POSITION");
     if (positionAccessor < 0)
-        fail(file, label + " has no POSITION attribute");
-    const gltf::FloatArray positions =
-        gltf::readFloatAccessor(model, positionAccessor, {TINYGLTF_TYPE_VEC3}, file, label + " POSITION");
-    const size_t vertexCount = positions.count;
+        fail(src.file, src.label + " has no POSITION attribute");
+    gltf::FloatArray positions =
+        gltf::readFloatAccessor(src.model, positionAccessor, {TINYGLTF_TYPE_VEC3}, src.file, src.label + " POSITION");
     for (size_t i = 0; i < positions.values.size(); ++i)
         if (!std::isfinite(positions.values[i]))
-            fail(file, label + " POSITION " + std::to_string(i / 3) + " is not finite (NaN or infinity)");
+            fail(src.file, src.label + " POSITION " + std::to_string(i / 3) + " is not finite (NaN or infinity)");
+    return positions;
+}
 
-    // Step 2: indices (sequential for non-indexed primitives), range-checked.
+// Step 2: indices (sequential for non-indexed primitives), range-checked.
+std::vector<uint32_t> readIndices(const PrimitiveSource& src)
+{
+    const size_t vertexCount = src.vertexCount;
     std::vector<uint32_t> indices;
-    if (prim.indices >= 0) {
-        indices = gltf::readIndexAccessor(model, prim.indices, file, label + " indices");
+    if (src.prim.indices >= 0) {
+        indices = gltf::readIndexAccessor(src.model, src.prim.indices, src.file, src.label + " indices");
         for (size_t i = 0; i < indices.size(); ++i)
             if (indices[i] >= vertexCount)
-                fail(file, label + " index " + std::to_string(i) + " (value " + std::to_string(indices[i]) +
-                               ") out of range (" + std::to_string(vertexCount) + " vertices)");
+                fail(src.file, src.label + " index " + std::to_string(i) + " (value " + std::to_string(indices[i]) +
+                                   ") out of range (" + std::to_string(vertexCount) + " vertices)");
     } else {
         if (vertexCount > UINT32_MAX)
-            fail(file, label + " has too many vertices");
+            fail(src.file, src.label + " has too many vertices");
         indices.resize(vertexCount);
         std::iota(indices.begin(), indices.end(), 0u);
     }
+    return indices;
+}
 
-    // Step 3: triangle list in glTF vertex numbering.
-    if (prim.mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
-        warnings.add(label + " has " + std::to_string(indices.size()) +
+// Step 3: triangle list in glTF vertex numbering (warns about a dangling partial triangle).
+std::vector<uint32_t> readTriangles(const PrimitiveSource& src, const std::vector<uint32_t>& indices,
+                                    Warnings& warnings)
+{
+    if (src.prim.mode == TINYGLTF_MODE_TRIANGLES && indices.size() % 3 != 0)
+        warnings.add(src.label + " has " + std::to_string(indices.size()) +
                      " indices, not a multiple of 3: ignoring the last " + std::to_string(indices.size() % 3));
-    std::vector<uint32_t> triangles = gltf::triangulate(indices, prim.mode);
-    if (triangles.empty()) {
-        warnings.add(label + " has no triangles: skipped");
-        return std::nullopt;
-    }
+    return gltf::triangulate(indices, src.prim.mode);
+}
 
-    // Step 4: which source vertex each output vertex copies. With normals: the vertices
-    // the triangles use, in source order (primitives sharing one large vertex buffer keep
-    // only their own). Without normals, glTF requires flat normals: one vertex per corner.
-    const int normalAccessor = attribute("NORMAL");
+// Step 4: which source vertex each output vertex copies (renumbering `triangles` to match).
+// With normals: the vertices the triangles use, in source order (primitives sharing one
+// large vertex buffer keep only their own). Without normals, glTF requires flat normals:
+// one vertex per corner.
+std::vector<uint32_t> selectVertices(bool hasNormals, size_t vertexCount, std::vector<uint32_t>& triangles)
+{
     std::vector<uint32_t> vertexSource;
-    if (normalAccessor >= 0) {
+    if (hasNormals) {
         std::vector<uint32_t> remap(vertexCount, UINT32_MAX);
         for (uint32_t i : triangles)
             remap[i] = 0;
@@ -681,84 +698,101 @@ std::optional<PrimitiveData> readPrimitive(const tinygltf::Model& model, const t
         vertexSource = triangles;
         std::iota(triangles.begin(), triangles.end(), 0u);
     }
+    return vertexSource;
+}
 
-    auto readAttribute = [&](int accessor, int type, const char* name) {
-        gltf::FloatArray a = gltf::readFloatAccessor(model, accessor, {type}, file, label + " " + name);
-        if (a.count != vertexCount)
-            fail(file, label + " " + name + " has " + std::to_string(a.count) + " elements but POSITION has " +
-                           std::to_string(vertexCount));
-        return a;
-    };
+// A per-vertex float attribute, which must have as many elements as POSITION.
+gltf::FloatArray readAttribute(const PrimitiveSource& src, int accessor, int type, const char* name)
+{
+    gltf::FloatArray a = gltf::readFloatAccessor(src.model, accessor, {type}, src.file, src.label + " " + name);
+    if (a.count != src.vertexCount)
+        fail(src.file, src.label + " " + name + " has " + std::to_string(a.count) + " elements but POSITION has " +
+                           std::to_string(src.vertexCount));
+    return a;
+}
 
-    PrimitiveData out;
-    out.positions = gather<glm::vec3>(positions, vertexSource);
-    out.triangles = std::move(triangles);
-
-    // Step 5: normals - given (re-normalised; broken ones replaced by the smooth normal
-    // of the adjacent triangles) or flat.
-    if (normalAccessor >= 0) {
-        out.normals = gather<glm::vec3>(readAttribute(normalAccessor, TINYGLTF_TYPE_VEC3, "NORMAL"), vertexSource);
-        std::vector<glm::vec3> smooth; // computed only if some normal is broken
-        size_t repaired = 0;
-        for (size_t v = 0; v < out.normals.size(); ++v) {
-            const float len = glm::length(out.normals[v]);
-            if (len > 1e-12f && std::isfinite(len)) {
-                out.normals[v] /= len;
-                continue;
-            }
-            if (smooth.empty())
-                smooth = gltf::smoothNormals(out.positions, out.triangles);
-            out.normals[v] = smooth[v];
-            ++repaired;
+// Given normals re-normalised; broken ones replaced by the smooth normal of the adjacent triangles.
+void repairNormals(const PrimitiveSource& src, PrimitiveData& out, Warnings& warnings)
+{
+    std::vector<glm::vec3> smooth; // computed only if some normal is broken
+    size_t repaired = 0;
+    for (size_t v = 0; v < out.normals.size(); ++v) {
+        const float len = glm::length(out.normals[v]);
+        if (len > 1e-12f && std::isfinite(len)) {
+            out.normals[v] /= len;
+            continue;
         }
-        if (repaired > 0)
-            warnings.add(label + " has " + std::to_string(repaired) +
-                         " zero or invalid normals: replaced by smooth normals");
+        if (smooth.empty())
+            smooth = gltf::smoothNormals(out.positions, out.triangles);
+        out.normals[v] = smooth[v];
+        ++repaired;
+    }
+    if (repaired > 0)
+        warnings.add(src.label + " has " + std::to_string(repaired) +
+                     " zero or invalid normals: replaced by smooth normals");
+}
+
+// Step 5: normals - given (re-normalised; broken ones replaced by the smooth normal
+// of the adjacent triangles) or flat.
+void readNormals(const PrimitiveSource& src, const std::vector<uint32_t>& vertexSource, PrimitiveData& out,
+                 Warnings& warnings)
+{
+    const int normalAccessor = attributeAccessor(src.prim, "NORMAL");
+    if (normalAccessor >= 0) {
+        out.normals = gather<glm::vec3>(readAttribute(src, normalAccessor, TINYGLTF_TYPE_VEC3, "NORMAL"), vertexSource);
+        repairNormals(src, out, warnings);
     } else {
-        warnings.add(label + " has no normals: computed flat normals");
+        warnings.add(src.label + " has no normals: computed flat normals");
         out.normals.resize(out.positions.size());
         for (size_t i = 0; i + 2 < out.positions.size(); i += 3) {
             const glm::vec3 n = gltf::faceNormal(out.positions[i], out.positions[i + 1], out.positions[i + 2]);
             out.normals[i] = out.normals[i + 1] = out.normals[i + 2] = n;
         }
     }
+}
 
-    // Step 6: uvs, when the scene stores them (zeros for primitives that have none).
-    const int uvAccessor = attribute("TEXCOORD_0");
+// Step 6: uvs, when the scene stores them (zeros for primitives that have none).
+void readUvs(const PrimitiveSource& src, const std::vector<uint32_t>& vertexSource, const Material* material,
+             PrimitiveData& out, Warnings& warnings)
+{
+    const int uvAccessor = attributeAccessor(src.prim, "TEXCOORD_0");
     const bool textured = material != nullptr && hasAnyTexture(*material);
-    if (needs.uv) {
-        if (uvAccessor >= 0) {
-            out.uvs = gather<glm::vec2>(readAttribute(uvAccessor, TINYGLTF_TYPE_VEC2, "TEXCOORD_0"), vertexSource);
-            for (const glm::vec2& uv : out.uvs)
-                if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
-                    fail(file, label + " TEXCOORD_0 has a non-finite value");
-        } else {
-            out.uvs.assign(out.positions.size(), glm::vec2(0.0f));
-            if (textured)
-                warnings.add(label + " has a textured material but no TEXCOORD_0: uvs set to zero");
-        }
+    if (uvAccessor >= 0) {
+        out.uvs = gather<glm::vec2>(readAttribute(src, uvAccessor, TINYGLTF_TYPE_VEC2, "TEXCOORD_0"), vertexSource);
+        for (const glm::vec2& uv : out.uvs)
+            if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
+                fail(src.file, src.label + " TEXCOORD_0 has a non-finite value");
+    } else {
+        out.uvs.assign(out.positions.size(), glm::vec2(0.0f));
+        if (textured)
+            warnings.add(src.label + " has a textured material but no TEXCOORD_0: uvs set to zero");
     }
+}
 
-    // Step 7: tangents, when the scene stores them: given, or generated from the uvs.
-    if (needs.tangent) {
-        const int tangentAccessor = attribute("TANGENT");
-        if (tangentAccessor >= 0) {
-            out.tangents =
-                gather<glm::vec4>(readAttribute(tangentAccessor, TINYGLTF_TYPE_VEC4, "TANGENT"), vertexSource);
-            for (size_t v = 0; v < out.tangents.size(); ++v) {
-                glm::vec3 t(out.tangents[v]);
-                const float len = glm::length(t);
-                t = len > 1e-12f && std::isfinite(len) ? t / len : gltf::anyPerpendicular(out.normals[v]);
-                out.tangents[v] = glm::vec4(t, out.tangents[v].w < 0.0f ? -1.0f : 1.0f);
-            }
-        } else {
-            out.tangents = gltf::generateTangents(out.positions, out.normals, out.uvs, out.triangles);
-            if (material != nullptr && material->normalTexture != kNone)
-                warnings.add(label + " has a normal map but no TANGENT: generated tangents from TEXCOORD_0");
+// Step 7: tangents, when the scene stores them: given, or generated from the uvs.
+void readTangents(const PrimitiveSource& src, const std::vector<uint32_t>& vertexSource, const Material* material,
+                  PrimitiveData& out, Warnings& warnings)
+{
+    const int tangentAccessor = attributeAccessor(src.prim, "TANGENT");
+    if (tangentAccessor >= 0) {
+        out.tangents =
+            gather<glm::vec4>(readAttribute(src, tangentAccessor, TINYGLTF_TYPE_VEC4, "TANGENT"), vertexSource);
+        for (size_t v = 0; v < out.tangents.size(); ++v) {
+            glm::vec3 t(out.tangents[v]);
+            const float len = glm::length(t);
+            t = len > 1e-12f && std::isfinite(len) ? t / len : gltf::anyPerpendicular(out.normals[v]);
+            out.tangents[v] = glm::vec4(t, out.tangents[v].w < 0.0f ? -1.0f : 1.0f);
         }
+    } else {
+        out.tangents = gltf::generateTangents(out.positions, out.normals, out.uvs, out.triangles);
+        if (material != nullptr && material->normalTexture != kNone)
+            warnings.add(src.label + " has a normal map but no TANGENT: generated tangents from TEXCOORD_0");
     }
+}
 
-    // Step 8: everything else is not used by the renderer.
+// Step 8: everything else is not used by the renderer (one warning per attribute kind).
+void warnIgnoredAttributes(const tinygltf::Primitive& prim, Warnings& warnings)
+{
     for (const auto& [name, accessor] : prim.attributes) {
         (void)accessor;
         if (name == "POSITION" || name == "NORMAL" || name == "TEXCOORD_0" || name == "TANGENT")
@@ -770,6 +804,34 @@ std::optional<PrimitiveData> readPrimitive(const tinygltf::Model& model, const t
             kind += "n";
         warnings.once("attribute " + kind, "ignores vertex attribute " + kind + " (not used by the renderer)");
     }
+}
+
+// One triangle primitive's streams, or nothing (with a warning) when it has no triangles.
+std::optional<PrimitiveData> readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+                                           const std::string& label, const Material* material, StreamNeeds needs,
+                                           const std::string& file, Warnings& warnings)
+{
+    PrimitiveSource src{model, prim, label, file};
+    const gltf::FloatArray positions = readPositions(src);
+    src.vertexCount = positions.count;
+    const std::vector<uint32_t> indices = readIndices(src);
+    std::vector<uint32_t> triangles = readTriangles(src, indices, warnings);
+    if (triangles.empty()) {
+        warnings.add(label + " has no triangles: skipped");
+        return std::nullopt;
+    }
+    const bool hasNormals = attributeAccessor(prim, "NORMAL") >= 0;
+    const std::vector<uint32_t> vertexSource = selectVertices(hasNormals, src.vertexCount, triangles);
+
+    PrimitiveData out;
+    out.positions = gather<glm::vec3>(positions, vertexSource);
+    out.triangles = std::move(triangles);
+    readNormals(src, vertexSource, out, warnings);
+    if (needs.uv)
+        readUvs(src, vertexSource, material, out, warnings);
+    if (needs.tangent)
+        readTangents(src, vertexSource, material, out, warnings);
+    warnIgnoredAttributes(prim, warnings);
     return out;
 }
 
