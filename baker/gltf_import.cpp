@@ -927,6 +927,201 @@ std::optional<AnimationChannel> convertChannel(const tinygltf::Model& model, con
     return out;
 }
 
+// ---- Import steps ------------------------------------------------------------------
+
+// The glTF meshes the scene's nodes instance, in source order.
+struct MeshSelection {
+    std::vector<int32_t> meshIndex; // glTF mesh -> lfd mesh or kNone
+    std::vector<size_t> meshSources; // lfd mesh -> glTF mesh
+};
+
+// Step 2: the meshes the nodes of the scene (parents first) instance.
+MeshSelection selectMeshes(const tinygltf::Model& model, const NodeOrder& order, const std::string& file)
+{
+    MeshSelection selection;
+    std::vector<int32_t>& meshIndex = selection.meshIndex;
+    meshIndex.assign(model.meshes.size(), kNone);
+    for (size_t source : order.sourceOf) {
+        const int mesh = model.nodes[source].mesh;
+        if (mesh >= 0 && size_t(mesh) >= model.meshes.size())
+            fail(file, nodeLabel(model, source) + " refers to missing mesh " + std::to_string(mesh));
+        if (mesh >= 0)
+            meshIndex[size_t(mesh)] = 0;
+    }
+    for (size_t m = 0; m < model.meshes.size(); ++m)
+        if (meshIndex[m] != kNone) {
+            meshIndex[m] = int32_t(selection.meshSources.size());
+            selection.meshSources.push_back(m);
+        }
+    return selection;
+}
+
+// Whether a primitive is made of triangles (list, strip or fan).
+bool isTriangles(const tinygltf::Primitive& p)
+{
+    return p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
+           p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
+}
+
+// Step 3a: the materials used by triangle primitives of the selected meshes (0 = used, else kNone).
+std::vector<int32_t> usedMaterials(const tinygltf::Model& model, const std::vector<size_t>& meshSources,
+                                   const std::string& file)
+{
+    std::vector<int32_t> materialIndex(model.materials.size(), kNone);
+    for (size_t m : meshSources)
+        for (const tinygltf::Primitive& p : model.meshes[m].primitives) {
+            if (p.material >= 0 && size_t(p.material) >= model.materials.size())
+                fail(file, meshLabel(model, m) + " refers to missing material " + std::to_string(p.material));
+            if (p.material >= 0 && isTriangles(p))
+                materialIndex[size_t(p.material)] = 0;
+        }
+    return materialIndex;
+}
+
+// Step 3b: the used materials converted into the scene; `materialIndex` becomes glTF -> lfd material.
+void convertMaterials(const tinygltf::Model& model, std::vector<int32_t>& materialIndex, TextureTable& textures,
+                      const std::string& file, Scene& scene)
+{
+    for (size_t m = 0; m < model.materials.size(); ++m)
+        if (materialIndex[m] != kNone) {
+            materialIndex[m] = int32_t(scene.materials.size());
+            scene.materials.push_back(convertMaterial(model, m, textures, file));
+        }
+}
+
+// Step 4: stored streams - uvs only if some material is textured, tangents only if
+// some material has a normal map.
+StreamNeeds streamNeeds(const std::vector<Material>& materials)
+{
+    StreamNeeds needs;
+    for (const Material& m : materials) {
+        needs.uv = needs.uv || hasAnyTexture(m);
+        needs.tangent = needs.tangent || m.normalTexture != kNone;
+    }
+    return needs;
+}
+
+// False (with a warning) for points and lines; fails on an invalid mode.
+bool checkTriangleMode(const tinygltf::Primitive& prim, const std::string& label, const std::string& file,
+                       Warnings& warnings)
+{
+    if (isTriangles(prim))
+        return true;
+    static const char* const kModeNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
+    if (prim.mode < 0 || prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
+        fail(file, label + " has invalid mode " + std::to_string(prim.mode));
+    warnings.add(label + " is " + kModeNames[prim.mode] + ", not triangles: skipped");
+    return false;
+}
+
+// Appends a primitive to the scene-wide streams; indices become absolute.
+void appendPrimitive(const PrimitiveData& data, int32_t material, const std::string& file, Scene& scene)
+{
+    VertexStreams& vertices = scene.vertices;
+    const size_t base = vertices.positions.size();
+    if (base + data.positions.size() > UINT32_MAX || scene.indices.size() + data.triangles.size() > UINT32_MAX)
+        fail(file, "scene has more than 2^32 vertices or indices");
+    Primitive out;
+    out.firstIndex = uint32_t(scene.indices.size());
+    out.indexCount = uint32_t(data.triangles.size());
+    out.material = material;
+    for (uint32_t i : data.triangles)
+        scene.indices.push_back(uint32_t(base) + i);
+    vertices.positions.insert(vertices.positions.end(), data.positions.begin(), data.positions.end());
+    vertices.normals.insert(vertices.normals.end(), data.normals.begin(), data.normals.end());
+    vertices.uvs.insert(vertices.uvs.end(), data.uvs.begin(), data.uvs.end());
+    vertices.tangents.insert(vertices.tangents.end(), data.tangents.begin(), data.tangents.end());
+    scene.primitives.push_back(out);
+}
+
+// Step 5 for one glTF mesh: one lfd::Mesh, its triangle primitives contiguous.
+void importMesh(const tinygltf::Model& model, size_t m, const std::vector<int32_t>& materialIndex,
+                StreamNeeds needs, const std::string& file, Warnings& warnings, Scene& scene)
+{
+    const tinygltf::Mesh& gmesh = model.meshes[m];
+    Mesh mesh;
+    mesh.name = gmesh.name.empty() ? "mesh " + std::to_string(m) : gmesh.name;
+    mesh.firstPrimitive = uint32_t(scene.primitives.size());
+    for (size_t p = 0; p < gmesh.primitives.size(); ++p) {
+        const tinygltf::Primitive& prim = gmesh.primitives[p];
+        const std::string label = meshLabel(model, m) + " primitive " + std::to_string(p);
+        if (!checkTriangleMode(prim, label, file, warnings))
+            continue;
+        if (!prim.targets.empty())
+            warnings.once("morph " + std::to_string(m),
+                          meshLabel(model, m) + " has morph targets: ignored (base pose used)");
+        const int32_t material = prim.material >= 0 ? materialIndex[size_t(prim.material)] : kNone;
+        const std::optional<PrimitiveData> data =
+            readPrimitive(model, prim, label, material != kNone ? &scene.materials[size_t(material)] : nullptr,
+                          needs, file, warnings);
+        if (data)
+            appendPrimitive(*data, material, file, scene);
+    }
+    mesh.primitiveCount = uint32_t(scene.primitives.size()) - mesh.firstPrimitive;
+    scene.meshes.push_back(mesh);
+}
+
+// Step 6: nodes (parents first) and their meshes.
+void importNodes(const tinygltf::Model& model, const NodeOrder& order, const std::vector<int32_t>& meshIndex,
+                 const std::string& file, Warnings& warnings, Scene& scene)
+{
+    for (size_t n = 0; n < order.sourceOf.size(); ++n) {
+        const size_t source = order.sourceOf[n];
+        Node node = convertNode(model, source, file);
+        node.parent = order.parentOf[n];
+        const int mesh = model.nodes[source].mesh;
+        node.mesh = mesh >= 0 ? meshIndex[size_t(mesh)] : kNone;
+        if (model.nodes[source].skin >= 0)
+            warnings.once("skin",
+                          nodeLabel(model, source) + " is skinned: skinning ignored, mesh used in bind pose");
+        scene.nodes.push_back(std::move(node));
+    }
+}
+
+// Step 7: rigid node animation (animations left without a channel are dropped).
+void importAnimations(const tinygltf::Model& model, const NodeOrder& order, const std::string& file,
+                      Warnings& warnings, const Log& log, Scene& scene)
+{
+    for (size_t a = 0; a < model.animations.size(); ++a) {
+        const tinygltf::Animation& anim = model.animations[a];
+        Animation out;
+        out.name = anim.name.empty() ? "animation " + std::to_string(a) : anim.name;
+        const std::string label = "animation " + (anim.name.empty() ? std::to_string(a) : quoted(anim.name));
+        for (size_t c = 0; c < anim.channels.size(); ++c) {
+            if (std::optional<AnimationChannel> channel =
+                    convertChannel(model, anim, anim.channels[c], label, c, order, file, warnings, log))
+                out.channels.push_back(std::move(*channel));
+        }
+        if (!out.channels.empty())
+            scene.animations.push_back(std::move(out));
+    }
+}
+
+// Step 8: texture list parallel to the sources (sizes are filled by the driver).
+void addTextures(TextureTable& textures, ImportedScene& result)
+{
+    result.textureSources = std::move(textures.sources());
+    for (const TextureSource& source : result.textureSources) {
+        Texture texture;
+        texture.name = source.name;
+        texture.srgb = source.srgb;
+        result.scene.textures.push_back(std::move(texture));
+    }
+}
+
+// The one-line "import: N meshes, ..." summary.
+void logImportSummary(const Scene& scene, const Log& log)
+{
+    size_t channels = 0;
+    for (const Animation& a : scene.animations)
+        channels += a.channels.size();
+    log.info("import: " + std::to_string(scene.meshes.size()) + " meshes, " + std::to_string(scene.primitives.size()) +
+             " primitives, " + std::to_string(scene.triangleCount()) + " triangles, " +
+             std::to_string(scene.vertices.size()) + " vertices, " + std::to_string(scene.textures.size()) +
+             " textures, " + std::to_string(scene.nodes.size()) + " nodes, " + std::to_string(channels) +
+             " animation channels");
+}
+
 } // namespace
 
 ImportedScene importGltf(const std::filesystem::path& path, const Log& log)
@@ -941,147 +1136,27 @@ ImportedScene importGltf(const std::filesystem::path& path, const Log& log)
     const tinygltf::Model model = loadModel(path, file, capture, warnings);
     checkExtensions(model, file, warnings);
 
-    // Step 2: the nodes of the scene, parents first; the meshes they instance.
     const NodeOrder order = orderNodes(model, file);
-    std::vector<int32_t> meshIndex(model.meshes.size(), kNone); // glTF mesh -> lfd mesh
-    for (size_t source : order.sourceOf) {
-        const int mesh = model.nodes[source].mesh;
-        if (mesh >= 0 && size_t(mesh) >= model.meshes.size())
-            fail(file, nodeLabel(model, source) + " refers to missing mesh " + std::to_string(mesh));
-        if (mesh >= 0)
-            meshIndex[size_t(mesh)] = 0;
-    }
-    std::vector<size_t> meshSources;
-    for (size_t m = 0; m < model.meshes.size(); ++m)
-        if (meshIndex[m] != kNone) {
-            meshIndex[m] = int32_t(meshSources.size());
-            meshSources.push_back(m);
-        }
+    const MeshSelection meshes = selectMeshes(model, order, file);
 
     // Step 3: materials used by triangle primitives of those meshes, and their textures.
-    auto isTriangles = [](const tinygltf::Primitive& p) {
-        return p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == TINYGLTF_MODE_TRIANGLE_STRIP ||
-               p.mode == TINYGLTF_MODE_TRIANGLE_FAN;
-    };
-    std::vector<int32_t> materialIndex(model.materials.size(), kNone);
-    for (size_t m : meshSources)
-        for (const tinygltf::Primitive& p : model.meshes[m].primitives) {
-            if (p.material >= 0 && size_t(p.material) >= model.materials.size())
-                fail(file, meshLabel(model, m) + " refers to missing material " + std::to_string(p.material));
-            if (p.material >= 0 && isTriangles(p))
-                materialIndex[size_t(p.material)] = 0;
-        }
+    std::vector<int32_t> materialIndex = usedMaterials(model, meshes.meshSources, file);
     TextureTable textures(model, path, file, capture, warnings);
-    for (size_t m = 0; m < model.materials.size(); ++m)
-        if (materialIndex[m] != kNone) {
-            materialIndex[m] = int32_t(scene.materials.size());
-            scene.materials.push_back(convertMaterial(model, m, textures, file));
-        }
+    convertMaterials(model, materialIndex, textures, file, scene);
 
-    // Step 4: stored streams - uvs only if some material is textured, tangents only if
-    // some material has a normal map.
-    StreamNeeds needs;
-    for (const Material& m : scene.materials) {
-        needs.uv = needs.uv || hasAnyTexture(m);
-        needs.tangent = needs.tangent || m.normalTexture != kNone;
-    }
-
+    const StreamNeeds needs = streamNeeds(scene.materials);
     // Step 5: geometry, one lfd::Mesh per instanced glTF mesh, primitives contiguous.
-    VertexStreams& vertices = scene.vertices;
-    for (size_t m : meshSources) {
-        const tinygltf::Mesh& gmesh = model.meshes[m];
-        Mesh mesh;
-        mesh.name = gmesh.name.empty() ? "mesh " + std::to_string(m) : gmesh.name;
-        mesh.firstPrimitive = uint32_t(scene.primitives.size());
-        for (size_t p = 0; p < gmesh.primitives.size(); ++p) {
-            const tinygltf::Primitive& prim = gmesh.primitives[p];
-            const std::string label = meshLabel(model, m) + " primitive " + std::to_string(p);
-            if (!isTriangles(prim)) {
-                static const char* const kModeNames[] = {"POINTS", "LINES", "LINE_LOOP", "LINE_STRIP"};
-                if (prim.mode < 0 || prim.mode > TINYGLTF_MODE_TRIANGLE_FAN)
-                    fail(file, label + " has invalid mode " + std::to_string(prim.mode));
-                warnings.add(label + " is " + kModeNames[prim.mode] + ", not triangles: skipped");
-                continue;
-            }
-            if (!prim.targets.empty())
-                warnings.once("morph " + std::to_string(m),
-                              meshLabel(model, m) + " has morph targets: ignored (base pose used)");
-            const int32_t material = prim.material >= 0 ? materialIndex[size_t(prim.material)] : kNone;
-            std::optional<PrimitiveData> data =
-                readPrimitive(model, prim, label, material != kNone ? &scene.materials[size_t(material)] : nullptr,
-                              needs, file, warnings);
-            if (!data)
-                continue;
-
-            // Append to the scene-wide streams; indices become absolute.
-            const size_t base = vertices.positions.size();
-            if (base + data->positions.size() > UINT32_MAX ||
-                scene.indices.size() + data->triangles.size() > UINT32_MAX)
-                fail(file, "scene has more than 2^32 vertices or indices");
-            Primitive out;
-            out.firstIndex = uint32_t(scene.indices.size());
-            out.indexCount = uint32_t(data->triangles.size());
-            out.material = material;
-            for (uint32_t i : data->triangles)
-                scene.indices.push_back(uint32_t(base) + i);
-            vertices.positions.insert(vertices.positions.end(), data->positions.begin(), data->positions.end());
-            vertices.normals.insert(vertices.normals.end(), data->normals.begin(), data->normals.end());
-            vertices.uvs.insert(vertices.uvs.end(), data->uvs.begin(), data->uvs.end());
-            vertices.tangents.insert(vertices.tangents.end(), data->tangents.begin(), data->tangents.end());
-            scene.primitives.push_back(out);
-        }
-        mesh.primitiveCount = uint32_t(scene.primitives.size()) - mesh.firstPrimitive;
-        scene.meshes.push_back(mesh);
-    }
+    for (size_t m : meshes.meshSources)
+        importMesh(model, m, materialIndex, needs, file, warnings, scene);
     if (scene.indices.empty())
         fail(file, "contains no triangles to import");
 
-    // Step 6: nodes (parents first) and their meshes.
-    for (size_t n = 0; n < order.sourceOf.size(); ++n) {
-        const size_t source = order.sourceOf[n];
-        Node node = convertNode(model, source, file);
-        node.parent = order.parentOf[n];
-        const int mesh = model.nodes[source].mesh;
-        node.mesh = mesh >= 0 ? meshIndex[size_t(mesh)] : kNone;
-        if (model.nodes[source].skin >= 0)
-            warnings.once("skin", nodeLabel(model, source) + " is skinned: skinning ignored, mesh used in bind pose");
-        scene.nodes.push_back(std::move(node));
-    }
-
-    // Step 7: rigid node animation.
-    for (size_t a = 0; a < model.animations.size(); ++a) {
-        const tinygltf::Animation& anim = model.animations[a];
-        Animation out;
-        out.name = anim.name.empty() ? "animation " + std::to_string(a) : anim.name;
-        const std::string label = "animation " + (anim.name.empty() ? std::to_string(a) : quoted(anim.name));
-        for (size_t c = 0; c < anim.channels.size(); ++c) {
-            if (std::optional<AnimationChannel> channel =
-                    convertChannel(model, anim, anim.channels[c], label, c, order, file, warnings, log))
-                out.channels.push_back(std::move(*channel));
-        }
-        if (!out.channels.empty())
-            scene.animations.push_back(std::move(out));
-    }
-
-    // Step 8: texture list parallel to the sources (sizes are filled by the driver).
-    result.textureSources = std::move(textures.sources());
-    for (const TextureSource& source : result.textureSources) {
-        Texture texture;
-        texture.name = source.name;
-        texture.srgb = source.srgb;
-        scene.textures.push_back(std::move(texture));
-    }
+    importNodes(model, order, meshes.meshIndex, file, warnings, scene);
+    importAnimations(model, order, file, warnings, log, scene);
+    addTextures(textures, result);
     scene.triangleStats.clear();
     result.sourceTriangles = scene.triangleCount();
-
-    size_t channels = 0;
-    for (const Animation& a : scene.animations)
-        channels += a.channels.size();
-    log.info("import: " + std::to_string(scene.meshes.size()) + " meshes, " + std::to_string(scene.primitives.size()) +
-             " primitives, " + std::to_string(scene.triangleCount()) + " triangles, " +
-             std::to_string(vertices.size()) + " vertices, " + std::to_string(scene.textures.size()) +
-             " textures, " + std::to_string(scene.nodes.size()) + " nodes, " + std::to_string(channels) +
-             " animation channels");
+    logImportSummary(scene, log);
     return result;
 }
 
