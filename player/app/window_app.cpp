@@ -363,204 +363,271 @@ GLFWwindow* createCompanion(const WindowSetup& setup, Input& input)
     return companion;
 }
 
-// The frame loop shared by scene and quilt input.
-int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& options, gl::GlErrorWatch& glErrors)
+// What the frame loop keeps across frames: the cycles, what is shown, the clock, the counters.
+struct LoopState {
+    std::vector<std::string> renderers; // R cycles them (empty for quilt input)
+    size_t rendererIndex = 0;
+    std::vector<std::string> reconstructions; // C cycles them
+    size_t reconstructionIndex = 0;
+    Shown shown = Shown::Eia;
+    double viewerPos = 0.0;
+    PreviewMode preview = PreviewMode::Off;
+    // Animation clock: wall time minus paused time, or k / fps for a fixed frame count.
+    double startWall = 0.0, animationTime = 0.0, lastWall = 0.0, lastTitle = 0.0, lastPrint = -1e300;
+    uint32_t frame = 0, fullFrames = 0, previewFrames = 0;
+    int status = 0;
+};
+
+// The GL objects outputs are shown through.
+struct ShowTargets {
+    BlitSource quilt, viewer;
+    gl::Framebuffer layerFbo = gl::createFramebuffer(), eiaFbo = gl::createFramebuffer();
+};
+
+// Frame times per quality and frame pacing, each since its last readout.
+struct Readouts {
+    StageReadout full, preview;
+    PacingReadout pacing;
+};
+
+// The loop's starting state from the options: renderer and reconstruction cycles, output, viewer, preview.
+LoopState initialLoopState(PlayerSession& session, const PlayOptions& options)
 {
-    GLFWwindow* window = setup.context->window();
     const DisplayProfile& display = session.displayProfile();
+    LoopState state;
     // R cycles the interactive renderers (windowRendererCycle), each rebuilt by the session
     // with the user's renderer options.
-    const std::vector<std::string> renderers =
-        session.quiltInput() ? std::vector<std::string>{} : windowRendererCycle(options.renderer);
-    size_t rendererIndex = renderers.empty() ? 0 : renderers.size() - 1; // the cycle ends with the current one
-    const std::vector<std::string> reconstructions = reconstructionNames(); // C cycles them
-    size_t reconstructionIndex = size_t(parseReconstruction(session.options().reconstruction));
-    Shown shown = options.show == "quilt"    ? Shown::Quilt
+    state.renderers = session.quiltInput() ? std::vector<std::string>{} : windowRendererCycle(options.renderer);
+    // The cycle ends with the current one.
+    state.rendererIndex = state.renderers.empty() ? 0 : state.renderers.size() - 1;
+    state.reconstructions = reconstructionNames();
+    state.reconstructionIndex = size_t(parseReconstruction(session.options().reconstruction));
+    state.shown = options.show == "quilt"    ? Shown::Quilt
                   : options.show == "view"   ? Shown::SingleView
                   : options.show == "viewer" ? Shown::Viewer
                                              : Shown::Eia;
-    double viewerPos = options.viewerPosition >= 0.0 ? options.viewerPosition : 0.5 * display.viewCount;
-    const PreviewMode preview = session.quiltInput() ? PreviewMode::Off : options.preview.value_or(PreviewMode::Auto);
+    state.viewerPos = options.viewerPosition >= 0.0 ? options.viewerPosition : 0.5 * display.viewCount;
+    state.preview = session.quiltInput() ? PreviewMode::Off : options.preview.value_or(PreviewMode::Auto);
+    return state;
+}
+
+// The camera controls, scaled to the scene (none to steer for quilt input).
+CameraControls makeCameraControls(PlayerSession& session, const PlayOptions& options)
+{
     const double sceneRadiusMm =
         session.quiltInput() ? 0.0 : session.pipeline().framing().sceneRadius * session.pipeline().framing().mmPerUnit;
-    CameraControls controls(options.controls, sceneRadiusMm, display.viewConeDeg);
+    return CameraControls(options.controls, sceneRadiusMm, session.displayProfile().viewConeDeg);
+}
 
-    Input input;
-    attachInput(window, input);
-    if (setup.fullscreen) // a cursor over the lenses shows in every view; drags still work
-        glfwSetInputMode(window, GLFW_CURSOR, GLFW_CURSOR_HIDDEN);
-    GLFWwindow* companion = createCompanion(setup, input);
-
-    BlitSource quilt, viewer;
-    gl::Framebuffer layerFbo = gl::createFramebuffer(), eiaFbo = gl::createFramebuffer();
-
-    // Animation clock: wall time minus paused time, or k / fps for a fixed frame count.
-    const double startWall = glfwGetTime();
-    double animationTime = 0.0, lastWall = startWall, lastTitle = startWall, lastPrint = -1e300;
-    StageReadout fullReadout, previewReadout;
-    PacingReadout pacing;
-    uint32_t frame = 0, fullFrames = 0, previewFrames = 0;
-    int status = 0;
-    while (!glfwWindowShouldClose(window) && !(companion && glfwWindowShouldClose(companion))) {
-        glfwPollEvents();
-        int windowW = 0, windowH = 0;
-        glfwGetFramebufferSize(window, &windowW, &windowH);
-
-        // Step 1: apply input.
-        if (input.nextRenderer && renderers.size() > 1) {
-            const size_t next = (rendererIndex + 1) % renderers.size();
-            try {
-                session.switchRenderer(renderers[next]);
-                rendererIndex = next;
-            } catch (const std::exception& e) {
-                std::fprintf(stderr, "lfd-play: cannot switch to %s: %s\n", renderers[next].c_str(), e.what());
-            }
+// Step 1a: the keys that switch renderer, reconstruction, output and viewer position.
+void applyKeyInput(Input& input, LoopState& state, PlayerSession& session, const DisplayProfile& display)
+{
+    if (input.nextRenderer && state.renderers.size() > 1) {
+        const size_t next = (state.rendererIndex + 1) % state.renderers.size();
+        try {
+            session.switchRenderer(state.renderers[next]);
+            state.rendererIndex = next;
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "lfd-play: cannot switch to %s: %s\n", state.renderers[next].c_str(), e.what());
         }
-        if (input.nextReconstruction) {
-            reconstructionIndex = (reconstructionIndex + 1) % reconstructions.size();
-            session.setReconstruction(parseReconstruction(reconstructions[reconstructionIndex]));
-        }
-        if (input.nextOutput)
-            shown = Shown((int(shown) + 1) % 4);
-        viewerPos = std::clamp(viewerPos + input.viewerStep, 0.5, double(display.viewCount) - 0.5);
-        input.nextRenderer = input.nextReconstruction = input.nextOutput = false;
-        input.viewerStep = 0;
-        const double wall = glfwGetTime();
-        // Pan follows the cursor: window pixels to screen mm at the scale the EIA is shown.
-        const double shownScale = setup.fullscreen ? 1.0
-                                                   : std::min(double(std::max(windowW, 1)) / display.panelWidth,
-                                                              double(std::max(windowH, 1)) / display.panelHeight);
-        if (applyCameraInput(input, controls, display.screenWidthMm / (display.panelWidth * shownScale),
-                             turntableAngle(animationTime, options.turntablePeriod)))
-            controls.noteInput(wall);
-        session.setViewControls(controls.state());
-
-        // Step 2: render the frame (views + EIA), at preview quality while the camera moves.
-        if (options.framesGiven)
-            animationTime = double(frame) / options.fps;
-        else if (!input.paused)
-            animationTime += wall - lastWall;
-        lastWall = wall;
-        const bool previewNow = preview == PreviewMode::Always ||
-                                (preview == PreviewMode::Auto && controls.interacting(wall, options.previewHoldSeconds));
-        if (TextureStreamer* streamer = session.streamer(); streamer && !streamer->resident()) {
-            // Streaming: the first frame waits for the geometry and the coarsest mips only;
-            // after that a bounded amount per frame keeps the window responsive while the
-            // textures sharpen. Runs with --frames (screenshots, tests) wait for it all so
-            // their output does not depend on upload speed.
-            if (options.framesGiven)
-                streamer->untilResident();
-            else if (!streamer->renderable())
-                streamer->untilRenderable();
-            else
-                streamer->step(kStreamBytesPerFrame);
-        }
-        session.renderFrame(animationTime, previewNow ? FrameQuality::Preview : FrameQuality::Full);
-        glErrors.check("frame " + std::to_string(previewFrames + fullFrames));
-        ++(previewNow ? previewFrames : fullFrames);
-
-        // Step 3: show the chosen output: the EIA 1:1 fullscreen, anything scaled to fit in a window.
-        const DisplayProfile& views = session.profile();
-        const ViewTargets& targets = session.targets();
-        glNamedFramebufferTexture(eiaFbo, GL_COLOR_ATTACHMENT0, session.eia().texture(), 0);
-        const uint32_t single = std::min(uint32_t(viewerPos * views.viewCount / display.viewCount), views.viewCount - 1);
-        if (windowW > 0 && windowH > 0) {
-            switch (shown) {
-            case Shown::Eia:
-                if (setup.fullscreen)
-                    blitOneToOne(eiaFbo, display.panelWidth, display.panelHeight, windowW, windowH, setup.placement);
-                else
-                    blitToWindow(eiaFbo, display.panelWidth, display.panelHeight, windowW, windowH);
-                break;
-            case Shown::SingleView:
-                glNamedFramebufferTextureLayer(layerFbo, GL_COLOR_ATTACHMENT0, targets.colorArray(), 0, GLint(single));
-                blitToWindow(layerFbo, targets.width(), targets.height(), windowW, windowH);
-                break;
-            case Shown::Quilt: {
-                // GL rows run bottom-up, so view 0 in the bottom-left tile is tile (0, 0).
-                const QuiltLayout layout = chooseQuiltLayout(views);
-                quilt.ensure(layout.width(), layout.height());
-                for (uint32_t v = 0; v < views.viewCount; ++v)
-                    glCopyImageSubData(targets.colorArray(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(v), quilt.texture,
-                                       GL_TEXTURE_2D, 0, GLint((v % layout.cols) * layout.tileWidth),
-                                       GLint((v / layout.cols) * layout.tileHeight), 0, GLsizei(targets.width()),
-                                       GLsizei(targets.height()), 1);
-                blitToWindow(quilt.fbo, quilt.width, quilt.height, windowW, windowH);
-                break;
-            }
-            case Shown::Viewer: {
-                // CPU model of one eye behind the lenticular sheet (image order -> GL order).
-                const double t = viewerPos * views.viewCount / display.viewCount;
-                const std::vector<uint8_t> seen = simulateViewer(views, session.eia().read(), t);
-                viewer.ensure(views.viewWidth, views.viewHeight);
-                const size_t row = size_t(views.viewWidth) * 4;
-                std::vector<uint8_t> flipped(seen.size());
-                for (uint32_t y = 0; y < views.viewHeight; ++y)
-                    std::memcpy(&flipped[size_t(y) * row], &seen[size_t(views.viewHeight - 1 - y) * row], row);
-                glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-                glTextureSubImage2D(viewer.texture, 0, 0, 0, GLsizei(views.viewWidth), GLsizei(views.viewHeight),
-                                    GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
-                blitToWindow(viewer.fbo, viewer.width, viewer.height, windowW, windowH);
-                break;
-            }
-            }
-        }
-        ++frame;
-        const bool last = options.framesGiven && frame >= options.frames;
-        if (last && !options.screenshot.empty()) {
-            try {
-                saveScreenshot(options.screenshot, windowW, windowH);
-            } catch (const std::exception& e) {
-                std::fprintf(stderr, "lfd-play: %s\n", e.what());
-                status = 1;
-            }
-        }
-        glfwSwapBuffers(window);
-        pacing.swapped(glfwGetTime());
-
-        // Step 4: readout - title (and companion title), and a stdout line every 2 s fullscreen.
-        if (wall - lastTitle >= 0.5 || last) {
-            lastTitle = wall;
-            std::string title = "lfd-play - " + session.packName() + " - " + session.rendererName() + " - " +
-                                reconstructions[reconstructionIndex] + " - " + shownName(shown);
-            if (shown == Shown::SingleView || shown == Shown::Viewer) {
-                char where[48];
-                std::snprintf(where, sizeof(where), " (viewer %.1f)", viewerPos);
-                title += where;
-            }
-            if (input.paused)
-                title += " - paused";
-            if (const TextureStreamer* streamer = session.streamer(); streamer && !streamer->resident()) {
-                char loading[48];
-                std::snprintf(loading, sizeof(loading), " - loading %.0f%%",
-                              100.0 * double(streamer->uploadedBytes()) / double(std::max<uint64_t>(streamer->totalBytes(), 1)));
-                title += loading;
-            }
-            title += session.lastQuality() == FrameQuality::Preview ? " - preview" : " - full";
-            if (session.quiltInput())
-                title += " - " + session.quilts().currentFile().filename().string();
-            std::string readout = pacing.update();
-            const std::string full = fullReadout.update(session.timer());
-            const std::string previewText = previewReadout.update(session.previewTimer());
-            if (!full.empty())
-                readout += " | full: " + full;
-            if (!previewText.empty())
-                readout += " | preview: " + previewText;
-            if (!session.quiltInput())
-                title += " | " + controlsText(controls.state());
-            title += " | " + readout;
-            glfwSetWindowTitle(window, title.c_str());
-            if (companion)
-                glfwSetWindowTitle(companion, readout.c_str());
-            if (setup.fullscreen && (wall - lastPrint >= 2.0 || last)) {
-                lastPrint = wall;
-                std::printf("lfd-play: %s\n", readout.c_str());
-                std::fflush(stdout);
-            }
-        }
-        if (last)
-            break;
     }
+    if (input.nextReconstruction) {
+        state.reconstructionIndex = (state.reconstructionIndex + 1) % state.reconstructions.size();
+        session.setReconstruction(parseReconstruction(state.reconstructions[state.reconstructionIndex]));
+    }
+    if (input.nextOutput)
+        state.shown = Shown((int(state.shown) + 1) % 4);
+    state.viewerPos = std::clamp(state.viewerPos + input.viewerStep, 0.5, double(display.viewCount) - 0.5);
+    input.nextRenderer = input.nextReconstruction = input.nextOutput = false;
+    input.viewerStep = 0;
+}
+
+// Step 1b: camera input into the controls, and the controls into the session.
+void steerCamera(Input& input, CameraControls& controls, PlayerSession& session, const WindowSetup& setup,
+                 const PlayOptions& options, const LoopState& state, int windowW, int windowH, double wall)
+{
+    const DisplayProfile& display = session.displayProfile();
+    // Pan follows the cursor: window pixels to screen mm at the scale the EIA is shown.
+    const double shownScale = setup.fullscreen ? 1.0
+                                               : std::min(double(std::max(windowW, 1)) / display.panelWidth,
+                                                          double(std::max(windowH, 1)) / display.panelHeight);
+    if (applyCameraInput(input, controls, display.screenWidthMm / (display.panelWidth * shownScale),
+                         turntableAngle(state.animationTime, options.turntablePeriod)))
+        controls.noteInput(wall);
+    session.setViewControls(controls.state());
+}
+
+// Texture streaming before a frame renders (nothing once every texture is resident).
+void streamTextures(PlayerSession& session, const PlayOptions& options)
+{
+    if (TextureStreamer* streamer = session.streamer(); streamer && !streamer->resident()) {
+        // Streaming: the first frame waits for the geometry and the coarsest mips only;
+        // after that a bounded amount per frame keeps the window responsive while the
+        // textures sharpen. Runs with --frames (screenshots, tests) wait for it all so
+        // their output does not depend on upload speed.
+        if (options.framesGiven)
+            streamer->untilResident();
+        else if (!streamer->renderable())
+            streamer->untilRenderable();
+        else
+            streamer->step(kStreamBytesPerFrame);
+    }
+}
+
+// Step 2: render the frame (views + EIA), at preview quality while the camera moves.
+void renderStep(LoopState& state, PlayerSession& session, const PlayOptions& options, const CameraControls& controls,
+                bool paused, double wall, gl::GlErrorWatch& glErrors)
+{
+    if (options.framesGiven)
+        state.animationTime = double(state.frame) / options.fps;
+    else if (!paused)
+        state.animationTime += wall - state.lastWall;
+    state.lastWall = wall;
+    const bool previewNow =
+        state.preview == PreviewMode::Always ||
+        (state.preview == PreviewMode::Auto && controls.interacting(wall, options.previewHoldSeconds));
+    streamTextures(session, options);
+    session.renderFrame(state.animationTime, previewNow ? FrameQuality::Preview : FrameQuality::Full);
+    glErrors.check("frame " + std::to_string(state.previewFrames + state.fullFrames));
+    ++(previewNow ? state.previewFrames : state.fullFrames);
+}
+
+// All views tiled into a quilt, scaled to fit in the window.
+void showQuilt(const DisplayProfile& views, const ViewTargets& targets, BlitSource& quilt, int windowW, int windowH)
+{
+    // GL rows run bottom-up, so view 0 in the bottom-left tile is tile (0, 0).
+    const QuiltLayout layout = chooseQuiltLayout(views);
+    quilt.ensure(layout.width(), layout.height());
+    for (uint32_t v = 0; v < views.viewCount; ++v)
+        glCopyImageSubData(targets.colorArray(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(v), quilt.texture, GL_TEXTURE_2D,
+                           0, GLint((v % layout.cols) * layout.tileWidth),
+                           GLint((v / layout.cols) * layout.tileHeight), 0, GLsizei(targets.width()),
+                           GLsizei(targets.height()), 1);
+    blitToWindow(quilt.fbo, quilt.width, quilt.height, windowW, windowH);
+}
+
+// What one eye at `viewerPos` sees through the lenses, scaled to fit in the window.
+void showViewer(PlayerSession& session, double viewerPos, BlitSource& viewer, int windowW, int windowH)
+{
+    const DisplayProfile& display = session.displayProfile();
+    const DisplayProfile& views = session.profile();
+    // CPU model of one eye behind the lenticular sheet (image order -> GL order).
+    const double t = viewerPos * views.viewCount / display.viewCount;
+    const std::vector<uint8_t> seen = simulateViewer(views, session.eia().read(), t);
+    viewer.ensure(views.viewWidth, views.viewHeight);
+    const size_t row = size_t(views.viewWidth) * 4;
+    std::vector<uint8_t> flipped(seen.size());
+    for (uint32_t y = 0; y < views.viewHeight; ++y)
+        std::memcpy(&flipped[size_t(y) * row], &seen[size_t(views.viewHeight - 1 - y) * row], row);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTextureSubImage2D(viewer.texture, 0, 0, 0, GLsizei(views.viewWidth), GLsizei(views.viewHeight), GL_RGBA,
+                        GL_UNSIGNED_BYTE, flipped.data());
+    blitToWindow(viewer.fbo, viewer.width, viewer.height, windowW, windowH);
+}
+
+// Step 3: show the chosen output: the EIA 1:1 fullscreen, anything scaled to fit in a window.
+void showOutput(const LoopState& state, PlayerSession& session, const WindowSetup& setup, ShowTargets& show,
+                int windowW, int windowH)
+{
+    const DisplayProfile& display = session.displayProfile();
+    const DisplayProfile& views = session.profile();
+    const ViewTargets& targets = session.targets();
+    glNamedFramebufferTexture(show.eiaFbo, GL_COLOR_ATTACHMENT0, session.eia().texture(), 0);
+    const uint32_t single =
+        std::min(uint32_t(state.viewerPos * views.viewCount / display.viewCount), views.viewCount - 1);
+    if (windowW <= 0 || windowH <= 0)
+        return;
+    switch (state.shown) {
+    case Shown::Eia:
+        if (setup.fullscreen)
+            blitOneToOne(show.eiaFbo, display.panelWidth, display.panelHeight, windowW, windowH, setup.placement);
+        else
+            blitToWindow(show.eiaFbo, display.panelWidth, display.panelHeight, windowW, windowH);
+        break;
+    case Shown::SingleView:
+        glNamedFramebufferTextureLayer(show.layerFbo, GL_COLOR_ATTACHMENT0, targets.colorArray(), 0, GLint(single));
+        blitToWindow(show.layerFbo, targets.width(), targets.height(), windowW, windowH);
+        break;
+    case Shown::Quilt:
+        showQuilt(views, targets, show.quilt, windowW, windowH);
+        break;
+    case Shown::Viewer:
+        showViewer(session, state.viewerPos, show.viewer, windowW, windowH);
+        break;
+    }
+}
+
+// --screenshot of the last frame; a failure is reported and makes the exit status 1.
+void takeScreenshot(const PlayOptions& options, int windowW, int windowH, int& status)
+{
+    try {
+        saveScreenshot(options.screenshot, windowW, windowH);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "lfd-play: %s\n", e.what());
+        status = 1;
+    }
+}
+
+// The window title up to the readout: pack, renderer, reconstruction, output and playback state.
+std::string titleText(const LoopState& state, PlayerSession& session, bool paused)
+{
+    std::string title = "lfd-play - " + session.packName() + " - " + session.rendererName() + " - " +
+                        state.reconstructions[state.reconstructionIndex] + " - " + shownName(state.shown);
+    if (state.shown == Shown::SingleView || state.shown == Shown::Viewer) {
+        char where[48];
+        std::snprintf(where, sizeof(where), " (viewer %.1f)", state.viewerPos);
+        title += where;
+    }
+    if (paused)
+        title += " - paused";
+    if (const TextureStreamer* streamer = session.streamer(); streamer && !streamer->resident()) {
+        char loading[48];
+        const double total = double(std::max<uint64_t>(streamer->totalBytes(), 1));
+        std::snprintf(loading, sizeof(loading), " - loading %.0f%%", 100.0 * double(streamer->uploadedBytes()) / total);
+        title += loading;
+    }
+    title += session.lastQuality() == FrameQuality::Preview ? " - preview" : " - full";
+    if (session.quiltInput())
+        title += " - " + session.quilts().currentFile().filename().string();
+    return title;
+}
+
+// "<pacing> | full: <stages> | preview: <stages>" since the last readout.
+std::string readoutText(Readouts& readouts, PlayerSession& session)
+{
+    std::string readout = readouts.pacing.update();
+    const std::string full = readouts.full.update(session.timer());
+    const std::string previewText = readouts.preview.update(session.previewTimer());
+    if (!full.empty())
+        readout += " | full: " + full;
+    if (!previewText.empty())
+        readout += " | preview: " + previewText;
+    return readout;
+}
+
+// Step 4: readout - title (and companion title), and a stdout line every 2 s fullscreen.
+void showReadout(LoopState& state, Readouts& readouts, PlayerSession& session, const CameraControls& controls,
+                 const WindowSetup& setup, GLFWwindow* companion, bool paused, double wall, bool last)
+{
+    state.lastTitle = wall;
+    std::string title = titleText(state, session, paused);
+    const std::string readout = readoutText(readouts, session);
+    if (!session.quiltInput())
+        title += " | " + controlsText(controls.state());
+    title += " | " + readout;
+    glfwSetWindowTitle(setup.context->window(), title.c_str());
+    if (companion)
+        glfwSetWindowTitle(companion, readout.c_str());
+    if (setup.fullscreen && (wall - state.lastPrint >= 2.0 || last)) {
+        state.lastPrint = wall;
+        std::printf("lfd-play: %s\n", readout.c_str());
+        std::fflush(stdout);
+    }
+}
+
+// Finishes the timers and prints the run's frame counts, mean frame times and fps.
+void printRunSummary(PlayerSession& session, const LoopState& state)
+{
     session.timer().finish();
     session.previewTimer().finish();
     auto meanTotal = [](GpuTimer& timer) {
@@ -569,17 +636,62 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
     };
     std::printf("lfd-play: window: %u full-quality frames (total %.1f ms mean), %u preview frames (total %.1f ms "
                 "mean), %.1f fps over the run\n",
-                fullFrames, meanTotal(session.timer()), previewFrames, meanTotal(session.previewTimer()),
-                double(frame) / std::max(glfwGetTime() - startWall, 1e-9));
+                state.fullFrames, meanTotal(session.timer()), state.previewFrames, meanTotal(session.previewTimer()),
+                double(state.frame) / std::max(glfwGetTime() - state.startWall, 1e-9));
+}
+
+// The frame loop shared by scene and quilt input.
+int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& options, gl::GlErrorWatch& glErrors)
+{
+    GLFWwindow* window = setup.context->window();
+    const DisplayProfile& display = session.displayProfile();
+    LoopState state = initialLoopState(session, options);
+    CameraControls controls = makeCameraControls(session, options);
+
+    Input input;
+    attachInput(window, input);
+    if (setup.fullscreen) // a cursor over the lenses shows in every view; drags still work
+        glfwSetInputMode(window, GLFW_CURSOR, GLFW_CURSOR_HIDDEN);
+    GLFWwindow* companion = createCompanion(setup, input);
+
+    ShowTargets show;
+    state.startWall = glfwGetTime();
+    state.lastWall = state.lastTitle = state.startWall;
+    Readouts readouts;
+    while (!glfwWindowShouldClose(window) && !(companion && glfwWindowShouldClose(companion))) {
+        glfwPollEvents();
+        int windowW = 0, windowH = 0;
+        glfwGetFramebufferSize(window, &windowW, &windowH);
+
+        // Step 1: apply input.
+        applyKeyInput(input, state, session, display);
+        const double wall = glfwGetTime();
+        steerCamera(input, controls, session, setup, options, state, windowW, windowH, wall);
+
+        renderStep(state, session, options, controls, input.paused, wall, glErrors);
+        showOutput(state, session, setup, show, windowW, windowH);
+        ++state.frame;
+        const bool last = options.framesGiven && state.frame >= options.frames;
+        if (last && !options.screenshot.empty())
+            takeScreenshot(options, windowW, windowH, state.status);
+        glfwSwapBuffers(window);
+        readouts.pacing.swapped(glfwGetTime());
+
+        if (wall - state.lastTitle >= 0.5 || last)
+            showReadout(state, readouts, session, controls, setup, companion, input.paused, wall, last);
+        if (last)
+            break;
+    }
+    printRunSummary(session, state);
     // Deleted here, with the panel's context current: framebuffers are not shared with the
     // companion window's context.
-    quilt.release();
-    viewer.release();
-    layerFbo.reset();
-    eiaFbo.reset();
+    show.quilt.release();
+    show.viewer.release();
+    show.layerFbo.reset();
+    show.eiaFbo.reset();
     if (companion)
         glfwDestroyWindow(companion);
-    return status;
+    return state.status;
 }
 
 void printStart(const gl::GlContext& context)
