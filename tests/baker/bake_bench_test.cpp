@@ -1,6 +1,8 @@
 // `lfd-bake --bench` at a small size: the report has a line per thread count with every
 // figure (triangles per second, megapixels per second, peak memory), a speed-up line, and
 // says that the outputs of every thread count are identical.
+#include "tool_run.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -14,26 +16,8 @@ namespace {
 
 const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
 
-struct RunResult {
-    int exitCode = -1;
-    std::string out; // stdout + stderr
-};
-
-RunResult run(const std::string& command)
-{
-    RunResult r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe)
-        return r;
-    std::array<char, 4096> buffer{};
-    size_t n;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-        r.out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
+using lfd::test::run;
+using lfd::test::RunResult;
 TEST(BakeBench, SmallBenchReportsEveryFigureForOneAndTwoThreads)
 {
     const RunResult r = run(kBake + " --bench --bench-triangles 20000 --bench-texture-size 512");

@@ -5,6 +5,8 @@
 
 #include "skip_or_fail.h"
 
+#include "tool_run.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -20,28 +22,10 @@ namespace {
 const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
 const std::string kMakeSamples = std::string(LFD_BINARY_DIR) + "/samples/lfd-make-samples";
 
-struct RunResult {
-    int exitCode = -1;
-    std::string out; // stdout + stderr
-};
-
-RunResult run(const std::string& command)
-{
-    RunResult r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe)
-        return r;
-    std::array<char, 4096> buffer{};
-    size_t n;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-        r.out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-
+using lfd::test::quoted;
+using lfd::test::readBytes;
+using lfd::test::run;
+using lfd::test::RunResult;
 size_t lineCount(const std::string& s)
 {
     size_t lines = 0;
@@ -219,12 +203,6 @@ TEST_F(BakeCli, BadArgumentsAreRejected)
                             " --display " + quoted(dir_ / "no_profile.json"));
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.out.find("no_profile.json"), std::string::npos) << r.out;
-}
-
-std::string readBytes(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 const fs::path kGltfCases = fs::path(LFD_TEST_DATA) / "gltf";

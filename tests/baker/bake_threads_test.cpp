@@ -7,6 +7,8 @@
 
 #include "skip_or_fail.h"
 
+#include "tool_run.h"
+
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -236,34 +238,10 @@ TEST(BakeThreads, TriangleLimitRefusalIsTheSameForAnyThreadCount)
 const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
 const std::string kMakeSamples = std::string(LFD_BINARY_DIR) + "/samples/lfd-make-samples";
 
-struct RunResult {
-    int exitCode = -1;
-    std::string out; // stdout + stderr
-};
-
-RunResult run(const std::string& command)
-{
-    RunResult r;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe)
-        return r;
-    std::array<char, 4096> buffer{};
-    size_t n;
-    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-        r.out.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-
-std::string readBytes(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
+using lfd::test::quoted;
+using lfd::test::readBytes;
+using lfd::test::run;
+using lfd::test::RunResult;
 class BakeThreadsCli : public ::testing::Test {
 protected:
     static void SetUpTestSuite()

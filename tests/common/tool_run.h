@@ -1,0 +1,46 @@
+// Running the project's command-line tools from tests: the command's exit status and its
+// stdout + stderr together, shell quoting for paths, and a file's bytes. Shared by the
+// baker CLI tests (lfd-bake, lfd-make-samples).
+#pragma once
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace lfd::test {
+
+struct RunResult {
+    int exitCode = -1;
+    std::string out; // stdout + stderr
+};
+
+// Runs `command` through the shell; exitCode is -1 when it did not exit normally.
+inline RunResult run(const std::string& command)
+{
+    RunResult r;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe)
+        return r;
+    std::array<char, 4096> buffer{};
+    size_t n;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
+        r.out.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
+
+inline std::string readBytes(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+} // namespace lfd::test
