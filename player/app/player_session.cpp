@@ -43,11 +43,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     GpuSceneOptions sceneOptions;
     sceneOptions.plan = &plan_;
     pipeline_ = std::make_unique<FramePipeline>(profile, std::move(scene), options.turntablePeriod, sceneOptions);
-    reconstruction_ = parseReconstruction(options.reconstruction);
-    pipeline_->setSupersampling(parseSupersampling(options.supersampling));
-    pipeline_->setViewControls(options.controls);
-    pipeline_->setPreviewShape(options.previewShape);
-    switchRenderer(options.renderer);
+    applyRenderOptions(options);
 }
 
 PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& profile,
@@ -60,6 +56,11 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     sceneOptions.streamed = true;
     pipeline_ = std::make_unique<FramePipeline>(profile, mapped_->takeScene(), options.turntablePeriod, sceneOptions);
     streamer_ = std::make_unique<TextureStreamer>(pipeline_->scene(), mapped_, options.streamChunkBytes);
+    applyRenderOptions(options);
+}
+
+void PlayerSession::applyRenderOptions(const PlayOptions& options)
+{
     reconstruction_ = parseReconstruction(options.reconstruction);
     pipeline_->setSupersampling(parseSupersampling(options.supersampling));
     pipeline_->setViewControls(options.controls);

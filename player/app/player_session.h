@@ -130,6 +130,9 @@ public:
     FrameOutputs readOutputs(uint32_t frameIndex) const;
 
 private:
+    // Scene input: reconstruction, supersampling, camera controls, preview shape and the
+    // renderer from the options (the same for an eagerly loaded and a streamed pack).
+    void applyRenderOptions(const PlayOptions& options);
     PlayOptions options_;
     DisplayProfile displayProfile_;
     std::string packName_;
