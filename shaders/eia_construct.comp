@@ -28,6 +28,12 @@
 #define EIA_MODE_VIEW 2
 #define EIA_MODE_VIEW_SPATIAL 3
 #define EIA_SAMPLES 8
+// The mode is compiled in (C++ builds one program per mode, prepending "#define EIA_MODE
+// n"), not a uniform: llvmpipe runs an untaken branch under an all-off lane mask at full
+// cost, so a uniform `mode` made nearest-view EIAs pay for the 8-sample filter too.
+#ifndef EIA_MODE
+#define EIA_MODE EIA_MODE_NONE
+#endif
 
 #define EIA_LOCAL_SIZE 8
 layout(local_size_x = EIA_LOCAL_SIZE, local_size_y = EIA_LOCAL_SIZE) in;
@@ -46,7 +52,6 @@ uniform double perRow;
 uniform double phaseOffset;
 uniform bool invertPhase;
 uniform bool subpixelsBgr;
-uniform uint mode;         // EIA_MODE_*
 // Filter samples: x, y in view pixels (image order: +y down), z in view intervals.
 uniform vec3 samples[EIA_SAMPLES];
 // sRGB-encoded byte -> linear value, from C++ (so the CPU reference decodes identically).
@@ -128,11 +133,16 @@ float filtered(uint k, uint l, uint channel, double phase)
     const int imageRow = int(viewSize.y) - 1 - texel.y;
     float sum = 0.0;
     for (int s = 0; s < EIA_SAMPLES; ++s) {
-        const uint view = mode == EIA_MODE_SPATIAL ? viewAt(c) : viewAt(c + double(samples[s].z));
-        if (mode == EIA_MODE_VIEW)
-            sum += linearTexel(texel.x, imageRow, view, channel);
-        else
-            sum += bilinear(p + samples[s].xy, view, channel);
+#if EIA_MODE == EIA_MODE_SPATIAL
+        const uint view = viewAt(c);
+#else
+        const uint view = viewAt(c + double(samples[s].z));
+#endif
+#if EIA_MODE == EIA_MODE_VIEW
+        sum += linearTexel(texel.x, imageRow, view, channel);
+#else
+        sum += bilinear(p + samples[s].xy, view, channel);
+#endif
     }
     return encodeSrgb(sum / float(EIA_SAMPLES));
 }
@@ -140,15 +150,11 @@ float filtered(uint k, uint l, uint channel, double phase)
 float subpixelValue(uint k, uint l, uint channel)
 {
     const double phase = subpixelPhase(k, l);
-    switch (mode) {
-    case EIA_MODE_SPATIAL:
-    case EIA_MODE_VIEW:
-    case EIA_MODE_VIEW_SPATIAL:
-        return filtered(k, l, channel, phase);
-    case EIA_MODE_NONE:
-    default:
-        return nearestView(k, l, channel, phase);
-    }
+#if EIA_MODE == EIA_MODE_NONE
+    return nearestView(k, l, channel, phase);
+#else
+    return filtered(k, l, channel, phase);
+#endif
 }
 
 void main()

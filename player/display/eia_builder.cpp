@@ -130,7 +130,7 @@ std::vector<glm::vec3> reconstructionSamples(Reconstruction mode, uint64_t seed)
 
 EiaBuilder::EiaBuilder(const DisplayProfile& profile, uint64_t seed) : profile_(profile), seed_(seed) {
     validateDisplayProfile(profile_, profile_.name.empty() ? "display profile" : profile_.name);
-    program_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_construct.comp"}}));
+    program(Reconstruction::None); // the default mode; compile errors surface here
     eia_ = gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(eia_, 1, GL_RGBA8, GLsizei(profile_.panelWidth),
                        GLsizei(profile_.panelHeight));
@@ -143,6 +143,15 @@ EiaBuilder::EiaBuilder(const DisplayProfile& profile, uint64_t seed) : profile_(
     }
 }
 
+unsigned EiaBuilder::program(Reconstruction mode) {
+    reconstructionName(mode); // throws for a value outside the enum
+    gl::Program& p = programs_[size_t(mode)];
+    if (!p)
+        p.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_construct.comp"}},
+                                 {"EIA_MODE " + std::to_string(uint32_t(mode))}));
+    return p.get();
+}
+
 void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& timer) {
     if (views.viewCount() != profile_.viewCount)
         throw std::invalid_argument("EIA: " + std::to_string(views.viewCount()) +
@@ -150,32 +159,31 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
                                     "' needs " + std::to_string(profile_.viewCount));
     const SubpixelMapping& m = profile_.mapping;
 
-    // Step 1: uniforms (looked up by name, so nothing is mirrored by hand).
-    glUseProgram(program_);
-    glUniform2ui(uniformLocation(program_, "panelSize"), profile_.panelWidth, profile_.panelHeight);
-    glUniform2ui(uniformLocation(program_, "viewSize"), views.width(), views.height());
-    glUniform1ui(uniformLocation(program_, "viewCount"), profile_.viewCount);
-    glUniform1d(uniformLocation(program_, "perSubpixel"), m.perSubpixel);
-    glUniform1d(uniformLocation(program_, "perRow"), m.perRow);
-    glUniform1d(uniformLocation(program_, "phaseOffset"), m.offset);
-    glUniform1i(uniformLocation(program_, "invertPhase"), m.invert ? 1 : 0);
-    glUniform1i(uniformLocation(program_, "subpixelsBgr"),
+    // Step 1: the mode's program and its uniforms (looked up by name, so nothing is
+    // mirrored by hand).
+    const unsigned prog = program(mode);
+    glUseProgram(prog);
+    glUniform2ui(uniformLocation(prog, "panelSize"), profile_.panelWidth, profile_.panelHeight);
+    glUniform2ui(uniformLocation(prog, "viewSize"), views.width(), views.height());
+    glUniform1ui(uniformLocation(prog, "viewCount"), profile_.viewCount);
+    glUniform1d(uniformLocation(prog, "perSubpixel"), m.perSubpixel);
+    glUniform1d(uniformLocation(prog, "perRow"), m.perRow);
+    glUniform1d(uniformLocation(prog, "phaseOffset"), m.offset);
+    glUniform1i(uniformLocation(prog, "invertPhase"), m.invert ? 1 : 0);
+    glUniform1i(uniformLocation(prog, "subpixelsBgr"),
                 profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
-    // note: with a single mode the compiler may drop `mode`; glUniform on location -1 is a
-    // defined no-op, so it is the one uniform that may be missing.
-    glUniform1ui(glGetUniformLocation(program_, "mode"), uint32_t(mode));
     if (mode != Reconstruction::None) {
         const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed_);
-        glUniform3fv(uniformLocation(program_, "samples"), GLsizei(samples.size()), &samples[0].x);
-        glUniform1fv(uniformLocation(program_, "linearFromByte"), 256, linearFromByte().data());
+        glUniform3fv(uniformLocation(prog, "samples"), GLsizei(samples.size()), &samples[0].x);
+        glUniform1fv(uniformLocation(prog, "linearFromByte"), 256, linearFromByte().data());
     }
 
     // Step 2: inputs and output on the units the shader declares. A nearest-filter sampler
     // object keeps the view array complete whatever its own filter state (texelFetch does
     // not filter, but an incomplete texture would read as zero).
     GLint textureUnit = 0, imageUnit = 0;
-    glGetUniformiv(program_, uniformLocation(program_, "views"), &textureUnit);
-    glGetUniformiv(program_, uniformLocation(program_, "eia"), &imageUnit);
+    glGetUniformiv(prog, uniformLocation(prog, "views"), &textureUnit);
+    glGetUniformiv(prog, uniformLocation(prog, "eia"), &imageUnit);
     const gl::Sampler sampler = gl::createSampler();
     glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -185,7 +193,7 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
 
     // Step 3: one invocation per panel pixel.
     GLint localSize[3] = {1, 1, 1};
-    glGetProgramiv(program_, GL_COMPUTE_WORK_GROUP_SIZE, localSize);
+    glGetProgramiv(prog, GL_COMPUTE_WORK_GROUP_SIZE, localSize);
     timer.begin(stage::kEia);
     glDispatchCompute((profile_.panelWidth + GLuint(localSize[0]) - 1) / GLuint(localSize[0]),
                       (profile_.panelHeight + GLuint(localSize[1]) - 1) / GLuint(localSize[1]), 1);

@@ -60,7 +60,9 @@ private:
     DisplayProfile profile_;
     uint64_t seed_;
     gl::Texture eia_;
-    gl::Program program_;
+    // One program per Reconstruction mode (EIA_MODE compiled in), built on first use.
+    gl::Program programs_[4];
+    unsigned program(Reconstruction mode);
 };
 
 // CPU reference of the same mapping (tests, simulated viewer): views are RGBA8 images in
