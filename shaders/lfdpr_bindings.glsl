@@ -228,6 +228,16 @@ layout(std140, binding = LFDPR_UBO_CAMERA_LINE) uniform LfdprCameraLineBlock {
     vec4 row1;          // clip y row (every view)
     vec4 row3;          // clip w row (every view)
     vec4 wRange;        // x near w, y far w (the depth range every view clips to), zw 0
+    // Pixel-centre culling (lfdMayCoverPixelCentre): the same rows for the frame the points
+    // are sampled for (the display's views, also under angular supersampling, so the point
+    // cloud does not depend on the views it is splatted into), and in cullOffsets.xy the
+    // offsets of the two ends of its whole view cone (view 0's interval start, the last
+    // view's interval end), which every splatted view lies between.
+    vec4 cullRow0;
+    vec4 cullRow0PerOffset;
+    vec4 cullRow1;
+    vec4 cullRow3;
+    vec4 cullOffsets;   // xy: cone ends, zw 0
     vec4 viewOffsets[LFDPR_MAX_VIEWS / 4]; // camera offset of view i from view 0 along the
                                            // line: component i % 4 of element i / 4
 } u_line;

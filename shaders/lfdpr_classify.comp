@@ -1,7 +1,7 @@
 #version 450 core
 // LFDPR shading, step 1 of 3 (the visibility pipeline): classify the view pixels. Each
-// workgroup is one LFDPR_SHADE_TILE-square tile of one view. A pixel no point covers gets
-// the background at once; a covered pixel records the shading group of its point's
+// workgroup is one LFDPR_SHADE_TILE-square tile of one view. A pixel no point covers is
+// marked shaded (the views were cleared to the background before); a covered pixel records the shading group of its point's
 // material in LFDPR_SSBO_MATERIAL_IDS, and the first pixel of each group in the tile
 // appends the tile to that group's list (a shared-memory bit set finds it), so the
 // shading dispatches (lfdpr_shade.comp) visit only tiles with work for them.
@@ -20,7 +20,6 @@
 
 layout(local_size_x = LFDPR_SHADE_TILE, local_size_y = LFDPR_SHADE_TILE) in;
 
-layout(binding = LFDPR_IMAGE_VIEWS, rgba8) uniform writeonly image2DArray u_views;
 layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
 
 layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
@@ -84,7 +83,6 @@ void main()
     uint index = winner(pixel);
     if (index == 0xFFFFFFFFu) {
         pixelStates[pixel] = LFDPR_PIXEL_SHADED;
-        imageStore(u_views, ivec3(id), u_frame.background);
         return;
     }
     uint group = materialGroups[draws[records[points[index].x].draw].material];

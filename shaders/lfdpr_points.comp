@@ -13,6 +13,10 @@
 // LFDPR_LARGE_PASS: one workgroup per queued triangle of the draw; its threads stride over
 // the box, count, reserve one range of the point buffer, and write.
 //
+// LFDPR_PIXEL_CENTRE_CULLING (beyond the paper, on by default): a triangle that holds no
+// view pixel centre in any view (lfdMayCoverPixelCentre) emits no points, since none of
+// them could win a pixel. Sub-pixel triangles of dense scenes are mostly such triangles.
+//
 // Alpha-masked materials (glTF MASK): a cell whose base-colour alpha at the finest LOD
 // any view needs (eq. minLOD) is below the cutoff emits no point, so the visibility pass
 // never needs the material's textures. That test is compiled in only for draws of masked
@@ -26,6 +30,7 @@
 #include "lfdpr_math.glsl"
 #include "lfdpr_triangle_setup.glsl"
 #include "lfdpr_scene_access.glsl"
+#include "lfdpr_camera_line.glsl"
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
@@ -72,6 +77,10 @@ bool setUp(uint primitive, out Sampled t)
     uvec3 vertices = lfdTriangleVertices(draw, primitive);
     vec3 p0, p1, p2;
     lfdTrianglePositions(draw, vertices, p0, p1, p2);
+#ifdef LFDPR_PIXEL_CENTRE_CULLING
+    if (!lfdMayCoverPixelCentre(p0, p1, p2))
+        return false;
+#endif
     if (!lfdSetupTriangle(p0, p1, p2, lfdOutsideHullBits(p0), lfdOutsideHullBits(p1), lfdOutsideHullBits(p2),
                           u_material, u_node, u_streams, draw.firstTriangle + primitive, t.s))
         return false;

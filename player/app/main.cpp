@@ -49,6 +49,7 @@ struct RawFlags {
     std::string pack, viewSize, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility";
     uint32_t views = 0, frame = 0;
     bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false, noTurntable = false;
+    bool noPixelCulling = false;
     bool listMonitors = false;
     CLI::Option *viewsOpt = nullptr, *sizeOpt = nullptr, *framesOpt = nullptr, *frameOpt = nullptr;
     CLI::Option *monitorOpt = nullptr, *windowSizeOpt = nullptr;
@@ -73,6 +74,8 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
     app.add_flag("--no-texture-splatting", f.noTextureSplatting, "lfdpr: no density reduction by texture");
     app.add_flag("--no-mv-mipmapping", f.noMvMipmapping,
                  "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
+    app.add_flag("--no-pixel-culling", f.noPixelCulling,
+                 "lfdpr: sample every triangle, also those that hold no view pixel centre");
     app.add_option("--atomics", f.atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
     app.add_option("--lfdpr-pipeline", f.pipeline,
                    "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
@@ -189,6 +192,7 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
     lfdpr.lfdBiasedSampling = !f.noLfdSampling;
     lfdpr.textureSplatting = !f.noTextureSplatting;
     lfdpr.multiviewMipmapping = !f.noMvMipmapping;
+    lfdpr.pixelCentreCulling = !f.noPixelCulling;
     try {
         lfdpr.atomics = lfd::player::parseLfdprAtomics(f.atomics);
         lfdpr.pipeline = lfd::player::parseLfdprPipeline(f.pipeline);

@@ -42,6 +42,8 @@ const std::vector<Entry>& registry()
         lfdprVariant("lfdpr-paper", [](LfdprOptions& o) { o.pipeline = LfdprOptions::Pipeline::Paper; }),
         lfdprVariant("lfdpr-no-lfd-sampling", [](LfdprOptions& o) { o.lfdBiasedSampling = false; }),
         lfdprVariant("lfdpr-no-texture-splatting", [](LfdprOptions& o) { o.textureSplatting = false; }),
+        // Beyond the paper: the visibility pipeline without pixel-centre culling.
+        lfdprVariant("lfdpr-no-pixel-culling", [](LfdprOptions& o) { o.pixelCentreCulling = false; }),
         lfdprVariant("lfdpr-no-mv-mipmapping",
                      [](LfdprOptions& o) {
                          o.pipeline = LfdprOptions::Pipeline::Paper;

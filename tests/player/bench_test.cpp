@@ -157,17 +157,19 @@ TEST_F(BenchTest, LfdprVariantsDisableOneInnovationEach)
 {
     struct Expect {
         const char* name;
-        bool lfd, texture, mip;
+        bool lfd, texture, mip, cull;
     };
-    for (const Expect& e : {Expect{"lfdpr", true, true, true}, Expect{"lfdpr-no-lfd-sampling", false, true, true},
-                            Expect{"lfdpr-no-texture-splatting", true, false, true},
-                            Expect{"lfdpr-no-mv-mipmapping", true, true, false}}) {
+    for (const Expect& e : {Expect{"lfdpr", true, true, true, true}, Expect{"lfdpr-no-lfd-sampling", false, true, true, true},
+                            Expect{"lfdpr-no-texture-splatting", true, false, true, true},
+                            Expect{"lfdpr-no-pixel-culling", true, true, true, false},
+                            Expect{"lfdpr-no-mv-mipmapping", true, true, false, true}}) {
         std::unique_ptr<player::Renderer> r = player::createRenderer(e.name);
         const auto* lfdpr = dynamic_cast<const player::LfdprRenderer*>(r.get());
         ASSERT_NE(lfdpr, nullptr) << e.name;
         EXPECT_EQ(lfdpr->options().lfdBiasedSampling, e.lfd) << e.name;
         EXPECT_EQ(lfdpr->options().textureSplatting, e.texture) << e.name;
         EXPECT_EQ(lfdpr->options().multiviewMipmapping, e.mip) << e.name;
+        EXPECT_EQ(lfdpr->options().pixelCentreCulling, e.cull) << e.name;
     }
 }
 

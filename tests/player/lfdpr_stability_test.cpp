@@ -857,7 +857,10 @@ TEST_F(LfdprStabilityTest, SliverFanCoversLikeMvrWithBoundedPoints)
 
     const double radiusCells = radius / std::min(pixelUnits(profile).x, pixelUnits(profile).y);
     EXPECT_LE(lfdpr.stats.at("points"), double(slivers) * 3.0 * (radiusCells + 2.0));
-    EXPECT_EQ(lfdpr.stats.at("triangles_emitting"), double(slivers));
+    // Every sliver is sampled except those that hold no pixel centre in any view (near
+    // the hub; pixel-centre culling, measured: 8 of 720 at 160x120).
+    EXPECT_LE(lfdpr.stats.at("triangles_emitting"), double(slivers));
+    EXPECT_GE(lfdpr.stats.at("triangles_emitting"), double(slivers) * 0.95);
     ASSERT_GT(c.coverage.interior, 4u * 3000u);
     EXPECT_LT(c.coverage.holeRate(), 0.005);
     EXPECT_LT(c.worstViewHoleRate, 0.01);

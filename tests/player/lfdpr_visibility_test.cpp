@@ -77,6 +77,18 @@ TEST(LfdprCameraLine, OffsetsAreTheEyeShiftsAndRowsMatchEveryView)
     // The depth range is the cameras' near and far planes as w.
     EXPECT_GT(line.gpu.wRange.x, 0.0f);
     EXPECT_GT(line.gpu.wRange.y, line.gpu.wRange.x);
+    // Pixel-centre culling: without supersampling the sampling rows are the views' rows,
+    // and the cone's ends are the eyes at cone positions 0 and 1 (hand-worked as above),
+    // at least half a view interval beyond the first and last view.
+    EXPECT_EQ(line.gpu.cullRow0, line.gpu.row0);
+    EXPECT_EQ(line.gpu.cullRow0PerOffset, line.gpu.row0PerOffset);
+    EXPECT_EQ(line.gpu.cullRow3, line.gpu.row3);
+    const double tan0 = std::tan(cone * (0.5 / 48.0 - 0.5));
+    EXPECT_NEAR(line.gpu.cullOffsets.x, D * (std::tan(-0.5 * cone) - tan0), 1e-3);
+    EXPECT_NEAR(line.gpu.cullOffsets.y, D * (std::tan(0.5 * cone) - tan0), 1e-3);
+    const float interval = line.viewOffsets[1] - line.viewOffsets[0];
+    EXPECT_LE(line.gpu.cullOffsets.x, line.viewOffsets.front() - 0.5f * interval);
+    EXPECT_GE(line.gpu.cullOffsets.y, line.viewOffsets.back() + 0.5f * interval);
 }
 
 TEST(LfdprCameraLine, RefusesCamerasOffTheLine)
@@ -140,7 +152,10 @@ TEST_F(LfdprVisibilityTest, ComputePointGenerationSamplesLikeTheGeometryShader)
     const DisplayProfile profile = smallProfile(6, 160, 120);
     for (const Scene& scene : {cubeAndSphereScene(), denseTestScene()}) {
         for (bool lfdSampling : {true, false}) {
-            auto visibility = player::createLfdprRenderer({.lfdBiasedSampling = lfdSampling});
+            // note: the paper samples every triangle; pixel-centre culling (beyond the paper)
+            // is off here and has its own test.
+            auto visibility =
+                player::createLfdprRenderer({.lfdBiasedSampling = lfdSampling, .pixelCentreCulling = false});
             auto paper = player::createLfdprRenderer(
                 {.pipeline = LfdprOptions::Pipeline::Paper, .lfdBiasedSampling = lfdSampling});
             const Frame a = render(*visibility, scene, profile, 0.4);
@@ -154,6 +169,33 @@ TEST_F(LfdprVisibilityTest, ComputePointGenerationSamplesLikeTheGeometryShader)
             EXPECT_EQ(differing, 0u) << "triangles whose point counts differ";
             EXPECT_EQ(std::accumulate(a.pointsPerTriangle.begin(), a.pointsPerTriangle.end(), uint64_t(0)),
                       a.info.points);
+        }
+    }
+}
+
+TEST_F(LfdprVisibilityTest, PixelCentreCullingDropsOnlyPointsThatCanWinNoPixel)
+{
+    // A triangle that holds no view pixel centre in any view emits no points: none of its
+    // points could win a pixel, because a splat writes only centres inside its own
+    // triangle. So the views must be byte-identical with and without the culling, and on
+    // a dense scene of small triangles (coarse views make them sub-pixel) there must be
+    // fewer points. Broken culling (a wrong x range, the offsets of one view only) shows
+    // as holes here; no culling at all fails the point count.
+    for (const uint32_t width : {96u, 48u}) {
+        const DisplayProfile profile = smallProfile(6, width, width * 3 / 4);
+        auto culled = player::createLfdprRenderer();
+        auto full = player::createLfdprRenderer({.pixelCentreCulling = false});
+        for (const double angle : {0.0, 1.3}) {
+            const Frame a = render(*culled, denseTestScene(), profile, angle);
+            const Frame b = render(*full, denseTestScene(), profile, angle);
+            ASSERT_GT(b.info.points, 1000u);
+            EXPECT_LT(a.info.points, b.info.points) << width << " px wide views";
+            EXPECT_LT(a.info.triangles, b.info.triangles);
+            for (uint32_t v = 0; v < profile.viewCount; ++v)
+                EXPECT_EQ(a.views[v].pixels, b.views[v].pixels) << "view " << v << ", " << width << " px";
+            std::printf("pixel-centre culling, %u px views, angle %.1f: points %llu -> %llu, triangles %llu -> %llu\n",
+                        width, angle, (unsigned long long)b.info.points, (unsigned long long)a.info.points,
+                        (unsigned long long)b.info.triangles, (unsigned long long)a.info.triangles);
         }
     }
 }

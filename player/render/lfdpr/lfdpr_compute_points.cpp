@@ -23,11 +23,13 @@ bool alphaTested(const GpuScene& scene, int32_t material)
 
 } // namespace
 
-LfdprComputePointGeneration::LfdprComputePointGeneration()
+LfdprComputePointGeneration::LfdprComputePointGeneration(bool pixelCentreCulling)
 {
     for (int alpha = 0; alpha < 2; ++alpha)
         for (int large = 0; large < 2; ++large) {
             std::vector<std::string> defines;
+            if (pixelCentreCulling)
+                defines.emplace_back("LFDPR_PIXEL_CENTRE_CULLING 1");
             if (alpha)
                 defines.emplace_back("LFDPR_ALPHA_TEST 1");
             if (large)

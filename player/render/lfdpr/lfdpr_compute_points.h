@@ -15,7 +15,9 @@ class GpuScene;
 
 class LfdprComputePointGeneration {
 public:
-    LfdprComputePointGeneration(); // builds the programs (per pass, with and without alpha test)
+    // Builds the programs (per pass, with and without alpha test); `pixelCentreCulling`
+    // compiles in LFDPR_PIXEL_CENTRE_CULLING (LfdprOptions::pixelCentreCulling).
+    explicit LfdprComputePointGeneration(bool pixelCentreCulling);
 
     // largeBase[d]: first slot of draw d in the large-triangle list (its triangles before
     // it); largeDispatch: the per-draw indirect dispatch words (uvec4 each, cleared to

@@ -1,5 +1,6 @@
 #include "lfdpr_visibility_shading.h"
 
+#include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "lfdpr_constants.h"
 #include "scene_bindings.h"
@@ -196,6 +197,10 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboShadeWork, shadeWork_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboMaterialGroups, materialGroups_);
     glBindImageTexture(k.imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    // The background everywhere first (a memset; an imageStore per empty pixel in the
+    // classify pass cost more on llvmpipe), then the shading overwrites covered pixels.
+    glClearTexImage(targets.colorArray(), 0, GL_RGBA, GL_FLOAT, kBackground);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     dispatches_ = 0;
     classifyAndShade(scene, 0);
 

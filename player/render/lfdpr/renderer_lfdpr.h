@@ -37,6 +37,12 @@ struct LfdprOptions {
     // false: texture values fetched at LOD 0 (as iVIR / EPR). Paper pipeline only (the
     // visibility pipeline filters every texture per pixel and view).
     bool multiviewMipmapping = true;
+    // Beyond the paper, visibility pipeline only: a triangle that holds no view pixel centre
+    // in any view emits no points (none of them could win a pixel: the splat writes only
+    // centres inside the point's triangle), so the views are unchanged and dense scenes of
+    // sub-pixel triangles generate and splat fewer points. false: every triangle is sampled
+    // as in the paper (the point set then equals the paper pipeline's).
+    bool pixelCentreCulling = true;
     // Auto: 64-bit atomics where GL_NV_shader_atomic_int64 exists, else two-pass 32-bit.
     // Int64 where unsupported throws gl::GlError at construction.
     enum class Atomics { Auto, Int64, TwoPass32 } atomics = Atomics::Auto;

@@ -38,7 +38,8 @@ using lfdpr_bindings::LfdprDrawGpu; // generated from shaders/lfdpr_bindings.gls
 class LfdprVisibilityRenderer final : public LfdprRenderer {
 public:
     explicit LfdprVisibilityRenderer(const LfdprOptions& options)
-        : options_(options), k_(LfdprConstants::get()), shading_(lfdprUseInt64(options.atomics))
+        : options_(options), k_(LfdprConstants::get()), pointGeneration_(options.pixelCentreCulling),
+          shading_(lfdprUseInt64(options.atomics))
     {
         GLint64 maxBlockBytes = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
@@ -177,6 +178,7 @@ public:
             {"shading_passes", double(shading_.lastShadingDispatches())},
             {"lfd_sampling", options_.lfdBiasedSampling ? 1.0 : 0.0},
             {"texture_splatting", options_.textureSplatting ? 1.0 : 0.0},
+            {"pixel_centre_culling", options_.pixelCentreCulling ? 1.0 : 0.0},
             {"pipeline_paper", 0.0},
         };
     }
