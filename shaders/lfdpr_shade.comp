@@ -11,7 +11,9 @@
 // One dispatch per shading group (lfdpr_classify.comp): a workgroup per listed tile, and
 // in it the pixels of group u_group (a textured group also checks the material, since
 // groups are shared past LFDPR_MAX_SHADE_GROUPS). The program is compiled per set of
-// textures (LFD_TEXTURE_MASK): the untextured group's program has no sampling code at all.
+// textures (LFD_TEXTURE_MASK) and the scene's vertex streams (LFD_STREAMS, a mask of
+// LFD_STREAM_*): the untextured group's program has no sampling code at all, and no
+// program reads a stream the scene lacks (llvmpipe would run those loads under an off mask).
 // On the 32-bit path, u_pass 0 first checks that the stored point index belongs to the
 // stored depth key; a pixel that fails is flagged LFDPR_PIXEL_REPAIR and counted, and is
 // classified and shaded again (u_pass 2) after lfdpr_visibility.comp's index pass.
@@ -37,7 +39,9 @@ layout(binding = LFDPR_IMAGE_VIEWS, rgba8) uniform writeonly image2DArray u_view
 layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
 layout(location = LFDPR_LOC_SHADE_MATERIAL) uniform uint u_shadeMaterial;
 layout(location = LFDPR_LOC_SHADE_GROUP) uniform uint u_group;
-layout(location = LFD_LOC_STREAMS) uniform uint u_streams;
+#ifndef LFD_STREAMS
+#define LFD_STREAMS 0xFu
+#endif
 
 layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
     uvec2 points[];
@@ -140,7 +144,7 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
     LfdSurfacePoint p;
     p.position = b.x * p0 + b.y * p1 + b.z * p2;
     vec3 eye = views[view].eyeScene.xyz;
-    p.vertexNormal = (u_streams & LFD_STREAM_NORMAL) != 0u;
+    p.vertexNormal = (LFD_STREAMS & LFD_STREAM_NORMAL) != 0u;
     if (p.vertexNormal) {
         mat3 normalFromObject = mat3(node.normalFromObject);
         p.normal = normalFromObject * (b.x * objectNormal(vi.x) + b.y * objectNormal(vi.y) + b.z * objectNormal(vi.z));
@@ -151,14 +155,14 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
     bool mirrored = determinant(mat3(node.sceneFromObject)) < 0.0;
     p.frontFacing = (lfdCanonicalEdge(s0, s1, s2) > 0.0) != mirrored;
     p.tangent = vec4(0.0, 0.0, 0.0, 1.0);
-    if ((u_streams & LFD_STREAM_TANGENT) != 0u) {
+    if ((LFD_STREAMS & LFD_STREAM_TANGENT) != 0u) {
         vec4 t = b.x * sceneTangents[vi.x] + b.y * sceneTangents[vi.y] + b.z * sceneTangents[vi.z];
         p.tangent = vec4(mat3(node.sceneFromObject) * t.xyz, t.w);
     }
     p.uv = vec2(0.0);
     g_duvdx = vec2(0.0);
     g_duvdy = vec2(0.0);
-    if ((u_streams & LFD_STREAM_UV) != 0u) {
+    if ((LFD_STREAMS & LFD_STREAM_UV) != 0u) {
         vec2 uv0 = sceneUvs[vi.x], uv1 = sceneUvs[vi.y], uv2 = sceneUvs[vi.z];
         p.uv = b.x * uv0 + b.y * uv1 + b.z * uv2;
         g_duvdx = bx.x * uv0 + bx.y * uv1 + bx.z * uv2 - p.uv;
@@ -168,7 +172,7 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
     // Step 3: the material, as mvr shades it (alpha-masked cells were dropped when the
     // points were generated, so a discard here keeps the colour of the cell's centre).
     vec3 color;
-    lfdShadeMaterial(materials[draw.material], u_streams, p, eye, color);
+    lfdShadeMaterial(materials[draw.material], LFD_STREAMS, p, eye, color);
     return vec4(color, 1.0);
 }
 

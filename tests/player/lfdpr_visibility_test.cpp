@@ -413,6 +413,10 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         // Shading programs are compiled per shading group's textures: none, and a subset.
         {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u"}},
         {"lfdpr_shade.comp", "comp", {"LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
+        {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u", "LFD_STREAMS 0x1u"}},
+        {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x1u", "LFD_STREAMS 0x9u"}},
+        {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1"}},
+        {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
         {"lfdpr_classify.comp", "comp", {}},
         {"lfdpr_classify.comp", "comp", {"LFDPR_INT64 1"}},
         {"lfdpr_shade_dispatch.comp", "comp", {}},

@@ -26,6 +26,8 @@ std::vector<std::string> atomicsDefines(bool int64)
 
 uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 
+constexpr uint32_t kStreamsAll = kStreamPosition | kStreamNormal | kStreamTangent | kStreamUv;
+
 // LFDPR_SHADE_WORK_BUFFER: LfdprShadeCountersGpu (repairCount first), then the dispatches.
 constexpr GLintptr kDispatchOffset = 16;
 
@@ -41,24 +43,27 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64) : int64_(int64)
         indexProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"}));
     classifyProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines));
     dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}));
-    // The untextured group's program is always needed; built now so a shader error
-    // surfaces at construction, not in the middle of a frame.
-    shadeProgram(0u);
+    // The untextured group's program is always needed; built now (for a scene with every
+    // stream) so a shader error surfaces at construction, not in the middle of a frame.
+    shadeProgram(0u, kStreamsAll);
 }
 
 LfdprVisibilityShading::~LfdprVisibilityShading() = default;
 
-unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask)
+unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t streams)
 {
-    if (const auto it = shadePrograms_.find(textureMask); it != shadePrograms_.end())
+    const uint64_t key = uint64_t(textureMask) << 32 | streams;
+    if (const auto it = shadePrograms_.find(key); it != shadePrograms_.end())
         return it->second.get();
     std::vector<std::string> defines = atomicsDefines(int64_);
     char mask[48];
     std::snprintf(mask, sizeof(mask), "LFD_TEXTURE_MASK 0x%Xu", textureMask);
     defines.emplace_back(mask);
+    std::snprintf(mask, sizeof(mask), "LFD_STREAMS 0x%Xu", streams);
+    defines.emplace_back(mask);
     gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines));
     const unsigned name = program.get();
-    shadePrograms_[textureMask] = std::move(program);
+    shadePrograms_[key] = std::move(program);
     return name;
 }
 
@@ -170,9 +175,8 @@ void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pa
     for (size_t g = 0; g < groups_.size(); ++g) {
         const Group& group = groups_[g];
         const uint32_t slot = g == 0 ? 0u : 1u + uint32_t((g - 1) % shared);
-        const GLuint program = shadeProgram(group.textureMask);
+        const GLuint program = shadeProgram(group.textureMask, scene.cpu().vertices.mask());
         glUseProgram(program);
-        glProgramUniform1ui(program, bindings::kLocStreams, scene.cpu().vertices.mask());
         glProgramUniform1ui(program, k.locPass, pass);
         glProgramUniform1ui(program, k.locShadeGroup, slot);
         glProgramUniform1ui(program, k.locShadeMaterial, group.gpuMaterial);

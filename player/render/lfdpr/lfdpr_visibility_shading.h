@@ -58,12 +58,12 @@ private:
     void splatPass(uint32_t points, unsigned program) const;
     void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
     void classifyAndShade(const GpuScene& scene, uint32_t pass);
-    unsigned shadeProgram(uint32_t textureMask);
+    unsigned shadeProgram(uint32_t textureMask, uint32_t streams);
 
     bool int64_;
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
     gl::Program classifyProgram_, dispatchProgram_;
-    std::map<uint32_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK
+    std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_, pixelStates_; // 64-bit path: depth_ holds the words
     gl::Buffer shadeWork_, materialGroups_;
     size_t shadeWorkBytes_ = 0, materialGroupsBytes_ = 0;
