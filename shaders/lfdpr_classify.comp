@@ -7,6 +7,8 @@
 // shading dispatches (lfdpr_shade.comp) visit only tiles with work for them.
 //   u_pass 0 classifies every pixel; u_pass 2 (after the 32-bit path's repair) only the
 //   pixels flagged LFDPR_PIXEL_REPAIR.
+// LFDPR_ONLY_GROUP g: every drawn pixel shades in group g (one textured material, or none),
+// so a pixel needs only its coverage, not the chain point -> record -> draw -> material.
 // This pass reads no triangle geometry and samples no texture: Mesa's llvmpipe runs every
 // `if` under a lane mask, so a shader pays for all the code it contains whether a pixel
 // needs it or not; classification is therefore a program of its own, and the costly
@@ -64,6 +66,16 @@ uint winner(uint pixel)
 #endif
 }
 
+// Whether some point won this pixel (its depth word is not empty).
+bool covered(uint pixel)
+{
+#ifdef LFDPR_INT64
+    return uint(viewWords[pixel] >> 32) != 0xFFFFFFFFu;
+#else
+    return viewDepth[pixel] != 0xFFFFFFFFu;
+#endif
+}
+
 void main()
 {
     uint lane = gl_LocalInvocationIndex;
@@ -80,12 +92,20 @@ void main()
     uint pixel = lfdViewWord(id.z, id.x, id.y, size.x, u_lfd.counts.x);
     if (u_pass == 2u && pixelStates[pixel] != LFDPR_PIXEL_REPAIR)
         return;
+#ifdef LFDPR_ONLY_GROUP
+    if (!covered(pixel)) {
+        pixelStates[pixel] = LFDPR_PIXEL_SHADED;
+        return;
+    }
+    uint group = LFDPR_ONLY_GROUP;
+#else
     uint index = winner(pixel);
     if (index == 0xFFFFFFFFu) {
         pixelStates[pixel] = LFDPR_PIXEL_SHADED;
         return;
     }
     uint group = materialGroups[draws[records[points[index].x].draw].material];
+#endif
     pixelStates[pixel] = group;
     uint bit = 1u << (group & 31u);
     if ((atomicOr(s_seen[group >> 5], bit) & bit) == 0u) {

@@ -419,6 +419,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
         {"lfdpr_classify.comp", "comp", {}},
         {"lfdpr_classify.comp", "comp", {"LFDPR_INT64 1"}},
+        {"lfdpr_classify.comp", "comp", {"LFDPR_ONLY_GROUP 0u"}},
+        {"lfdpr_classify.comp", "comp", {"LFDPR_INT64 1", "LFDPR_ONLY_GROUP 1u"}},
         {"lfdpr_shade_dispatch.comp", "comp", {}},
     };
     const std::filesystem::path dir = testOutputDir("shader_variants");

@@ -41,7 +41,7 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64) : int64_(int64)
     splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines));
     if (!int64)
         indexProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"}));
-    classifyProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines));
+    classifyProgram(-1);
     dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}));
     // The untextured group's program is always needed; built now (for a scene with every
     // stream) so a shader error surfaces at construction, not in the middle of a frame.
@@ -65,6 +65,18 @@ unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t str
     const unsigned name = program.get();
     shadePrograms_[key] = std::move(program);
     return name;
+}
+
+unsigned LfdprVisibilityShading::classifyProgram(int32_t onlyGroup)
+{
+    gl::Program& program = classifyPrograms_[onlyGroup + 1];
+    if (!program) {
+        std::vector<std::string> defines = atomicsDefines(int64_);
+        if (onlyGroup >= 0)
+            defines.push_back("LFDPR_ONLY_GROUP " + std::to_string(onlyGroup) + "u");
+        program.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines));
+    }
+    return program.get();
 }
 
 void LfdprVisibilityShading::resize(uint32_t viewCount, uint32_t width, uint32_t height)
@@ -117,7 +129,8 @@ void LfdprVisibilityShading::splatPass(uint32_t points, unsigned program) const
     glUseProgram(0);
 }
 
-void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials)
+void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
+                                          bool untexturedDrawn)
 {
     const LfdprConstants& k = LfdprConstants::get();
     const uint32_t shared = k.maxShadeGroups - 1; // dispatch slots for textured materials
@@ -133,6 +146,7 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
         groupOfMaterial_[scene.gpuMaterialIndex(m)] = 1u + uint32_t(i % shared);
     }
     groupCount_ = uint32_t(std::min<size_t>(groups_.size(), k.maxShadeGroups));
+    onlyGroup_ = texturedMaterials.empty() ? 0 : (texturedMaterials.size() == 1 && !untexturedDrawn ? 1 : -1);
 
     // Step 2: the buffers (grown, never shrunk, so a steady scene allocates nothing).
     const size_t groupBytes = groupOfMaterial_.size() * sizeof(uint32_t);
@@ -157,8 +171,9 @@ void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pa
     glClearNamedBufferSubData(shadeWork_, GL_R32UI, 0, kDispatchOffset + GLsizeiptr(groupCount_) * 16,
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glUseProgram(classifyProgram_);
-    glProgramUniform1ui(classifyProgram_, k.locPass, pass);
+    const unsigned classify = classifyProgram(onlyGroup_);
+    glUseProgram(classify);
+    glProgramUniform1ui(classify, k.locPass, pass);
     glDispatchCompute(views_, divideUp(width_, k.shadeTile), divideUp(height_, k.shadeTile)); // (view, tile x, tile y)
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
@@ -190,10 +205,11 @@ void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pa
 }
 
 uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targets,
-                                       const std::vector<int32_t>& texturedMaterials, uint32_t points)
+                                       const std::vector<int32_t>& texturedMaterials, bool untexturedDrawn,
+                                       uint32_t points)
 {
     const LfdprConstants& k = LfdprConstants::get();
-    updateGroups(scene, texturedMaterials);
+    updateGroups(scene, texturedMaterials, untexturedDrawn);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);

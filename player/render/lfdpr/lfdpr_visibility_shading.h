@@ -40,12 +40,14 @@ public:
     void splat(uint32_t points) const;
     // Shades every visible pixel into targets and writes the background elsewhere. Shading
     // groups: 0 = every untextured material, then one per textured material the scene
-    // draws with (`texturedMaterials`, scene material indices). On the 32-bit path, pixels
+    // draws with (`texturedMaterials`, scene material indices); `untexturedDrawn`: some draw
+    // shades in group 0 (when only one group can occur, classification reads coverage
+    // only, not each pixel's material). On the 32-bit path, pixels
     // whose point index lost a race to a nearer point are repaired - the index pass over
     // all `points`, then their classification and shading - and their number is returned
     // (0 on the 64-bit path).
     uint32_t shade(const GpuScene& scene, ViewTargets& targets, const std::vector<int32_t>& texturedMaterials,
-                   uint32_t points);
+                   bool untexturedDrawn, uint32_t points);
     // Shading dispatches of the last shade() (groups with their programs; repairs add more).
     uint32_t lastShadingDispatches() const { return dispatches_; }
 
@@ -56,13 +58,16 @@ private:
         uint32_t textureMask; // LFD_TEXTURE_MASK of its program
     };
     void splatPass(uint32_t points, unsigned program) const;
-    void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
+    void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, bool untexturedDrawn);
     void classifyAndShade(const GpuScene& scene, uint32_t pass);
     unsigned shadeProgram(uint32_t textureMask, uint32_t streams);
+    // The classify program: general (-1), or for scenes where every drawn pixel shades in
+    // group `onlyGroup` (LFDPR_ONLY_GROUP).
+    unsigned classifyProgram(int32_t onlyGroup);
 
     bool int64_;
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
-    gl::Program classifyProgram_, dispatchProgram_;
+    gl::Program classifyPrograms_[3], dispatchProgram_; // classify: general, only group 0, only group 1
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_, pixelStates_; // 64-bit path: depth_ holds the words
     gl::Buffer shadeWork_, materialGroups_;
@@ -70,6 +75,7 @@ private:
     std::vector<Group> groups_;
     std::vector<uint32_t> groupOfMaterial_; // per GPU material
     uint32_t groupCount_ = 0;            // dispatch slots in use (<= LFDPR_MAX_SHADE_GROUPS)
+    int32_t onlyGroup_ = -1;             // the one group every drawn pixel shades in, or -1
     uint32_t views_ = 0, width_ = 0, height_ = 0, tileCount_ = 0;
     uint32_t dispatches_ = 0;
 };

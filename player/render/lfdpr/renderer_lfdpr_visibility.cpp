@@ -135,7 +135,7 @@ public:
         shading_.splat(stored);
         timer.end();
         timer.begin(stage::kResolve);
-        info_.repairs = shading_.shade(scene, targets, texturedMaterials_, stored);
+        info_.repairs = shading_.shade(scene, targets, texturedMaterials_, untexturedDrawn_, stored);
         timer.end();
 
         // Step 4: what happened.
@@ -195,15 +195,19 @@ private:
         std::vector<LfdprDrawGpu> draws;
         largeBase_.clear();
         texturedMaterials_.clear();
+        untexturedDrawn_ = false;
         uint64_t triangles = 0;
         const bool hasUv = (scene.cpu().vertices.mask() & kStreamUv) != 0;
         for (const DrawItem& d : scene.draws()) {
             draws.push_back({d.node, scene.gpuMaterialIndex(d.material), d.firstIndex / 3, 0});
             largeBase_.push_back(uint32_t(triangles));
             triangles += d.indexCount / 3;
-            if (hasUv && d.material != kNone && hasTextures(scene.cpu().materials[size_t(d.material)]) &&
+            const bool textured =
+                hasUv && d.material != kNone && hasTextures(scene.cpu().materials[size_t(d.material)]);
+            if (textured &&
                 std::find(texturedMaterials_.begin(), texturedMaterials_.end(), d.material) == texturedMaterials_.end())
                 texturedMaterials_.push_back(d.material);
+            untexturedDrawn_ = untexturedDrawn_ || (!textured && d.indexCount >= 3);
         }
         if (triangles > 0xFFFFFFFFull)
             throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
@@ -261,6 +265,7 @@ private:
     size_t drawCount_ = 0;
     std::vector<uint32_t> largeBase_;
     std::vector<int32_t> texturedMaterials_;
+    bool untexturedDrawn_ = false; // some draw shades in the untextured group
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, large_, largeDispatch_, draws_;
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t triangleCapacity_ = 0, trianglesCoarsened_ = 0;
