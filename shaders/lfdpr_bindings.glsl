@@ -200,12 +200,13 @@ struct LfdprVisCountersGpu {
 // Shading work (std430, LFDPR_SSBO_SHADE_WORK): counters, then per group an indirect
 // dispatch (x, y, z) with the group's tile count in w (at byte 16 + 16 * group), then per
 // group a list of tile indices ((view * tilesY + tileY) * tilesX + tileX):
-// groupTiles[group * tileCount + i].
+// groupTiles[group * tileCount + i], then the repair list (32-bit path): one tile per
+// repaired pixel, at groupTiles[repairBase + i].
 struct LfdprShadeCountersGpu {
-    uint repairCount; // 32-bit path: view pixels whose point index lost a race
+    uint repairCount;    // 32-bit path: view pixels whose point index lost a race
+    uint repairBase;     // groupTiles index of the repair list: the tile of each such pixel
+    uint repairCapacity; // entries the repair list holds
     uint pad0;
-    uint pad1;
-    uint pad2;
 };
 #define LFDPR_SHADE_WORK_BUFFER \
     buffer ShadeWork { \

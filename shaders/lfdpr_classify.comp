@@ -6,7 +6,10 @@
 // appends the tile to that group's list (a shared-memory bit set finds it), so the
 // shading dispatches (lfdpr_shade.comp) visit only tiles with work for them.
 //   u_pass 0 classifies every pixel; u_pass 2 (after the 32-bit path's repair) only the
-//   pixels flagged LFDPR_PIXEL_REPAIR.
+//   pixels flagged LFDPR_PIXEL_REPAIR. LFDPR_REPAIR_LIST: the repair pass over only the
+//   tiles lfdpr_shade.comp listed for its flagged pixels (one workgroup per entry; a tile
+//   with several such pixels is listed, and visited, more than once - a later visit finds
+//   them classified already, and a tile listed twice for a group is shaded twice alike).
 // LFDPR_ONLY_GROUP g: every drawn pixel shades in group g (one textured material, or none),
 // so a pixel needs only its coverage, not the chain point -> record -> draw -> material.
 // This pass reads no triangle geometry and samples no texture: Mesa's llvmpipe runs every
@@ -83,15 +86,27 @@ void main()
         s_seen[lane] = 0u;
     barrier();
 
+    uvec2 size = uvec2(u_lfd.viewSize.xy);
+    uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
+#ifdef LFDPR_REPAIR_LIST
+    uint listed = groupTiles[shadeCounters.repairBase + gl_WorkGroupID.x];
+    uvec3 tileId = uvec3(listed / (tiles.x * tiles.y), listed % tiles.x, (listed / tiles.x) % tiles.y);
+#else
     // Dispatched as (view, tile x, tile y): the views of one tile run one after another,
     // so the view-interleaved per-pixel words (lfdViewWord) they share stay in cache.
-    uvec3 id = uvec3(gl_WorkGroupID.yz * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy, gl_WorkGroupID.x); // x, GL row, view
-    uvec2 size = uvec2(u_lfd.viewSize.xy);
+    uvec3 tileId = gl_WorkGroupID;
+#endif
+    uvec3 id = uvec3(tileId.yz * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy, tileId.x); // x, GL row, view
     if (any(greaterThanEqual(id.xy, size)) || id.z >= u_lfd.counts.x)
         return;
     uint pixel = lfdViewWord(id.z, id.x, id.y, size.x, u_lfd.counts.x);
+#ifdef LFDPR_REPAIR_LIST
+    if (pixelStates[pixel] != LFDPR_PIXEL_REPAIR)
+        return;
+#else
     if (u_pass == 2u && pixelStates[pixel] != LFDPR_PIXEL_REPAIR)
         return;
+#endif
 #ifdef LFDPR_ONLY_GROUP
     if (!covered(pixel)) {
         pixelStates[pixel] = LFDPR_PIXEL_SHADED;
@@ -110,9 +125,8 @@ void main()
     uint bit = 1u << (group & 31u);
     if ((atomicOr(s_seen[group >> 5], bit) & bit) == 0u) {
         // First pixel of this group in the tile: list the tile.
-        uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
         uint tileCount = tiles.x * tiles.y * u_lfd.counts.x;
-        uint tile = (id.z * tiles.y + gl_WorkGroupID.z) * tiles.x + gl_WorkGroupID.y;
+        uint tile = (id.z * tiles.y + tileId.z) * tiles.x + tileId.y;
         uint slot = atomicAdd(groupDispatch[group].w, 1u);
         groupTiles[group * tileCount + slot] = tile;
     }

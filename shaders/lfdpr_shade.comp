@@ -207,7 +207,9 @@ void main()
     if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != viewDepth[pixel]) {
         pixelStates[pixel] = LFDPR_PIXEL_REPAIR;
         viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp LFDPR_INDEX_PASS sets it again
-        atomicAdd(shadeCounters.repairCount, 1u);
+        uint entry = atomicAdd(shadeCounters.repairCount, 1u);
+        if (entry < shadeCounters.repairCapacity)
+            groupTiles[shadeCounters.repairBase + entry] = tile; // classified again from the list
         return;
     }
 #endif

@@ -144,6 +144,13 @@ void main()
 #else
                 if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
                     viewIndex[pixel] = index;
+#ifdef LFDPR_TEST_INDEX_RACES
+                // Test hook (LfdprOptions::testIndexRaces): every LFDPR_TEST_INDEX_RACES-th
+                // point also stores its index unconditionally, as a lost race would, so the
+                // tests can drive the repair through both of its paths.
+                if (index % uint(LFDPR_TEST_INDEX_RACES) == 0u)
+                    viewIndex[pixel] = index;
+#endif
 #endif
             }
         }

@@ -283,6 +283,35 @@ TEST_F(LfdprVisibilityTest, CompactPointsAndReportedMemory)
     EXPECT_GE(stats["shading_passes"], 1.0);
 }
 
+// The 32-bit path's index repair: a pixel whose stored index lost a race to a nearer
+// point is flagged in the shading pass, the index pass runs, and the pixel is classified
+// and shaded again - from the list of its tiles when the list holds them all, else by a
+// whole-frame pass. Races are forced here (LfdprOptions::testIndexRaces: every n-th point
+// also stores its index where it lost), and the views must come out byte-identical to an
+// unforced frame on both paths: few repairs (the list) and more than the list holds (6
+// views x 12 x 9 tiles = 648 entries here).
+TEST_F(LfdprVisibilityTest, IndexRepairRestoresTheImageFromTheListAndTheWholeFrame)
+{
+    const DisplayProfile profile = smallProfile(6, 96, 72);
+    const Scene scene = denseTestScene();
+    auto clean = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::TwoPass32});
+    const Frame reference = render(*clean, scene, profile, 0.6);
+    ASSERT_EQ(reference.info.repairs, 0u) << "the unforced frame needs no repair here";
+    bool listed = false, wholeFrame = false;
+    for (const uint32_t every : {61u, 3u}) { // measured: 53 and 1116 repairs
+        auto racy = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::TwoPass32, .testIndexRaces = every});
+        const Frame a = render(*racy, scene, profile, 0.6);
+        std::printf("every %u-th point racing: %llu repairs\n", every, (unsigned long long)a.info.repairs);
+        EXPECT_GT(a.info.repairs, 0u) << "every " << every;
+        listed = listed || (a.info.repairs > 0 && a.info.repairs <= 648);
+        wholeFrame = wholeFrame || a.info.repairs > 648;
+        for (uint32_t v = 0; v < profile.viewCount; ++v)
+            EXPECT_EQ(a.views[v].pixels, reference.views[v].pixels) << "view " << v << ", every " << every;
+    }
+    EXPECT_TRUE(listed) << "no case exercised the repair list";
+    EXPECT_TRUE(wholeFrame) << "no case exercised the whole-frame repair";
+}
+
 // Shading visits only the tiles that hold a pixel of each group: a scene of several
 // textured and untextured materials must come out as mvr draws it, with one shading
 // dispatch per group, and pixels of a material must not be shaded with another's
@@ -420,6 +449,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_classify.comp", "comp", {}},
         {"lfdpr_classify.comp", "comp", {"LFDPR_INT64 1"}},
         {"lfdpr_classify.comp", "comp", {"LFDPR_ONLY_GROUP 0u"}},
+        {"lfdpr_classify.comp", "comp", {"LFDPR_REPAIR_LIST 1"}},
+        {"lfdpr_classify.comp", "comp", {"LFDPR_REPAIR_LIST 1", "LFDPR_ONLY_GROUP 1u"}},
         {"lfdpr_classify.comp", "comp", {"LFDPR_INT64 1", "LFDPR_ONLY_GROUP 1u"}},
         {"lfdpr_shade_dispatch.comp", "comp", {}},
     };

@@ -28,20 +28,24 @@ uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 
 constexpr uint32_t kStreamsAll = kStreamPosition | kStreamNormal | kStreamTangent | kStreamUv;
 
-// LFDPR_SHADE_WORK_BUFFER: LfdprShadeCountersGpu (repairCount first), then the dispatches.
+// LFDPR_SHADE_WORK_BUFFER: LfdprShadeCountersGpu (repairCount, repairBase, repairCapacity),
+// then the dispatches.
 constexpr GLintptr kDispatchOffset = 16;
 
 } // namespace
 
-LfdprVisibilityShading::LfdprVisibilityShading(bool int64) : int64_(int64)
+LfdprVisibilityShading::LfdprVisibilityShading(bool int64, uint32_t testIndexRaces) : int64_(int64)
 {
     // A shader error thrown below leaves nothing behind: the programs built so far are
     // owned by their handles.
     const std::vector<std::string> defines = atomicsDefines(int64);
-    splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines));
+    std::vector<std::string> splatDefines = defines;
+    if (!int64 && testIndexRaces > 0)
+        splatDefines.push_back("LFDPR_TEST_INDEX_RACES " + std::to_string(testIndexRaces));
+    splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, splatDefines));
     if (!int64)
         indexProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"}));
-    classifyProgram(-1);
+    classifyProgram(-1, false);
     dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}));
     // The untextured group's program is always needed; built now (for a scene with every
     // stream) so a shader error surfaces at construction, not in the middle of a frame.
@@ -67,13 +71,15 @@ unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t str
     return name;
 }
 
-unsigned LfdprVisibilityShading::classifyProgram(int32_t onlyGroup)
+unsigned LfdprVisibilityShading::classifyProgram(int32_t onlyGroup, bool repairList)
 {
-    gl::Program& program = classifyPrograms_[onlyGroup + 1];
+    gl::Program& program = classifyPrograms_[onlyGroup + 1 + 3 * int(repairList)];
     if (!program) {
         std::vector<std::string> defines = atomicsDefines(int64_);
         if (onlyGroup >= 0)
             defines.push_back("LFDPR_ONLY_GROUP " + std::to_string(onlyGroup) + "u");
+        if (repairList)
+            defines.emplace_back("LFDPR_REPAIR_LIST 1");
         program.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines));
     }
     return program.get();
@@ -155,26 +161,39 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
         materialGroupsBytes_ = groupBytes;
     }
     glNamedBufferSubData(materialGroups_, 0, GLsizeiptr(groupBytes), groupOfMaterial_.data());
-    const size_t workBytes = kDispatchOffset + size_t(k.maxShadeGroups) * 16 + size_t(groupCount_) * tileCount_ * 4;
+    // The repair list after the groups' lists: one entry per repaired pixel, at most one
+    // dispatch's worth (more repairs than that classify the whole frame again instead).
+    repairBase_ = groupCount_ * tileCount_;
+    repairCapacity_ = std::min<uint32_t>(tileCount_, 65535u);
+    const size_t workBytes = kDispatchOffset + size_t(k.maxShadeGroups) * 16 +
+                             (size_t(groupCount_) * tileCount_ + repairCapacity_) * 4;
     if (workBytes > shadeWorkBytes_) {
-        shadeWork_ = gl::createBuffer(workBytes);
+        shadeWork_ = gl::createBuffer(workBytes, GL_DYNAMIC_STORAGE_BIT);
         shadeWorkBytes_ = workBytes;
     }
 }
 
-void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pass)
+void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pass, uint32_t repairs)
 {
     const LfdprConstants& k = LfdprConstants::get();
 
-    // Step 1: empty tile lists, then classify every pixel (pass 2: the repaired ones).
+    // Step 1: empty tile lists and the counters, then classify every pixel (pass 2: the
+    // repaired ones, from the repair list's tiles when it held them all).
     const GLuint zero = 0;
     glClearNamedBufferSubData(shadeWork_, GL_R32UI, 0, kDispatchOffset + GLsizeiptr(groupCount_) * 16,
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprShadeCountersGpu
+    glNamedBufferSubData(shadeWork_, 0, sizeof(counters), counters);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    const unsigned classify = classifyProgram(onlyGroup_);
+    const bool fromList = pass == 2 && repairs <= repairCapacity_;
+    const unsigned classify = classifyProgram(onlyGroup_, fromList);
     glUseProgram(classify);
-    glProgramUniform1ui(classify, k.locPass, pass);
-    glDispatchCompute(views_, divideUp(width_, k.shadeTile), divideUp(height_, k.shadeTile)); // (view, tile x, tile y)
+    if (fromList) {
+        glDispatchCompute(repairs, 1, 1); // one workgroup per listed tile
+    } else {
+        glProgramUniform1ui(classify, k.locPass, pass);
+        glDispatchCompute(views_, divideUp(width_, k.shadeTile), divideUp(height_, k.shadeTile)); // (view, tile x, tile y)
+    }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // Step 2: each group's indirect dispatch from its tile count.
@@ -192,7 +211,8 @@ void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pa
         const uint32_t slot = g == 0 ? 0u : 1u + uint32_t((g - 1) % shared);
         const GLuint program = shadeProgram(group.textureMask, scene.cpu().vertices.mask());
         glUseProgram(program);
-        glProgramUniform1ui(program, k.locPass, pass);
+        if (!int64_) // only the 32-bit path's programs have the pass
+            glProgramUniform1ui(program, k.locPass, pass);
         glProgramUniform1ui(program, k.locShadeGroup, slot);
         glProgramUniform1ui(program, k.locShadeMaterial, group.gpuMaterial);
         scene.bindMaterialTextures(group.material);
@@ -222,7 +242,7 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
     glClearTexImage(targets.colorArray(), 0, GL_RGBA, GL_FLOAT, kBackground);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
     dispatches_ = 0;
-    classifyAndShade(scene, 0);
+    classifyAndShade(scene, 0, 0);
 
     // The 32-bit path's rare repair: the index pass, then the flagged pixels again.
     uint32_t repairs = 0;
@@ -230,7 +250,7 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
         glGetNamedBufferSubData(shadeWork_, 0, sizeof(repairs), &repairs); // shadeCounters.repairCount
         if (repairs > 0) {
             splatPass(points, indexProgram_);
-            classifyAndShade(scene, 2);
+            classifyAndShade(scene, 2, repairs);
         }
     }
     // The EIA pass samples the array, read-back copies it.

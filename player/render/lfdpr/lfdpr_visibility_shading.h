@@ -23,7 +23,8 @@ class LfdprVisibilityShading {
 public:
     // int64: one 64-bit atomicMin pass (GL_NV_shader_atomic_int64; its shaders are only
     // compiled then); otherwise a depth pass and a point-index pass over 32-bit words.
-    explicit LfdprVisibilityShading(bool int64);
+    // testIndexRaces: LfdprOptions::testIndexRaces (32-bit path only).
+    explicit LfdprVisibilityShading(bool int64, uint32_t testIndexRaces = 0);
     ~LfdprVisibilityShading();
     LfdprVisibilityShading(const LfdprVisibilityShading&) = delete;
     LfdprVisibilityShading& operator=(const LfdprVisibilityShading&) = delete;
@@ -59,15 +60,19 @@ private:
     };
     void splatPass(uint32_t points, unsigned program) const;
     void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, bool untexturedDrawn);
-    void classifyAndShade(const GpuScene& scene, uint32_t pass);
+    // pass 0: every pixel; pass 2: the repaired pixels (`repairs` of them, listed by tile
+    // when the repair list held them all).
+    void classifyAndShade(const GpuScene& scene, uint32_t pass, uint32_t repairs);
     unsigned shadeProgram(uint32_t textureMask, uint32_t streams);
     // The classify program: general (-1), or for scenes where every drawn pixel shades in
-    // group `onlyGroup` (LFDPR_ONLY_GROUP).
-    unsigned classifyProgram(int32_t onlyGroup);
+    // group `onlyGroup` (LFDPR_ONLY_GROUP); `repairList`: the repair pass over the listed
+    // tiles (LFDPR_REPAIR_LIST).
+    unsigned classifyProgram(int32_t onlyGroup, bool repairList);
 
     bool int64_;
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
-    gl::Program classifyPrograms_[3], dispatchProgram_; // classify: general, only group 0, only group 1
+    std::map<int, gl::Program> classifyPrograms_; // by onlyGroup + 1 + 3 * repairList
+    gl::Program dispatchProgram_;
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_, pixelStates_; // 64-bit path: depth_ holds the words
     gl::Buffer shadeWork_, materialGroups_;
@@ -76,6 +81,7 @@ private:
     std::vector<uint32_t> groupOfMaterial_; // per GPU material
     uint32_t groupCount_ = 0;            // dispatch slots in use (<= LFDPR_MAX_SHADE_GROUPS)
     int32_t onlyGroup_ = -1;             // the one group every drawn pixel shades in, or -1
+    uint32_t repairBase_ = 0, repairCapacity_ = 0; // the repair list in the shade work buffer
     uint32_t views_ = 0, width_ = 0, height_ = 0, tileCount_ = 0;
     uint32_t dispatches_ = 0;
 };

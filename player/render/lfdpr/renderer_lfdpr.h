@@ -54,6 +54,10 @@ struct LfdprOptions {
     // it every frame stores what fits, is flagged as overflowed and renders partially,
     // rather than asking the driver for an unbounded allocation. 2^26 points = 3 GiB.
     uint32_t maxPointCapacity = 1u << 26;
+    // Test hook, visibility pipeline, 32-bit path: when n > 0, every n-th point also stores
+    // its index where it lost the depth test, as a lost race would, so tests can exercise
+    // the index repair deterministically. Never set outside tests.
+    uint32_t testIndexRaces = 0;
 };
 
 // Introspection for tests and the benchmark (values of the most recent render()).

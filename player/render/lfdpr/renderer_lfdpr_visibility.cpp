@@ -39,7 +39,7 @@ class LfdprVisibilityRenderer final : public LfdprRenderer {
 public:
     explicit LfdprVisibilityRenderer(const LfdprOptions& options)
         : options_(options), k_(LfdprConstants::get()), pointGeneration_(options.pixelCentreCulling),
-          shading_(lfdprUseInt64(options.atomics))
+          shading_(lfdprUseInt64(options.atomics), options.testIndexRaces)
     {
         GLint64 maxBlockBytes = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
