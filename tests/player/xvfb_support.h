@@ -50,8 +50,11 @@ public:
         if (pipe(fds) != 0)
             return;
         // The child inherits the write end under its own number (pipes are not close-on-exec).
+        // note: -noreset. By default an X server resets itself whenever its last client
+        // disconnects, and a client connecting during the reset is refused; tests that run
+        // lfd-play several times in a row then saw "cannot connect to a display" at random.
         std::vector<std::string> args = {binary, "-displayfd", std::to_string(fds[1]), "-screen", "0", screen,
-                                         "-nolisten", "tcp"};
+                                         "-nolisten", "tcp", "-noreset"};
         if (!fbdir.empty())
             args.insert(args.end(), {"-fbdir", fbdir.string()});
         std::vector<char*> argv;
