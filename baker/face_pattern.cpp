@@ -29,6 +29,16 @@
 // 6 instead of 4; rates 3, 3, 3: 13 instead of 9). The triangle parameterization (the one
 // of the Loop scheme, whose regular face is the triangle) gives n^2 triangles for rate n.
 // Only the parameterization is taken from Loop, never its (smooth) surface.
+//
+// Why points come from barycentric weights, not from a Bfr::SurfaceFactory over the
+// welded mesh: tried (Loop with every edge and vertex infinitely sharp evaluates each face
+// to its flat triangle, to 1e-14), it changed no stored position and met two OpenSubdiv
+// 3.5 defects on the samples: Bfr overran a heap buffer at corners where ~48 sharp
+// triangles meet (the car's wheel hubs: the bake aborted), and faces at non-manifold or
+// double-sided vertices evaluated up to 20% off their plane. Keeping clear of both needed
+// valence thresholds guessed from the samples, and a baker must not corrupt its heap on a
+// scene nobody measured; the bilinear scheme would be exact but parameterizes a triangle
+// as three quads (rates 2..6: 6/13/24/37/54 triangles against 4/9/16/25/36).
 
 #include "face_pattern.h"
 

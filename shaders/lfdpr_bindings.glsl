@@ -128,9 +128,26 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_SSBO_LARGE_DISPATCH 19 // per draw: uvec4 indirect dispatch (x = triangles)
 #define LFDPR_SSBO_VIS_COUNTERS 20 // LfdprVisCounters
 #define LFDPR_SSBO_SHADE_WORK 21   // LfdprShadeWork: per shading group, its tiles and dispatch
-#define LFDPR_SSBO_MATERIAL_IDS 22 // per view pixel: shading group of the visible point
-#define LFDPR_SSBO_MATERIAL_GROUPS 23 // per GPU material: its shading group
 #define LFDPR_UBO_CAMERA_LINE 2
+// The same buffers as buffer textures (texelFetch), for the passes that read them per
+// point or per pixel: on Mesa's llvmpipe a storage-buffer load at a per-invocation address
+// runs a loop over the SIMD lanes for each component (with a bounds check per lane), while
+// a texel fetch is one vectorised gather of a whole texel (see lfdpr_scene_access.glsl).
+#define LFDPR_UNIT_INDICES 8       // RGB32UI: texel t = triangle t's three vertex indices
+#define LFDPR_UNIT_POSITIONS 9     // RGB32F: texel v = vertex v's position
+#define LFDPR_UNIT_NORMALS 10      // RGB32F
+#define LFDPR_UNIT_TANGENTS 11     // RGBA32F
+#define LFDPR_UNIT_UVS 12          // RG32F
+#define LFDPR_UNIT_POINTS 13       // RG32UI: LfdprPointGpu
+#define LFDPR_UNIT_RECORDS 14      // RGBA32UI: LfdprRecordGpu (spacing as float bits)
+#define LFDPR_UNIT_DRAWS 15        // RGBA32UI: LfdprDrawGpu
+#define LFDPR_UNIT_NODES 16        // RGBA32F: NodeGpu, 8 texels each
+#define LFDPR_UNIT_MATERIALS 17    // RGBA32F: MaterialGpu, 4 texels each (flags as float bits)
+#define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
+#define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI point index (32-bit path)
+#define LFDPR_UNIT_PIXEL_STATES 20 // per view pixel: R32UI shading group / marker
+#define LFDPR_UNIT_MATERIAL_GROUPS 21 // per GPU material: R32UI shading group
+#define LFDPR_IMAGE_PIXEL_STATES 1 // the per-pixel states as an r32ui image buffer (writes)
 
 #define LFDPR_LOC_DRAW 7           // draw index (lfdpr_points.comp)
 #define LFDPR_LOC_TRIANGLES 8      // triangles in the draw
@@ -150,7 +167,7 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 // groups (each then visits its group's tiles and shades only its own pixels).
 #define LFDPR_SHADE_TILE 8
 #define LFDPR_MAX_SHADE_GROUPS 256
-// LFDPR_SSBO_MATERIAL_IDS markers besides shading groups.
+// Per-pixel state markers besides shading groups (LFDPR_UNIT_PIXEL_STATES).
 #define LFDPR_PIXEL_SHADED 0xFFFFFFFFu // written (or background)
 #define LFDPR_PIXEL_REPAIR 0xFFFFFFFEu // index disagrees with the depth key: redone
 
@@ -215,6 +232,14 @@ struct LfdprShadeCountersGpu {
         uint groupTiles[]; \
     }
 #define LFDPR_SHADE_DISPATCH_WIDTH 32768 // tiles per dispatch row (x stays under GL's 65535)
+// Classification and shading walk the views of one tile position in chunks of
+// LFDPR_VIEW_CHUNK views (a 64-bit view mask per group and chunk: LFDPR_VIEW_MASK_WORDS).
+// A group's list holds, per tile chunk with pixels of the group, three words: the chunk's
+// index (lfdShadeChunk) and the two words of its view mask.
+#define LFDPR_VIEW_CHUNK 64
+#define LFDPR_VIEW_MASK_WORDS 2
+#define LFDPR_SHADE_ENTRY_WORDS 3
+
 
 // Views the camera-line block holds offsets for (4 per vec4).
 #define LFDPR_MAX_VIEWS 256

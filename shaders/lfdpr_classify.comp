@@ -1,15 +1,23 @@
 #version 450 core
 // LFDPR shading, step 1 of 3 (the visibility pipeline): classify the view pixels. Each
-// workgroup is one LFDPR_SHADE_TILE-square tile of one view. A pixel no point covers is
-// marked shaded (the views were cleared to the background before); a covered pixel records the shading group of its point's
-// material in LFDPR_SSBO_MATERIAL_IDS, and the first pixel of each group in the tile
-// appends the tile to that group's list (a shared-memory bit set finds it), so the
-// shading dispatches (lfdpr_shade.comp) visit only tiles with work for them.
+// workgroup is one LFDPR_SHADE_TILE-square tile position of every view of one view chunk
+// (up to LFDPR_VIEW_CHUNK views; each invocation walks its pixel through those views). A
+// pixel no point covers is marked shaded (the views were cleared to the background
+// before); a covered pixel records the shading group of its point's material as its
+// state (LFDPR_IMAGE_PIXEL_STATES) and sets its view's bit in that group's view mask (shared
+// memory). At the end the workgroup appends one entry per group present - (tile chunk,
+// view mask) - to that group's list, so each shading dispatch (lfdpr_shade.comp) visits
+// only the tiles, and in them only the views, with work for it.
+// Why a workgroup spans the views: llvmpipe pays a fixed cost per workgroup (measured:
+// classifying the prototype's 48 views of 480x360 as one workgroup per 8x8 tile of one
+// view - 129,600 workgroups - cost about 100 ms with an empty shader body on the 2-core
+// machine); with the views inside, 48x fewer workgroups do the same work, and the 48
+// words a pixel owns (lfdViewWord: views interleaved) are read in one cache-friendly run.
 //   u_pass 0 classifies every pixel; u_pass 2 (after the 32-bit path's repair) only the
 //   pixels flagged LFDPR_PIXEL_REPAIR. LFDPR_REPAIR_LIST: the repair pass over only the
-//   tiles lfdpr_shade.comp listed for its flagged pixels (one workgroup per entry; a tile
-//   with several such pixels is listed, and visited, more than once - a later visit finds
-//   them classified already, and a tile listed twice for a group is shaded twice alike).
+//   tile chunks lfdpr_shade.comp listed for its flagged pixels (one workgroup per entry; a
+//   chunk listed several times is visited several times - a later visit finds its pixels
+//   classified already and lists nothing).
 // LFDPR_ONLY_GROUP g: every drawn pixel shades in group g (one textured material, or none),
 // so a pixel needs only its coverage, not the chain point -> record -> draw -> material.
 // This pass reads no triangle geometry and samples no texture: Mesa's llvmpipe runs every
@@ -27,107 +35,82 @@ layout(local_size_x = LFDPR_SHADE_TILE, local_size_y = LFDPR_SHADE_TILE) in;
 
 layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
 
-layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
-    uvec2 points[];
-};
-layout(std430, binding = LFDPR_SSBO_RECORDS) readonly buffer Records {
-    LfdprRecordGpu records[];
-};
-layout(std430, binding = LFDPR_SSBO_DRAWS) readonly buffer Draws {
-    LfdprDrawGpu draws[];
-};
-layout(std430, binding = LFDPR_SSBO_MATERIAL_GROUPS) readonly buffer MaterialGroups {
-    uint materialGroups[];
-};
-layout(std430, binding = LFDPR_SSBO_MATERIAL_IDS) buffer PixelStates {
-    uint pixelStates[];
-};
+#include "lfdpr_math.glsl"
+#define LFDPR_SCENE_TEXELS
+#include "lfdpr_scene_access.glsl"
+#include "lfdpr_pixel_access.glsl"
+#include "lfdpr_shade_chunks.glsl"
+layout(binding = LFDPR_UNIT_MATERIAL_GROUPS) uniform usamplerBuffer t_materialGroups;
+layout(binding = LFDPR_IMAGE_PIXEL_STATES, r32ui) uniform writeonly uimageBuffer u_pixelStates;
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
-#ifdef LFDPR_INT64
-layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) readonly buffer ViewWords {
-    uint64_t viewWords[];
-};
-#else
-layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) readonly buffer ViewDepth {
-    uint viewDepth[];
-};
-layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) readonly buffer ViewIndex {
-    uint viewIndex[];
-};
-#endif
 
-shared uint s_seen[LFDPR_MAX_SHADE_GROUPS / 32]; // groups already listed for this tile
+// Per shading group, the views of this chunk in which it holds a pixel of this tile.
+shared uint s_views[LFDPR_MAX_SHADE_GROUPS * LFDPR_VIEW_MASK_WORDS];
 
-// The point that won this pixel, or 0xFFFFFFFF.
-uint winner(uint pixel)
+const uint kWorkgroupSize = LFDPR_SHADE_TILE * LFDPR_SHADE_TILE;
+
+// The shading group of one pixel, or LFDPR_PIXEL_SHADED if no point covers it.
+uint pixelGroup(uint pixel)
 {
-#ifdef LFDPR_INT64
-    uint64_t word = viewWords[pixel];
-    return uint(word >> 32) == 0xFFFFFFFFu ? 0xFFFFFFFFu : uint(word & 0xFFFFFFFFul);
+#ifdef LFDPR_ONLY_GROUP
+    return lfdPixelKey(pixel) == 0xFFFFFFFFu ? LFDPR_PIXEL_SHADED : LFDPR_ONLY_GROUP;
 #else
-    return viewDepth[pixel] == 0xFFFFFFFFu ? 0xFFFFFFFFu : viewIndex[pixel];
-#endif
-}
-
-// Whether some point won this pixel (its depth word is not empty).
-bool covered(uint pixel)
-{
-#ifdef LFDPR_INT64
-    return uint(viewWords[pixel] >> 32) != 0xFFFFFFFFu;
-#else
-    return viewDepth[pixel] != 0xFFFFFFFFu;
+    uint index = lfdPixelWinner(pixel);
+    if (index == 0xFFFFFFFFu)
+        return LFDPR_PIXEL_SHADED;
+    return texelFetch(t_materialGroups, int(lfdDraw(lfdRecord(lfdPoint(index).x).draw).material)).x;
 #endif
 }
 
 void main()
 {
     uint lane = gl_LocalInvocationIndex;
-    if (lane < LFDPR_MAX_SHADE_GROUPS / 32)
-        s_seen[lane] = 0u;
+    for (uint i = lane; i < uint(LFDPR_MAX_SHADE_GROUPS * LFDPR_VIEW_MASK_WORDS); i += kWorkgroupSize)
+        s_views[i] = 0u;
     barrier();
 
+    // Step 1: this workgroup's tile chunk (lfdShadeEntry order).
     uvec2 size = uvec2(u_lfd.viewSize.xy);
     uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
 #ifdef LFDPR_REPAIR_LIST
-    uint listed = groupTiles[shadeCounters.repairBase + gl_WorkGroupID.x];
-    uvec3 tileId = uvec3(listed / (tiles.x * tiles.y), listed % tiles.x, (listed / tiles.x) % tiles.y);
+    uint chunkTile = groupTiles[shadeCounters.repairBase + gl_WorkGroupID.x];
 #else
-    // Dispatched as (view, tile x, tile y): the views of one tile run one after another,
-    // so the view-interleaved per-pixel words (lfdViewWord) they share stay in cache.
-    uvec3 tileId = gl_WorkGroupID;
+    uint chunkTile = (gl_WorkGroupID.z * tiles.y + gl_WorkGroupID.y) * tiles.x + gl_WorkGroupID.x;
 #endif
-    uvec3 id = uvec3(tileId.yz * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy, tileId.x); // x, GL row, view
-    if (any(greaterThanEqual(id.xy, size)) || id.z >= u_lfd.counts.x)
-        return;
-    uint pixel = lfdViewWord(id.z, id.x, id.y, size.x, u_lfd.counts.x);
+    LfdShadeChunk c = lfdShadeChunk(chunkTile, tiles, u_lfd.counts.x);
+    uvec2 xy = c.tile * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy; // x, GL row
+
+    // Step 2: the pixel in every view of the chunk.
+    if (all(lessThan(xy, size))) {
+        for (uint view = c.firstView; view < c.endView; ++view) {
+            uint pixel = lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x);
 #ifdef LFDPR_REPAIR_LIST
-    if (pixelStates[pixel] != LFDPR_PIXEL_REPAIR)
-        return;
+            if (lfdPixelState(pixel) != LFDPR_PIXEL_REPAIR)
+                continue;
 #else
-    if (u_pass == 2u && pixelStates[pixel] != LFDPR_PIXEL_REPAIR)
-        return;
+            if (u_pass == 2u && lfdPixelState(pixel) != LFDPR_PIXEL_REPAIR)
+                continue;
 #endif
-#ifdef LFDPR_ONLY_GROUP
-    if (!covered(pixel)) {
-        pixelStates[pixel] = LFDPR_PIXEL_SHADED;
-        return;
+            uint group = pixelGroup(pixel);
+            imageStore(u_pixelStates, int(pixel), uvec4(group));
+            if (group != LFDPR_PIXEL_SHADED) {
+                uint v = view - c.firstView;
+                atomicOr(s_views[group * uint(LFDPR_VIEW_MASK_WORDS) + (v >> 5)], 1u << (v & 31u));
+            }
+        }
     }
-    uint group = LFDPR_ONLY_GROUP;
-#else
-    uint index = winner(pixel);
-    if (index == 0xFFFFFFFFu) {
-        pixelStates[pixel] = LFDPR_PIXEL_SHADED;
-        return;
-    }
-    uint group = materialGroups[draws[records[points[index].x].draw].material];
-#endif
-    pixelStates[pixel] = group;
-    uint bit = 1u << (group & 31u);
-    if ((atomicOr(s_seen[group >> 5], bit) & bit) == 0u) {
-        // First pixel of this group in the tile: list the tile.
-        uint tileCount = tiles.x * tiles.y * u_lfd.counts.x;
-        uint tile = (id.z * tiles.y + tileId.z) * tiles.x + tileId.y;
+    barrier();
+
+    // Step 3: one entry per group present in the chunk.
+    uint entries = lfdShadeEntryCount(tiles, u_lfd.counts.x);
+    for (uint group = lane; group < uint(LFDPR_MAX_SHADE_GROUPS); group += kWorkgroupSize) {
+        uvec2 mask = uvec2(s_views[group * uint(LFDPR_VIEW_MASK_WORDS)], s_views[group * uint(LFDPR_VIEW_MASK_WORDS) + 1u]);
+        if (mask == uvec2(0u))
+            continue;
         uint slot = atomicAdd(groupDispatch[group].w, 1u);
-        groupTiles[group * tileCount + slot] = tile;
+        uint base = (group * entries + slot) * 3u;
+        groupTiles[base] = chunkTile;
+        groupTiles[base + 1u] = mask.x;
+        groupTiles[base + 2u] = mask.y;
     }
 }

@@ -4,6 +4,86 @@
 // record and sampling cell; everything else about it is derived from here.
 // Needs scene_bindings.glsl and lfdpr_bindings.glsl first.
 
+// LFDPR_SCENE_TEXELS: every per-point and per-pixel read goes through buffer textures
+// over the same buffers (LFDPR_UNIT_*): Mesa's llvmpipe turns a storage-buffer load at
+// a per-invocation address into a loop over the SIMD lanes, once per component and with a
+// bounds check per lane, while texelFetch is one vectorised gather of a whole texel;
+// measured on the shading pass, which follows point -> record -> draw -> triangle ->
+// vertices for every pixel (see README, "View generation and shading"). Point generation
+// (one invocation per triangle, reading its own draw's uniform data) keeps the SSBOs.
+#ifdef LFDPR_SCENE_TEXELS
+layout(binding = LFDPR_UNIT_INDICES) uniform usamplerBuffer t_sceneTriangles;
+layout(binding = LFDPR_UNIT_POSITIONS) uniform samplerBuffer t_scenePositions;
+layout(binding = LFDPR_UNIT_DRAWS) uniform usamplerBuffer t_draws;
+layout(binding = LFDPR_UNIT_RECORDS) uniform usamplerBuffer t_records;
+layout(binding = LFDPR_UNIT_POINTS) uniform usamplerBuffer t_points;
+layout(binding = LFDPR_UNIT_NODES) uniform samplerBuffer t_nodes;
+layout(binding = LFDPR_UNIT_MATERIALS) uniform samplerBuffer t_materials;
+
+NodeGpu lfdNode(uint node)
+{
+    int t = 8 * int(node);
+    NodeGpu n;
+    n.sceneFromObject = mat4(texelFetch(t_nodes, t), texelFetch(t_nodes, t + 1), texelFetch(t_nodes, t + 2),
+                             texelFetch(t_nodes, t + 3));
+    n.normalFromObject = mat4(texelFetch(t_nodes, t + 4), texelFetch(t_nodes, t + 5), texelFetch(t_nodes, t + 6),
+                              texelFetch(t_nodes, t + 7));
+    return n;
+}
+
+MaterialGpu lfdMaterial(uint material)
+{
+    int t = 4 * int(material);
+    MaterialGpu m;
+    m.baseColorFactor = texelFetch(t_materials, t);
+    m.emissiveCutoff = texelFetch(t_materials, t + 1);
+    m.params = texelFetch(t_materials, t + 2);
+    uvec4 bits = floatBitsToUint(texelFetch(t_materials, t + 3));
+    m.flags = bits.x;
+    m.alphaMode = bits.y;
+    m.pad0 = bits.z;
+    m.pad1 = bits.w;
+    return m;
+}
+
+LfdprDrawGpu lfdDraw(uint draw)
+{
+    uvec4 d = texelFetch(t_draws, int(draw));
+    return LfdprDrawGpu(d.x, d.y, d.z, d.w);
+}
+
+LfdprRecordGpu lfdRecord(uint record)
+{
+    uvec4 r = texelFetch(t_records, int(record));
+    return LfdprRecordGpu(r.x, r.y, uintBitsToFloat(r.zw));
+}
+
+uvec2 lfdPoint(uint index)
+{
+    return texelFetch(t_points, int(index)).xy;
+}
+
+// Vertex indices of triangle `primitive` of draw `draw`.
+uvec3 lfdTriangleVertices(LfdprDrawGpu draw, uint primitive)
+{
+    return texelFetch(t_sceneTriangles, int(draw.firstTriangle + primitive)).xyz;
+}
+
+vec3 lfdObjectPosition(uint vertex)
+{
+    return texelFetch(t_scenePositions, int(vertex)).xyz;
+}
+#else
+NodeGpu lfdNode(uint node)
+{
+    return nodes[node];
+}
+
+MaterialGpu lfdMaterial(uint material)
+{
+    return materials[material];
+}
+
 layout(std430, binding = LFDPR_SSBO_INDICES) readonly buffer SceneIndices {
     uint sceneIndices[];
 };
@@ -13,6 +93,11 @@ layout(std430, binding = LFDPR_SSBO_POSITIONS) readonly buffer ScenePositions {
 layout(std430, binding = LFDPR_SSBO_DRAWS) readonly buffer Draws {
     LfdprDrawGpu draws[];
 };
+
+LfdprDrawGpu lfdDraw(uint draw)
+{
+    return draws[draw];
+}
 
 // Vertex indices of triangle `primitive` of draw `draw`.
 uvec3 lfdTriangleVertices(LfdprDrawGpu draw, uint primitive)
@@ -25,12 +110,13 @@ vec3 lfdObjectPosition(uint vertex)
 {
     return vec3(scenePositions[3u * vertex], scenePositions[3u * vertex + 1u], scenePositions[3u * vertex + 2u]);
 }
+#endif
 
 // Scene-space positions of a triangle (the node transform applied as the raster vertex
 // shaders apply it).
 void lfdTrianglePositions(LfdprDrawGpu draw, uvec3 vertices, out vec3 p0, out vec3 p1, out vec3 p2)
 {
-    mat4 sceneFromObject = nodes[draw.node].sceneFromObject;
+    mat4 sceneFromObject = lfdNode(draw.node).sceneFromObject;
     p0 = (sceneFromObject * vec4(lfdObjectPosition(vertices.x), 1.0)).xyz;
     p1 = (sceneFromObject * vec4(lfdObjectPosition(vertices.y), 1.0)).xyz;
     p2 = (sceneFromObject * vec4(lfdObjectPosition(vertices.z), 1.0)).xyz;

@@ -8,16 +8,16 @@
 // replaces the paper's per-splat shading with tv_min / tv_max (multiview mipmapping),
 // which the paper's pipeline keeps.
 //
-// One dispatch per shading group (lfdpr_classify.comp): a workgroup per listed tile, and
-// in it the pixels of group u_group (a textured group also checks the material, since
-// groups are shared past LFDPR_MAX_SHADE_GROUPS). The program is compiled per set of
+// One dispatch per shading group (lfdpr_classify.comp): a workgroup per listed tile chunk
+// (one tile position over a run of views), walking the views of its mask and in each the
+// pixels of group u_group (a textured group also checks the material, since groups are
+// shared past LFDPR_MAX_SHADE_GROUPS). The program is compiled per set of
 // textures (LFD_TEXTURE_MASK) and the scene's vertex streams (LFD_STREAMS, a mask of
 // LFD_STREAM_*): the untextured group's program has no sampling code at all, and no
 // program reads a stream the scene lacks (llvmpipe would run those loads under an off mask).
 // On the 32-bit path, u_pass 0 first checks that the stored point index belongs to the
 // stored depth key; a pixel that fails is flagged LFDPR_PIXEL_REPAIR and counted, and is
 // classified and shaded again (u_pass 2) after lfdpr_visibility.comp's index pass.
-// Shaded pixels are marked LFDPR_PIXEL_SHADED.
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
 #endif
@@ -30,7 +30,10 @@
 vec2 g_duvdx, g_duvdy; // this pixel's uv footprint, for LFD_SAMPLE
 #define LFD_SAMPLE(t, uv) textureGrad(t, uv, g_duvdx, g_duvdy)
 #include "material_shading.glsl"
+#define LFDPR_SCENE_TEXELS
 #include "lfdpr_scene_access.glsl"
+#include "lfdpr_pixel_access.glsl"
+#include "lfdpr_shade_chunks.glsl"
 #include "lfdpr_camera_line.glsl"
 
 layout(local_size_x = LFDPR_SHADE_TILE, local_size_y = LFDPR_SHADE_TILE) in;
@@ -43,52 +46,20 @@ layout(location = LFDPR_LOC_SHADE_GROUP) uniform uint u_group;
 #define LFD_STREAMS 0xFu
 #endif
 
-layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
-    uvec2 points[];
-};
-layout(std430, binding = LFDPR_SSBO_RECORDS) readonly buffer Records {
-    LfdprRecordGpu records[];
-};
-layout(std430, binding = LFDPR_SSBO_NORMALS) readonly buffer SceneNormals {
-    float sceneNormals[];
-};
-layout(std430, binding = LFDPR_SSBO_TANGENTS) readonly buffer SceneTangents {
-    vec4 sceneTangents[];
-};
-layout(std430, binding = LFDPR_SSBO_UVS) readonly buffer SceneUvs {
-    vec2 sceneUvs[];
-};
-layout(std430, binding = LFDPR_SSBO_MATERIAL_IDS) buffer PixelStates {
-    uint pixelStates[];
-};
+layout(binding = LFDPR_UNIT_NORMALS) uniform samplerBuffer t_sceneNormals;
+layout(binding = LFDPR_UNIT_TANGENTS) uniform samplerBuffer t_sceneTangents;
+layout(binding = LFDPR_UNIT_UVS) uniform samplerBuffer t_sceneUvs;
+layout(binding = LFDPR_IMAGE_PIXEL_STATES, r32ui) uniform writeonly uimageBuffer u_pixelStates;
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
-#ifdef LFDPR_INT64
-layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) readonly buffer ViewWords {
-    uint64_t viewWords[];
-};
-#else
-layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) readonly buffer ViewDepth {
-    uint viewDepth[];
-};
-layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
+#ifndef LFDPR_INT64
+layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) writeonly buffer ViewIndex {
     uint viewIndex[];
 };
 #endif
 
-// The point that won this pixel, or 0xFFFFFFFF.
-uint winner(uint pixel)
-{
-#ifdef LFDPR_INT64
-    uint64_t word = viewWords[pixel];
-    return uint(word >> 32) == 0xFFFFFFFFu ? 0xFFFFFFFFu : uint(word & 0xFFFFFFFFul);
-#else
-    return viewDepth[pixel] == 0xFFFFFFFFu ? 0xFFFFFFFFu : viewIndex[pixel];
-#endif
-}
-
 vec3 objectNormal(uint vertex)
 {
-    return vec3(sceneNormals[3u * vertex], sceneNormals[3u * vertex + 1u], sceneNormals[3u * vertex + 2u]);
+    return texelFetch(t_sceneNormals, int(vertex)).xyz;
 }
 
 // Perspective-correct barycentrics of window point p (screen barycentrics weighted by
@@ -112,8 +83,8 @@ struct ViewTriangle {
 ViewTriangle viewTriangle(uint index, uint view)
 {
     ViewTriangle t;
-    LfdprRecordGpu r = records[points[index].x];
-    t.draw = draws[r.draw];
+    LfdprRecordGpu r = lfdRecord(lfdPoint(index).x);
+    t.draw = lfdDraw(r.draw);
     t.vi = lfdTriangleVertices(t.draw, r.primitive);
     lfdTrianglePositions(t.draw, t.vi, t.p0, t.p1, t.p2);
     vec2 viewSize = u_lfd.viewSize.xy;
@@ -140,7 +111,7 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
     vec3 b = perspectiveBarycentric(s0, s1, s2, invW, centre);
     vec3 bx = perspectiveBarycentric(s0, s1, s2, invW, centre + vec2(1.0, 0.0));
     vec3 by = perspectiveBarycentric(s0, s1, s2, invW, centre + vec2(0.0, 1.0));
-    NodeGpu node = nodes[draw.node];
+    NodeGpu node = lfdNode(draw.node);
     LfdSurfacePoint p;
     p.position = b.x * p0 + b.y * p1 + b.z * p2;
     vec3 eye = views[view].eyeScene.xyz;
@@ -156,14 +127,16 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
     p.frontFacing = (lfdCanonicalEdge(s0, s1, s2) > 0.0) != mirrored;
     p.tangent = vec4(0.0, 0.0, 0.0, 1.0);
     if ((LFD_STREAMS & LFD_STREAM_TANGENT) != 0u) {
-        vec4 t = b.x * sceneTangents[vi.x] + b.y * sceneTangents[vi.y] + b.z * sceneTangents[vi.z];
+        vec4 t = b.x * texelFetch(t_sceneTangents, int(vi.x)) + b.y * texelFetch(t_sceneTangents, int(vi.y)) +
+                 b.z * texelFetch(t_sceneTangents, int(vi.z));
         p.tangent = vec4(mat3(node.sceneFromObject) * t.xyz, t.w);
     }
     p.uv = vec2(0.0);
     g_duvdx = vec2(0.0);
     g_duvdy = vec2(0.0);
     if ((LFD_STREAMS & LFD_STREAM_UV) != 0u) {
-        vec2 uv0 = sceneUvs[vi.x], uv1 = sceneUvs[vi.y], uv2 = sceneUvs[vi.z];
+        vec2 uv0 = texelFetch(t_sceneUvs, int(vi.x)).xy, uv1 = texelFetch(t_sceneUvs, int(vi.y)).xy;
+        vec2 uv2 = texelFetch(t_sceneUvs, int(vi.z)).xy;
         p.uv = b.x * uv0 + b.y * uv1 + b.z * uv2;
         g_duvdx = bx.x * uv0 + bx.y * uv1 + bx.z * uv2 - p.uv;
         g_duvdy = by.x * uv0 + by.y * uv1 + by.z * uv2 - p.uv;
@@ -172,49 +145,66 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
     // Step 3: the material, as mvr shades it (alpha-masked cells were dropped when the
     // points were generated, so a discard here keeps the colour of the cell's centre).
     vec3 color;
-    lfdShadeMaterial(materials[draw.material], LFD_STREAMS, p, eye, color);
+    lfdShadeMaterial(lfdMaterial(draw.material), LFD_STREAMS, p, eye, color);
     return vec4(color, 1.0);
 }
 
-void main()
+// Shades pixel xy of one view if it is this group's (steps 2-4 of main).
+void shadeViewPixel(uint view, uvec2 xy, uint chunkTile)
 {
-    // Step 1: this workgroup's tile, from the group's list.
     uvec2 size = uvec2(u_lfd.viewSize.xy);
-    uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
-    uint tileCount = tiles.x * tiles.y * u_lfd.counts.x;
-    uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;
-    if (slot >= groupDispatch[u_group].w)
-        return;
-    uint tile = groupTiles[u_group * tileCount + slot];
-    uint view = tile / (tiles.x * tiles.y);
-    uvec2 tileXy = uvec2(tile % tiles.x, (tile / tiles.x) % tiles.y);
-    uvec3 id = uvec3(tileXy * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy, view); // x, GL row, view
-    if (any(greaterThanEqual(id.xy, size)))
-        return;
-    uint pixel = lfdViewWord(id.z, id.x, id.y, size.x, u_lfd.counts.x);
-    if (pixelStates[pixel] != u_group)
+    uint pixel = lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x);
+    if (lfdPixelState(pixel) != u_group)
         return;
 
     // Step 2: the winner's triangle in this view; a shared group shades one material.
-    ViewTriangle t = viewTriangle(winner(pixel), id.z);
+    ViewTriangle t = viewTriangle(lfdPixelWinner(pixel), view);
     if (u_group != 0u && t.draw.material != u_shadeMaterial)
         return;
-    vec2 centre = vec2(id.xy) + 0.5;
+    vec2 centre = vec2(xy) + 0.5;
 #ifndef LFDPR_INT64
     // Step 3 (32-bit path): the single splat pass stores depth by atomicMin and the index
     // by a plain store, so a racing point may have left its index under another's depth.
     LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
-    if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != viewDepth[pixel]) {
-        pixelStates[pixel] = LFDPR_PIXEL_REPAIR;
+    if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != lfdPixelKey(pixel)) {
+        imageStore(u_pixelStates, int(pixel), uvec4(LFDPR_PIXEL_REPAIR));
         viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp LFDPR_INDEX_PASS sets it again
         uint entry = atomicAdd(shadeCounters.repairCount, 1u);
         if (entry < shadeCounters.repairCapacity)
-            groupTiles[shadeCounters.repairBase + entry] = tile; // classified again from the list
+            groupTiles[shadeCounters.repairBase + entry] = chunkTile; // classified again from the list
         return;
     }
 #endif
 
     // Step 4: shade.
-    imageStore(u_views, ivec3(id), shadePixel(t, id.z, centre));
-    pixelStates[pixel] = LFDPR_PIXEL_SHADED;
+    // note: the pixel keeps its group as its state: a repair pass shades again only the
+    // views it lists, where re-shading such a pixel writes the same colour.
+    imageStore(u_views, ivec3(xy, view), shadePixel(t, view, centre));
+}
+
+void main()
+{
+    // Step 1: this workgroup's tile chunk and its views with pixels of the group, from
+    // the group's list (lfdpr_classify.comp). The view loop's trip count is the same for
+    // every invocation (the mask is the workgroup's), so llvmpipe runs no lane idle for it.
+    uvec2 size = uvec2(u_lfd.viewSize.xy);
+    uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
+    uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;
+    if (slot >= groupDispatch[u_group].w)
+        return;
+    uint base = (u_group * lfdShadeEntryCount(tiles, u_lfd.counts.x) + slot) * uint(LFDPR_SHADE_ENTRY_WORDS);
+    uint chunkTile = groupTiles[base];
+    uvec2 mask = uvec2(groupTiles[base + 1u], groupTiles[base + 2u]);
+    LfdShadeChunk c = lfdShadeChunk(chunkTile, tiles, u_lfd.counts.x);
+    uvec2 xy = c.tile * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy; // x, GL row
+    bool inside = all(lessThan(xy, size));
+    for (uint word = 0u; word < uint(LFDPR_VIEW_MASK_WORDS); ++word) {
+        uint bits = mask[word];
+        while (bits != 0u) {
+            uint v = uint(findLSB(bits));
+            bits &= bits - 1u;
+            if (inside)
+                shadeViewPixel(c.firstView + 32u * word + v, xy, chunkTile);
+        }
+    }
 }

@@ -367,9 +367,6 @@ std::vector<BlockUse> visibilityBlocks()
                                  {"Large", k.ssboLarge, sizeof(uint32_t)},
                                  {"LargeDispatch", k.ssboLargeDispatch, k.largeDispatchBytes},
                                  {"VisCounters", k.ssboVisCounters, k.visCounterBytes},
-                                 {"MaterialIds", k.ssboMaterialIds, sizeof(uint32_t)},
-                                 {"PixelStates", k.ssboMaterialIds, sizeof(uint32_t)},
-                                 {"MaterialGroups", k.ssboMaterialGroups, sizeof(uint32_t)},
                                  // Counters and the per-group dispatches, then the tile lists.
                                  {"ShadeWork", k.ssboShadeWork,
                                   k.shadeCounterBytes + k.maxShadeGroups * sizeof(glm::uvec4), "groupTiles[0]",

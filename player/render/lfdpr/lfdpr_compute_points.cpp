@@ -83,7 +83,7 @@ void LfdprComputePointGeneration::run(const GpuScene& scene, const std::vector<u
         glDispatchComputeIndirect(GLintptr(d) * GLintptr(k.largeDispatchBytes));
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glUseProgram(0);
 }
 

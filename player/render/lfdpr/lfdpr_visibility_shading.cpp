@@ -92,12 +92,27 @@ void LfdprVisibilityShading::resize(uint32_t viewCount, uint32_t width, uint32_t
     views_ = viewCount;
     width_ = width;
     height_ = height;
-    const uint32_t tile = LfdprConstants::get().shadeTile;
-    tileCount_ = divideUp(width, tile) * divideUp(height, tile) * viewCount;
+    const LfdprConstants& k = LfdprConstants::get();
+    tilesX_ = divideUp(width, k.shadeTile);
+    tilesY_ = divideUp(height, k.shadeTile);
+    chunks_ = divideUp(viewCount, k.viewChunk);
+    entryCount_ = tilesX_ * tilesY_ * chunks_; // lfdShadeEntryCount
+    tileCount_ = tilesX_ * tilesY_ * viewCount;
     const size_t pixels = std::max<size_t>(size_t(viewCount) * width * height, 1);
     depth_ = gl::createBuffer(pixels * (int64_ ? 8 : 4));
     index_ = int64_ ? gl::Buffer() : gl::createBuffer(pixels * 4);
     pixelStates_ = gl::createBuffer(pixels * 4);
+    // The classify and shading passes read the words through buffer textures
+    // (lfdpr_pixel_access.glsl).
+    auto texels = [](const gl::Buffer& buffer, GLenum format) {
+        gl::Texture texture = gl::createTexture(GL_TEXTURE_BUFFER);
+        if (buffer)
+            glTextureBuffer(texture, format, buffer);
+        return texture;
+    };
+    depthTexels_ = texels(depth_, int64_ ? GL_RG32UI : GL_R32UI);
+    indexTexels_ = texels(index_, GL_R32UI);
+    stateTexels_ = texels(pixelStates_, GL_R32UI);
     shadeWorkBytes_ = 0; // the tile lists depend on the tile count: sized again
 }
 
@@ -131,7 +146,7 @@ void LfdprVisibilityShading::splatPass(uint32_t points, unsigned program) const
     const uint32_t x = std::min<uint32_t>(groups, 65535u);
     glUseProgram(program);
     glDispatchCompute(x, divideUp(groups, x), 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glUseProgram(0);
 }
 
@@ -159,14 +174,16 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
     if (groupBytes > materialGroupsBytes_) {
         materialGroups_ = gl::createBuffer(groupBytes, GL_DYNAMIC_STORAGE_BIT);
         materialGroupsBytes_ = groupBytes;
+        materialGroupTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
+        glTextureBuffer(materialGroupTexels_, GL_R32UI, materialGroups_);
     }
     glNamedBufferSubData(materialGroups_, 0, GLsizeiptr(groupBytes), groupOfMaterial_.data());
     // The repair list after the groups' lists: one entry per repaired pixel, at most one
     // dispatch's worth (more repairs than that classify the whole frame again instead).
-    repairBase_ = groupCount_ * tileCount_;
+    repairBase_ = groupCount_ * entryCount_ * k.shadeEntryWords;
     repairCapacity_ = std::min<uint32_t>(tileCount_, 65535u);
     const size_t workBytes = kDispatchOffset + size_t(k.maxShadeGroups) * 16 +
-                             (size_t(groupCount_) * tileCount_ + repairCapacity_) * 4;
+                             (size_t(repairBase_) + repairCapacity_) * 4;
     if (workBytes > shadeWorkBytes_) {
         shadeWork_ = gl::createBuffer(workBytes, GL_DYNAMIC_STORAGE_BIT);
         shadeWorkBytes_ = workBytes;
@@ -192,9 +209,9 @@ void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pa
         glDispatchCompute(repairs, 1, 1); // one workgroup per listed tile
     } else {
         glProgramUniform1ui(classify, k.locPass, pass);
-        glDispatchCompute(views_, divideUp(width_, k.shadeTile), divideUp(height_, k.shadeTile)); // (view, tile x, tile y)
+        glDispatchCompute(tilesX_, tilesY_, chunks_); // lfdShadeChunk order
     }
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
 
     // Step 2: each group's indirect dispatch from its tile count.
     glUseProgram(dispatchProgram_);
@@ -220,7 +237,7 @@ void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pa
         ++dispatches_;
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glUseProgram(0);
 }
 
@@ -233,14 +250,18 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboMaterialIds, pixelStates_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboShadeWork, shadeWork_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboMaterialGroups, materialGroups_);
     glBindImageTexture(k.imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindTextureUnit(k.unitViewDepth, depthTexels_);
+    glBindTextureUnit(k.unitViewIndex, index_ ? indexTexels_.get() : 0u);
+    glBindTextureUnit(k.unitPixelStates, stateTexels_);
+    glBindTextureUnit(k.unitMaterialGroups, materialGroupTexels_);
+    glBindImageTexture(k.imagePixelStates, stateTexels_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
     // The background everywhere first (a memset; an imageStore per empty pixel in the
     // classify pass cost more on llvmpipe), then the shading overwrites covered pixels.
     glClearTexImage(targets.colorArray(), 0, GL_RGBA, GL_FLOAT, kBackground);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                    GL_TEXTURE_FETCH_BARRIER_BIT);
     dispatches_ = 0;
     classifyAndShade(scene, 0, 0);
 

@@ -75,6 +75,8 @@ private:
     gl::Program dispatchProgram_;
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_, pixelStates_; // 64-bit path: depth_ holds the words
+    gl::Texture depthTexels_, indexTexels_, stateTexels_; // the same, read as buffer textures
+    gl::Texture materialGroupTexels_;                     // materialGroups_ as a buffer texture
     gl::Buffer shadeWork_, materialGroups_;
     size_t shadeWorkBytes_ = 0, materialGroupsBytes_ = 0;
     std::vector<Group> groups_;
@@ -83,6 +85,7 @@ private:
     int32_t onlyGroup_ = -1;             // the one group every drawn pixel shades in, or -1
     uint32_t repairBase_ = 0, repairCapacity_ = 0; // the repair list in the shade work buffer
     uint32_t views_ = 0, width_ = 0, height_ = 0, tileCount_ = 0;
+    uint32_t tilesX_ = 0, tilesY_ = 0, chunks_ = 0, entryCount_ = 0; // tile chunks (lfdpr_shade_chunks.glsl)
     uint32_t dispatches_ = 0;
 };
 

@@ -25,6 +25,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -52,6 +53,8 @@ public:
         frameUbo_ = gl::createBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
         lineUbo_ = gl::createBuffer(sizeof(LfdprCameraLineGpu), GL_DYNAMIC_STORAGE_BIT);
         dummy_ = gl::createBuffer(16);
+        for (gl::Texture& t : texels_)
+            t = gl::createTexture(GL_TEXTURE_BUFFER);
         info_.int64Atomics = shading_.int64();
         info_.bytesPerPoint = k_.compactPointBytes;
     }
@@ -230,7 +233,7 @@ private:
         glNamedBufferSubData(lineUbo_, 0, sizeof(line.gpu), &line.gpu);
     }
 
-    void bindBuffers(const GpuScene& scene) const
+    void bindBuffers(const GpuScene& scene)
     {
         auto ssbo = [](unsigned binding, unsigned buffer) { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer); };
         auto stream = [&](unsigned location) {
@@ -253,6 +256,26 @@ private:
         ssbo(k_.ssboVisCounters, counters_);
         glBindBufferBase(GL_UNIFORM_BUFFER, k_.uboFrame, frameUbo_);
         glBindBufferBase(GL_UNIFORM_BUFFER, k_.uboCameraLine, lineUbo_);
+
+        // The per-point and per-pixel passes read the same buffers as buffer textures
+        // (lfdpr_scene_access.glsl, LFDPR_SCENE_TEXELS); attached again every frame since
+        // the point buffer is reallocated when it grows.
+        size_t slot = 0;
+        auto texel = [&](unsigned unit, GLenum format, unsigned buffer) {
+            const gl::Texture& texture = texels_[slot++];
+            glTextureBuffer(texture, format, buffer);
+            glBindTextureUnit(unit, texture);
+        };
+        texel(k_.unitIndices, GL_RGB32UI, scene.indexBuffer());
+        texel(k_.unitPositions, GL_RGB32F, stream(bindings::kAttribPosition));
+        texel(k_.unitNormals, GL_RGB32F, stream(bindings::kAttribNormal));
+        texel(k_.unitTangents, GL_RGBA32F, stream(bindings::kAttribTangent));
+        texel(k_.unitUvs, GL_RG32F, stream(bindings::kAttribUv));
+        texel(k_.unitPoints, GL_RG32UI, points_);
+        texel(k_.unitRecords, GL_RGBA32UI, records_);
+        texel(k_.unitDraws, GL_RGBA32UI, draws_);
+        texel(k_.unitNodes, GL_RGBA32F, scene.nodeTransformBuffer());
+        texel(k_.unitMaterials, GL_RGBA32F, scene.materialBuffer());
     }
 
     LfdprOptions options_;
@@ -267,6 +290,7 @@ private:
     std::vector<int32_t> texturedMaterials_;
     bool untexturedDrawn_ = false; // some draw shades in the untextured group
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, large_, largeDispatch_, draws_;
+    std::array<gl::Texture, 10> texels_; // buffer textures over the buffers above (bindBuffers)
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t triangleCapacity_ = 0, trianglesCoarsened_ = 0;
 };
