@@ -128,6 +128,8 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_SSBO_LARGE_DISPATCH 19 // per draw: uvec4 indirect dispatch (x = triangles)
 #define LFDPR_SSBO_VIS_COUNTERS 20 // LfdprVisCounters
 #define LFDPR_SSBO_SHADE_WORK 21   // LfdprShadeWork: per shading group, its tiles and dispatch
+#define LFDPR_SSBO_CHUNK_MASKS 22  // per shading group and tile chunk: the views splatted there
+#define LFDPR_SSBO_MATERIAL_GROUPS 23 // per GPU material: its shading group (uint)
 #define LFDPR_UBO_CAMERA_LINE 2
 // The same buffers as buffer textures (texelFetch), for the passes that read them per
 // point or per pixel: on Mesa's llvmpipe a storage-buffer load at a per-invocation address
@@ -145,31 +147,29 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_UNIT_MATERIALS 17    // RGBA32F: MaterialGpu, 4 texels each (flags as float bits)
 #define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
 #define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI point index (32-bit path)
-#define LFDPR_UNIT_PIXEL_STATES 20 // per view pixel: R32UI shading group / marker
 #define LFDPR_UNIT_MATERIAL_GROUPS 21 // per GPU material: R32UI shading group
-#define LFDPR_IMAGE_PIXEL_STATES 1 // the per-pixel states as an r32ui image buffer (writes)
 
 #define LFDPR_LOC_DRAW 7           // draw index (lfdpr_points.comp)
 #define LFDPR_LOC_TRIANGLES 8      // triangles in the draw
 #define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_shade.comp: the material whose textures are bound
 #define LFDPR_LOC_LARGE_BASE 10    // first LFDPR_SSBO_LARGE slot of the draw
 #define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_shade.comp: the shading group dispatched
-#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_dispatch.comp: groups in use
+#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_dispatch.comp, lfdpr_shade_list.comp: groups in use
+#define LFDPR_LOC_REPAIRS 13       // lfdpr_shade_list.comp (repair list): entries in the repair list
 
 // Triangles whose sampling box exceeds this many pixels are sampled by one workgroup
 // (LFDPR_GROUP_SIZE threads striding over the box) instead of one invocation.
 #define LFDPR_LARGE_PIXELS 4096
-// Shading (lfdpr_classify.comp, lfdpr_shade.comp): view pixels are shaded in tiles of
-// LFDPR_SHADE_TILE x LFDPR_SHADE_TILE pixels of one view. Materials fall into shading
-// groups - group 0 every untextured material, then one group per textured material (whose
-// textures are bound for its dispatch) - and each group's dispatch visits only the tiles
-// holding one of its pixels. Textured materials beyond LFDPR_MAX_SHADE_GROUPS - 1 share
-// groups (each then visits its group's tiles and shades only its own pixels).
+// Shading (lfdpr_shade_list.comp, lfdpr_shade.comp): view pixels are shaded in tiles of
+// LFDPR_SHADE_TILE x LFDPR_SHADE_TILE pixels, a tile position over a chunk of views at a
+// time. Materials fall into shading groups - group 0 every untextured material, then one
+// group per textured material (whose textures are bound for its dispatch) - and each
+// group's dispatch visits only the tile chunks, and in them the views, where a point of
+// the group was splatted (lfdpr_visibility.comp marks them). Textured materials beyond
+// LFDPR_MAX_SHADE_GROUPS - 1 share groups (each then visits its group's tiles and shades
+// only its own pixels).
 #define LFDPR_SHADE_TILE 8
 #define LFDPR_MAX_SHADE_GROUPS 256
-// Per-pixel state markers besides shading groups (LFDPR_UNIT_PIXEL_STATES).
-#define LFDPR_PIXEL_SHADED 0xFFFFFFFFu // written (or background)
-#define LFDPR_PIXEL_REPAIR 0xFFFFFFFEu // index disagrees with the depth key: redone
 
 // Word of view pixel (x, y) of `view` in the visibility pipeline's per-pixel buffers:
 // views interleaved per pixel, so the 48 splats of one point (same row, nearby columns:
@@ -215,13 +215,13 @@ struct LfdprVisCountersGpu {
 };
 
 // Shading work (std430, LFDPR_SSBO_SHADE_WORK): counters, then per group an indirect
-// dispatch (x, y, z) with the group's tile count in w (at byte 16 + 16 * group), then per
-// group a list of tile indices ((view * tilesY + tileY) * tilesX + tileX):
-// groupTiles[group * tileCount + i], then the repair list (32-bit path): one tile per
-// repaired pixel, at groupTiles[repairBase + i].
+// dispatch (x, y, z) with the group's entry count in w (at byte 16 + 16 * group), then per
+// group its list of tile chunk entries (LFDPR_SHADE_ENTRY_WORDS words each, from
+// groupTiles[group * lfdShadeEntryCount * 3]), then the repair list (32-bit path): the
+// tile chunk index of each repaired pixel, at groupTiles[repairBase + i].
 struct LfdprShadeCountersGpu {
     uint repairCount;    // 32-bit path: view pixels whose point index lost a race
-    uint repairBase;     // groupTiles index of the repair list: the tile of each such pixel
+    uint repairBase;     // groupTiles index of the repair list: the tile chunk of each such pixel
     uint repairCapacity; // entries the repair list holds
     uint pad0;
 };
@@ -232,10 +232,11 @@ struct LfdprShadeCountersGpu {
         uint groupTiles[]; \
     }
 #define LFDPR_SHADE_DISPATCH_WIDTH 32768 // tiles per dispatch row (x stays under GL's 65535)
-// Classification and shading walk the views of one tile position in chunks of
-// LFDPR_VIEW_CHUNK views (a 64-bit view mask per group and chunk: LFDPR_VIEW_MASK_WORDS).
-// A group's list holds, per tile chunk with pixels of the group, three words: the chunk's
-// index (lfdShadeChunk) and the two words of its view mask.
+// Marking and shading walk the views of one tile position in chunks of LFDPR_VIEW_CHUNK
+// views (a 64-bit view mask per group and chunk: LFDPR_VIEW_MASK_WORDS, at
+// LFDPR_SSBO_CHUNK_MASKS[(group * lfdShadeEntryCount + chunk index) * 2]). A group's list
+// holds, per tile chunk where the group was splatted, three words: the chunk's index
+// (lfdShadeChunk) and the two words of its view mask.
 #define LFDPR_VIEW_CHUNK 64
 #define LFDPR_VIEW_MASK_WORDS 2
 #define LFDPR_SHADE_ENTRY_WORDS 3

@@ -1,5 +1,5 @@
 // Reads of the visibility pipeline's per-view-pixel words (lfdViewWord order) by the
-// classify and shading passes: through buffer textures over the storage buffers the
+// shading pass: through buffer textures over the storage buffers the
 // splat wrote (LFDPR_UNIT_VIEW_*), for the reason given in lfdpr_scene_access.glsl
 // (llvmpipe loops over the SIMD lanes for a storage-buffer load at a per-pixel address;
 // texelFetch is one vectorised gather). Writes still go to the storage buffers; every
@@ -12,7 +12,6 @@ layout(binding = LFDPR_UNIT_VIEW_DEPTH) uniform usamplerBuffer t_viewWords; // R
 layout(binding = LFDPR_UNIT_VIEW_DEPTH) uniform usamplerBuffer t_viewDepth; // R32UI: depth key
 layout(binding = LFDPR_UNIT_VIEW_INDEX) uniform usamplerBuffer t_viewIndex; // R32UI: point index
 #endif
-layout(binding = LFDPR_UNIT_PIXEL_STATES) uniform usamplerBuffer t_pixelStates; // R32UI
 
 // The depth key stored for this pixel (0xFFFFFFFF: no point covers it).
 uint lfdPixelKey(uint pixel)
@@ -33,9 +32,4 @@ uint lfdPixelWinner(uint pixel)
 #else
     return texelFetch(t_viewDepth, int(pixel)).x == 0xFFFFFFFFu ? 0xFFFFFFFFu : texelFetch(t_viewIndex, int(pixel)).x;
 #endif
-}
-
-uint lfdPixelState(uint pixel)
-{
-    return texelFetch(t_pixelStates, int(pixel)).x;
 }

@@ -8,7 +8,7 @@
 // replaces the paper's per-splat shading with tv_min / tv_max (multiview mipmapping),
 // which the paper's pipeline keeps.
 //
-// One dispatch per shading group (lfdpr_classify.comp): a workgroup per listed tile chunk
+// One dispatch per shading group (lfdpr_shade_list.comp): a workgroup per listed tile chunk
 // (one tile position over a run of views), walking the views of its mask and in each the
 // pixels of group u_group (a textured group also checks the material, since groups are
 // shared past LFDPR_MAX_SHADE_GROUPS). The program is compiled per set of
@@ -16,8 +16,9 @@
 // LFD_STREAM_*): the untextured group's program has no sampling code at all, and no
 // program reads a stream the scene lacks (llvmpipe would run those loads under an off mask).
 // On the 32-bit path, u_pass 0 first checks that the stored point index belongs to the
-// stored depth key; a pixel that fails is flagged LFDPR_PIXEL_REPAIR and counted, and is
-// classified and shaded again (u_pass 2) after lfdpr_visibility.comp's index pass.
+// stored depth key; a pixel that fails gets no index, its tile chunk goes on the repair
+// list, and after lfdpr_visibility.comp's index pass the listed chunks are shaded again
+// (u_pass 2).
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
 #endif
@@ -49,7 +50,7 @@ layout(location = LFDPR_LOC_SHADE_GROUP) uniform uint u_group;
 layout(binding = LFDPR_UNIT_NORMALS) uniform samplerBuffer t_sceneNormals;
 layout(binding = LFDPR_UNIT_TANGENTS) uniform samplerBuffer t_sceneTangents;
 layout(binding = LFDPR_UNIT_UVS) uniform samplerBuffer t_sceneUvs;
-layout(binding = LFDPR_IMAGE_PIXEL_STATES, r32ui) uniform writeonly uimageBuffer u_pixelStates;
+layout(binding = LFDPR_UNIT_MATERIAL_GROUPS) uniform usamplerBuffer t_materialGroups;
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
 #ifndef LFDPR_INT64
 layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) writeonly buffer ViewIndex {
@@ -154,11 +155,16 @@ void shadeViewPixel(uint view, uvec2 xy, uint chunkTile)
 {
     uvec2 size = uvec2(u_lfd.viewSize.xy);
     uint pixel = lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x);
-    if (lfdPixelState(pixel) != u_group)
-        return;
+    uint index = lfdPixelWinner(pixel);
+    if (index == 0xFFFFFFFFu)
+        return; // background (the views were cleared to it)
 
-    // Step 2: the winner's triangle in this view; a shared group shades one material.
-    ViewTriangle t = viewTriangle(lfdPixelWinner(pixel), view);
+    // Step 2: the winner's triangle in this view, if its material shades in this group (the
+    // chunk was listed for the group's points, which may be hidden here); a shared group
+    // shades one material.
+    ViewTriangle t = viewTriangle(index, view);
+    if (texelFetch(t_materialGroups, int(t.draw.material)).x != u_group)
+        return;
     if (u_group != 0u && t.draw.material != u_shadeMaterial)
         return;
     vec2 centre = vec2(xy) + 0.5;
@@ -167,25 +173,23 @@ void shadeViewPixel(uint view, uvec2 xy, uint chunkTile)
     // by a plain store, so a racing point may have left its index under another's depth.
     LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
     if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != lfdPixelKey(pixel)) {
-        imageStore(u_pixelStates, int(pixel), uvec4(LFDPR_PIXEL_REPAIR));
         viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp LFDPR_INDEX_PASS sets it again
         uint entry = atomicAdd(shadeCounters.repairCount, 1u);
         if (entry < shadeCounters.repairCapacity)
-            groupTiles[shadeCounters.repairBase + entry] = chunkTile; // classified again from the list
+            groupTiles[shadeCounters.repairBase + entry] = chunkTile; // listed again (lfdpr_shade_list.comp)
         return;
     }
 #endif
 
-    // Step 4: shade.
-    // note: the pixel keeps its group as its state: a repair pass shades again only the
-    // views it lists, where re-shading such a pixel writes the same colour.
+    // Step 4: shade. (A repair pass shades again the listed chunks, where a pixel shaded
+    // already gets the same colour.)
     imageStore(u_views, ivec3(xy, view), shadePixel(t, view, centre));
 }
 
 void main()
 {
     // Step 1: this workgroup's tile chunk and its views with pixels of the group, from
-    // the group's list (lfdpr_classify.comp). The view loop's trip count is the same for
+    // the group's list (lfdpr_shade_list.comp). The view loop's trip count is the same for
     // every invocation (the mask is the workgroup's), so llvmpipe runs no lane idle for it.
     uvec2 size = uvec2(u_lfd.viewSize.xy);
     uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);

@@ -1,4 +1,4 @@
-// Tile chunks of the visibility pipeline's shading (lfdpr_classify.comp, lfdpr_shade.comp):
+// Tile chunks of the visibility pipeline's shading (lfdpr_shade_list.comp, lfdpr_shade.comp):
 // LFDPR_SHADE_TILE-square tile positions, each over a run of up to LFDPR_VIEW_CHUNK views.
 // Needs lfdpr_bindings.glsl first.
 

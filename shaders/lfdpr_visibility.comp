@@ -14,6 +14,10 @@
 // once per point (lfdpr_camera_line.glsl); per view only their window x moves, by one
 // multiply-add each. Facing, coverage and depth are then evaluated per view as usual.
 //
+// The depth pass also marks, for the point's shading group, the tile chunks and views it
+// wrote pixels in (LFDPR_SSBO_CHUNK_MASKS), from which lfdpr_shade_list.comp lists the
+// shading work.
+//
 // Depth key: lfdPlaneDepthKey (smaller = nearer; 0xFFFFFFFF = empty).
 // LFDPR_INT64: atomicMin on (key << 32 | point index) (GL_NV_shader_atomic_int64).
 // Otherwise 32-bit words: atomicMin on the key, and the invocation that lowered it stores
@@ -34,6 +38,7 @@
 #include "lfdpr_math.glsl"
 #include "lfdpr_scene_access.glsl"
 #include "lfdpr_camera_line.glsl"
+#include "lfdpr_shade_chunks.glsl"
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
@@ -46,6 +51,33 @@ layout(std430, binding = LFDPR_SSBO_RECORDS) readonly buffer Records {
 layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) readonly buffer VisCounters {
     LfdprVisCountersGpu vis;
 };
+#ifndef LFDPR_INDEX_PASS
+layout(std430, binding = LFDPR_SSBO_MATERIAL_GROUPS) readonly buffer MaterialGroups {
+    uint materialGroups[];
+};
+layout(std430, binding = LFDPR_SSBO_CHUNK_MASKS) buffer ChunkMasks {
+    uint chunkMasks[];
+};
+
+// Marks, for the point's shading group, the tile chunks of one view chunk in which it wrote
+// pixels: the tiles of columns tileLo..tileHi (the union over the chunk's views) and rows
+// tileRows, with the views it wrote in - one atomicOr per tile and mask word, once per
+// point and view chunk (lfdpr_shade_list.comp lists the marks). The union may list a tile
+// for a view the point missed; lfdpr_shade.comp checks each pixel's winner anyway.
+void lfdMarkChunk(uint group, uint chunk, int tileLo, int tileHi, uvec2 tileRows, uvec2 views, uvec2 tiles,
+                  uint entries)
+{
+    for (uint ty = tileRows.x; ty <= tileRows.y; ++ty) {
+        for (int tx = tileLo; tx <= tileHi; ++tx) {
+            uint word = (group * entries + (chunk * tiles.y + ty) * tiles.x + uint(tx)) * uint(LFDPR_VIEW_MASK_WORDS);
+            if (views.x != 0u)
+                atomicOr(chunkMasks[word], views.x);
+            if (views.y != 0u)
+                atomicOr(chunkMasks[word + 1u], views.y);
+        }
+    }
+}
+#endif
 #ifdef LFDPR_INT64
 layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewWords {
     uint64_t viewWords[];
@@ -103,56 +135,82 @@ void main()
     vec3 invW = vec3(v0.invW, v1.invW, v2.invW);
 
     uint viewCount = u_lfd.counts.x;
-    for (uint view = 0u; view < viewCount; ++view) {
-        // Step 4: this view's window positions of the cell; the columns it covers.
-        float e = lfdViewOffset(view);
-        vec2 a = lfdWindowInView(ca, e), b = lfdWindowInView(cb, e);
-        vec2 c = lfdWindowInView(cc, e), d = lfdWindowInView(cd, e);
-        vec2 s0 = lfdWindowInView(v0, e), s1 = lfdWindowInView(v1, e), s2 = lfdWindowInView(v2, e);
-        float xLo = max(min(min(a.x, b.x), min(c.x, d.x)), min(min(s0.x, s1.x), s2.x));
-        float xHi = min(max(max(a.x, b.x), max(c.x, d.x)), max(max(s0.x, s1.x), s2.x));
-        int colLo = max(int(ceil(xLo - 0.5)), 0), colHi = min(int(floor(xHi - 0.5)), viewPixels.x - 1);
-        if (colLo > colHi)
-            continue;
+#ifndef LFDPR_INDEX_PASS
+    uint group = materialGroups[draw.material];
+    uvec2 tiles = (uvec2(viewPixels) + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
+    uint entries = lfdShadeEntryCount(tiles, viewCount);
+    uvec2 tileRows = uvec2(rowLo, rowHi) / uint(LFDPR_SHADE_TILE);
+#endif
+    for (uint firstView = 0u; firstView < viewCount; firstView += uint(LFDPR_VIEW_CHUNK)) {
+        uint endView = min(firstView + uint(LFDPR_VIEW_CHUNK), viewCount);
+        int markLo = viewPixels.x, markHi = -1; // tile columns written in this view chunk
+        uvec2 markViews = uvec2(0u);
+        for (uint view = firstView; view < endView; ++view) {
+            // Step 4: this view's window positions of the cell; the columns it covers.
+            float e = lfdViewOffset(view);
+            vec2 a = lfdWindowInView(ca, e), b = lfdWindowInView(cb, e);
+            vec2 c = lfdWindowInView(cc, e), d = lfdWindowInView(cd, e);
+            vec2 s0 = lfdWindowInView(v0, e), s1 = lfdWindowInView(v1, e), s2 = lfdWindowInView(v2, e);
+            float xLo = max(min(min(a.x, b.x), min(c.x, d.x)), min(min(s0.x, s1.x), s2.x));
+            float xHi = min(max(max(a.x, b.x), max(c.x, d.x)), max(max(s0.x, s1.x), s2.x));
+            int colLo = max(int(ceil(xLo - 0.5)), 0), colHi = min(int(floor(xHi - 0.5)), viewPixels.x - 1);
+            if (colLo > colHi)
+                continue;
 
-        // Step 5: facing as the rasteriser decides it.
-        LfdViewTriangle t = lfdViewTriangle(s0, s1, s2, invW);
-        if (t.orientation == 0.0)
-            continue;
-        bool front = (t.orientation > 0.0) != mirrored;
-        if (!front && !doubleSided)
-            continue;
+            // Step 5: facing as the rasteriser decides it.
+            LfdViewTriangle t = lfdViewTriangle(s0, s1, s2, invW);
+            if (t.orientation == 0.0)
+                continue;
+            bool front = (t.orientation > 0.0) != mirrored;
+            if (!front && !doubleSided)
+                continue;
 
-        // Step 6: covered pixels, their plane depth, the atomic depth test.
-        for (int y = rowLo; y <= rowHi; ++y) {
-            for (int x = colLo; x <= colHi; ++x) {
-                vec2 p = vec2(x, y) + 0.5;
-                if (!lfdInsideQuad(a, b, c, d, p))
-                    continue;
-                vec3 edges = lfdEdgeValues(t, p);
-                if (!lfdOwnsSample(t, edges))
-                    continue;
-                uint key = lfdPlaneDepthKey(t, edges);
-                if (key < nearKey || key > farKey)
-                    continue; // clipped by the near or far plane
-                uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewPixels.x), viewCount);
+            // Step 6: covered pixels, their plane depth, the atomic depth test.
+            bool wrote = false;
+            for (int y = rowLo; y <= rowHi; ++y) {
+                for (int x = colLo; x <= colHi; ++x) {
+                    vec2 p = vec2(x, y) + 0.5;
+                    if (!lfdInsideQuad(a, b, c, d, p))
+                        continue;
+                    vec3 edges = lfdEdgeValues(t, p);
+                    if (!lfdOwnsSample(t, edges))
+                        continue;
+                    uint key = lfdPlaneDepthKey(t, edges);
+                    if (key < nearKey || key > farKey)
+                        continue; // clipped by the near or far plane
+                    uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewPixels.x), viewCount);
+                    wrote = true;
 #if defined(LFDPR_INT64)
-                atomicMin(viewWords[pixel], (uint64_t(key) << 32) | uint64_t(index));
+                    atomicMin(viewWords[pixel], (uint64_t(key) << 32) | uint64_t(index));
 #elif defined(LFDPR_INDEX_PASS)
-                if (viewDepth[pixel] == key)
-                    atomicMin(viewIndex[pixel], index);
+                    if (viewDepth[pixel] == key)
+                        atomicMin(viewIndex[pixel], index);
 #else
-                if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
-                    viewIndex[pixel] = index;
+                    if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
+                        viewIndex[pixel] = index;
 #ifdef LFDPR_TEST_INDEX_RACES
-                // Test hook (LfdprOptions::testIndexRaces): every LFDPR_TEST_INDEX_RACES-th
-                // point also stores its index unconditionally, as a lost race would, so the
-                // tests can drive the repair through both of its paths.
-                if (index % uint(LFDPR_TEST_INDEX_RACES) == 0u)
-                    viewIndex[pixel] = index;
+                    // Test hook (LfdprOptions::testIndexRaces): every LFDPR_TEST_INDEX_RACES-th
+                    // point also stores its index unconditionally, as a lost race would, so the
+                    // tests can drive the repair through both of its paths.
+                    if (index % uint(LFDPR_TEST_INDEX_RACES) == 0u)
+                        viewIndex[pixel] = index;
 #endif
 #endif
+                }
             }
+
+#ifndef LFDPR_INDEX_PASS
+            // Step 7: gather this view's tiles for the chunk's marks.
+            if (wrote) {
+                markLo = min(markLo, colLo / LFDPR_SHADE_TILE);
+                markHi = max(markHi, colHi / LFDPR_SHADE_TILE);
+                uint v = view - firstView;
+                markViews[v >> 5] |= 1u << (v & 31u);
+            }
+#endif
         }
+#ifndef LFDPR_INDEX_PASS
+        lfdMarkChunk(group, firstView / uint(LFDPR_VIEW_CHUNK), markLo, markHi, tileRows, markViews, tiles, entries);
+#endif
     }
 }

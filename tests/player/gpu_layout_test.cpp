@@ -367,6 +367,8 @@ std::vector<BlockUse> visibilityBlocks()
                                  {"Large", k.ssboLarge, sizeof(uint32_t)},
                                  {"LargeDispatch", k.ssboLargeDispatch, k.largeDispatchBytes},
                                  {"VisCounters", k.ssboVisCounters, k.visCounterBytes},
+                                 {"ChunkMasks", k.ssboChunkMasks, sizeof(uint32_t)},
+                                 {"MaterialGroups", k.ssboMaterialGroups, sizeof(uint32_t)},
                                  // Counters and the per-group dispatches, then the tile lists.
                                  {"ShadeWork", k.ssboShadeWork,
                                   k.shadeCounterBytes + k.maxShadeGroups * sizeof(glm::uvec4), "groupTiles[0]",
@@ -415,8 +417,6 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
         out.push_back({"lfdpr visibility" + path, {{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines,
                        visibilityBlocks()});
         out.push_back({"lfdpr shade" + path, {{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines, visibilityBlocks()});
-        out.push_back({"lfdpr classify" + path, {{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines,
-                       visibilityBlocks()});
         std::vector<std::string> untextured = defines;
         untextured.push_back("LFD_TEXTURE_MASK 0x0u");
         out.push_back({"lfdpr shade untextured" + path, {{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, untextured,
@@ -425,6 +425,9 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
     out.push_back({"lfdpr index pass", {{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"},
                    visibilityBlocks()});
     out.push_back({"lfdpr shade dispatch", {{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}, {}, visibilityBlocks()});
+    out.push_back({"lfdpr shade list", {{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {}, visibilityBlocks()});
+    out.push_back({"lfdpr shade list (repair)", {{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {"LFDPR_REPAIR_LIST 1"},
+                   visibilityBlocks()});
     out.push_back({"lfdpr compute points (alpha test)", {{GL_COMPUTE_SHADER, "lfdpr_points.comp"}},
                    {"LFDPR_ALPHA_TEST 1"}, visibilityBlocks()});
     return out;

@@ -129,8 +129,8 @@ TEST_F(LfdprRendererTest, AgreesWithMvr)
 
 TEST_F(LfdprRendererTest, ReportsStagesAndTheAtomicsPathInUse)
 {
-    // Both pipelines: the visibility pipeline's 8-byte points and 12 bytes per view pixel
-    // (depth, point index, material id), the paper pipeline's 48-byte points and 8 bytes.
+    // Both pipelines: the visibility pipeline's 8-byte points and 8 bytes per view pixel
+    // (depth, point index), the paper pipeline's 48-byte points and 8 bytes.
     for (const auto pipeline : {LfdprOptions::Pipeline::Visibility, LfdprOptions::Pipeline::Paper}) {
         const bool paper = pipeline == LfdprOptions::Pipeline::Paper;
         auto renderer = player::createLfdprRenderer({.pipeline = pipeline});
@@ -142,7 +142,7 @@ TEST_F(LfdprRendererTest, ReportsStagesAndTheAtomicsPathInUse)
         EXPECT_GT(info.points, 1000u);
         EXPECT_FALSE(info.overflowed);
         EXPECT_EQ(info.bytesPerPoint, paper ? 48u : 8u);
-        EXPECT_EQ(info.viewBufferBytes, 4u * 96u * 72u * (paper ? 8u : 12u));
+        EXPECT_EQ(info.viewBufferBytes, 4u * 96u * 72u * 8u); // depth + index, or depth + colour
         std::map<std::string, double> stats;
         for (const auto& [key, value] : renderer->extraStats())
             stats[key] = value;

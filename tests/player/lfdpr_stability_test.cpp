@@ -680,10 +680,9 @@ TEST_F(LfdprStabilityTest, ManyViewsAgreeWithMvrInOrder)
         keepImages("views" + std::to_string(viewCount), lfdpr, mvr, viewCount - 1);
         // Per view agreement, holes and plausibility (the reasons are at kManyViewsBounds).
         EXPECT_EQ(violations(c, kManyViewsBounds), std::vector<std::string>{});
-        // Bytes per view pixel: 12 (visibility pipeline: depth, point index, material id),
-        // 8 (paper pipeline: depth and colour).
-        const double bytesPerPixel =
-            lfdprRenderer->options().pipeline == player::LfdprOptions::Pipeline::Paper ? 8.0 : 12.0;
+        // Bytes per view pixel: 8 (visibility pipeline: depth and point index; paper
+        // pipeline: depth and colour).
+        const double bytesPerPixel = 8.0;
         const double expectedBytes = double(viewCount) * 64.0 * 48.0 * bytesPerPixel;
         EXPECT_EQ(lfdpr.stats.at("view_buffer_bytes"), expectedBytes);
         EXPECT_EQ(double(lfdprRenderer->lastFrame().viewBufferBytes), expectedBytes);

@@ -35,7 +35,8 @@ struct LfdprConstants {
              ssboTangents = lfdpr_bindings::kSsboTangents, ssboUvs = lfdpr_bindings::kSsboUvs,
              ssboDraws = lfdpr_bindings::kSsboDraws;
     unsigned ssboLarge = lfdpr_bindings::kSsboLarge, ssboLargeDispatch = lfdpr_bindings::kSsboLargeDispatch,
-             ssboVisCounters = lfdpr_bindings::kSsboVisCounters, ssboShadeWork = lfdpr_bindings::kSsboShadeWork;
+             ssboVisCounters = lfdpr_bindings::kSsboVisCounters, ssboShadeWork = lfdpr_bindings::kSsboShadeWork,
+             ssboChunkMasks = lfdpr_bindings::kSsboChunkMasks, ssboMaterialGroups = lfdpr_bindings::kSsboMaterialGroups;
     unsigned uboCameraLine = lfdpr_bindings::kUboCameraLine;
     unsigned unitIndices = lfdpr_bindings::kUnitIndices, unitPositions = lfdpr_bindings::kUnitPositions,
              unitNormals = lfdpr_bindings::kUnitNormals, unitTangents = lfdpr_bindings::kUnitTangents,
@@ -43,13 +44,12 @@ struct LfdprConstants {
              unitRecords = lfdpr_bindings::kUnitRecords, unitDraws = lfdpr_bindings::kUnitDraws,
              unitNodes = lfdpr_bindings::kUnitNodes, unitMaterials = lfdpr_bindings::kUnitMaterials,
              unitViewDepth = lfdpr_bindings::kUnitViewDepth, unitViewIndex = lfdpr_bindings::kUnitViewIndex,
-             unitPixelStates = lfdpr_bindings::kUnitPixelStates,
-             unitMaterialGroups = lfdpr_bindings::kUnitMaterialGroups,
-             imagePixelStates = lfdpr_bindings::kImagePixelStates;
+             unitMaterialGroups = lfdpr_bindings::kUnitMaterialGroups;
     int locDraw = lfdpr_bindings::kLocDraw, locTriangles = lfdpr_bindings::kLocTriangles,
         locShadeMaterial = lfdpr_bindings::kLocShadeMaterial, locLargeBase = lfdpr_bindings::kLocLargeBase,
-        locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups;
-    // Shading in tiles per shading group (lfdpr_classify.comp, lfdpr_shade.comp).
+        locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups,
+        locRepairs = lfdpr_bindings::kLocRepairs;
+    // Shading in tiles per shading group (lfdpr_shade_list.comp, lfdpr_shade.comp).
     uint32_t shadeTile = lfdpr_bindings::kShadeTile, maxShadeGroups = lfdpr_bindings::kMaxShadeGroups,
              shadeDispatchWidth = lfdpr_bindings::kShadeDispatchWidth, viewChunk = lfdpr_bindings::kViewChunk,
              shadeEntryWords = lfdpr_bindings::kShadeEntryWords;

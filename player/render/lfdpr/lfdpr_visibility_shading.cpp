@@ -45,7 +45,10 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, uint32_t testIndexRac
     splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, splatDefines));
     if (!int64)
         indexProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"}));
-    classifyProgram(-1, false);
+    listProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}));
+    if (!int64)
+        listRepairProgram_.reset(
+            gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {"LFDPR_REPAIR_LIST 1"}));
     dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}));
     // The untextured group's program is always needed; built now (for a scene with every
     // stream) so a shader error surfaces at construction, not in the middle of a frame.
@@ -71,20 +74,6 @@ unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t str
     return name;
 }
 
-unsigned LfdprVisibilityShading::classifyProgram(int32_t onlyGroup, bool repairList)
-{
-    gl::Program& program = classifyPrograms_[onlyGroup + 1 + 3 * int(repairList)];
-    if (!program) {
-        std::vector<std::string> defines = atomicsDefines(int64_);
-        if (onlyGroup >= 0)
-            defines.push_back("LFDPR_ONLY_GROUP " + std::to_string(onlyGroup) + "u");
-        if (repairList)
-            defines.emplace_back("LFDPR_REPAIR_LIST 1");
-        program.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_classify.comp"}}, defines));
-    }
-    return program.get();
-}
-
 void LfdprVisibilityShading::resize(uint32_t viewCount, uint32_t width, uint32_t height)
 {
     if (viewCount == views_ && width == width_ && height == height_ && depth_)
@@ -97,12 +86,10 @@ void LfdprVisibilityShading::resize(uint32_t viewCount, uint32_t width, uint32_t
     tilesY_ = divideUp(height, k.shadeTile);
     chunks_ = divideUp(viewCount, k.viewChunk);
     entryCount_ = tilesX_ * tilesY_ * chunks_; // lfdShadeEntryCount
-    tileCount_ = tilesX_ * tilesY_ * viewCount;
     const size_t pixels = std::max<size_t>(size_t(viewCount) * width * height, 1);
     depth_ = gl::createBuffer(pixels * (int64_ ? 8 : 4));
     index_ = int64_ ? gl::Buffer() : gl::createBuffer(pixels * 4);
-    pixelStates_ = gl::createBuffer(pixels * 4);
-    // The classify and shading passes read the words through buffer textures
+    // The shading pass reads the words through buffer textures
     // (lfdpr_pixel_access.glsl).
     auto texels = [](const gl::Buffer& buffer, GLenum format) {
         gl::Texture texture = gl::createTexture(GL_TEXTURE_BUFFER);
@@ -112,18 +99,27 @@ void LfdprVisibilityShading::resize(uint32_t viewCount, uint32_t width, uint32_t
     };
     depthTexels_ = texels(depth_, int64_ ? GL_RG32UI : GL_R32UI);
     indexTexels_ = texels(index_, GL_R32UI);
-    stateTexels_ = texels(pixelStates_, GL_R32UI);
     shadeWorkBytes_ = 0; // the tile lists depend on the tile count: sized again
+    chunkMaskBytes_ = 0;
 }
 
-size_t LfdprVisibilityShading::viewBufferBytes() const { return size_t(views_) * width_ * height_ * 12; }
+size_t LfdprVisibilityShading::viewBufferBytes() const { return size_t(views_) * width_ * height_ * 8; }
 
-size_t LfdprVisibilityShading::shadeWorkBytes() const { return shadeWorkBytes_ + materialGroupsBytes_; }
+size_t LfdprVisibilityShading::shadeWorkBytes() const {
+    return shadeWorkBytes_ + materialGroupsBytes_ + chunkMaskBytes_;
+}
 
-void LfdprVisibilityShading::splat(uint32_t points) const
+void LfdprVisibilityShading::splat(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
+                                   uint32_t points)
 {
     const LfdprConstants& k = LfdprConstants::get();
-    // Step 1: clear: all ones = empty (a depth key beyond every depth).
+    // Step 1: the shading groups (the splat marks where each group's points land); clear
+    // the marks, and the view words: all ones = empty (a depth key beyond every depth).
+    updateGroups(scene, texturedMaterials);
+    const GLuint zero = 0;
+    glClearNamedBufferData(chunkMasks_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboMaterialGroups, materialGroups_);
     const GLuint ones = 0xFFFFFFFFu;
     glClearNamedBufferData(depth_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
     if (index_)
@@ -150,8 +146,7 @@ void LfdprVisibilityShading::splatPass(uint32_t points, unsigned program) const
     glUseProgram(0);
 }
 
-void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
-                                          bool untexturedDrawn)
+void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials)
 {
     const LfdprConstants& k = LfdprConstants::get();
     const uint32_t shared = k.maxShadeGroups - 1; // dispatch slots for textured materials
@@ -167,7 +162,6 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
         groupOfMaterial_[scene.gpuMaterialIndex(m)] = 1u + uint32_t(i % shared);
     }
     groupCount_ = uint32_t(std::min<size_t>(groups_.size(), k.maxShadeGroups));
-    onlyGroup_ = texturedMaterials.empty() ? 0 : (texturedMaterials.size() == 1 && !untexturedDrawn ? 1 : -1);
 
     // Step 2: the buffers (grown, never shrunk, so a steady scene allocates nothing).
     const size_t groupBytes = groupOfMaterial_.size() * sizeof(uint32_t);
@@ -181,21 +175,28 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
     // The repair list after the groups' lists: one entry per repaired pixel, at most one
     // dispatch's worth (more repairs than that classify the whole frame again instead).
     repairBase_ = groupCount_ * entryCount_ * k.shadeEntryWords;
-    repairCapacity_ = std::min<uint32_t>(tileCount_, 65535u);
+    // A repair entry lists its chunk for every group, so at most entryCount_ of them keep
+    // each group's list within its room.
+    repairCapacity_ = std::min<uint32_t>(entryCount_, 65535u);
     const size_t workBytes = kDispatchOffset + size_t(k.maxShadeGroups) * 16 +
                              (size_t(repairBase_) + repairCapacity_) * 4;
     if (workBytes > shadeWorkBytes_) {
         shadeWork_ = gl::createBuffer(workBytes, GL_DYNAMIC_STORAGE_BIT);
         shadeWorkBytes_ = workBytes;
     }
+    const size_t maskBytes = size_t(groupCount_) * entryCount_ * 2 * sizeof(uint32_t);
+    if (maskBytes > chunkMaskBytes_) {
+        chunkMasks_ = gl::createBuffer(maskBytes);
+        chunkMaskBytes_ = maskBytes;
+    }
 }
 
-void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pass, uint32_t repairs)
+void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass, uint32_t repairs)
 {
     const LfdprConstants& k = LfdprConstants::get();
 
-    // Step 1: empty tile lists and the counters, then classify every pixel (pass 2: the
-    // repaired ones, from the repair list's tiles when it held them all).
+    // Step 1: empty lists and the counters, then each group's list of tile chunks from the
+    // splat's marks (pass 2: the repair list's chunks when it held them all, else all again).
     const GLuint zero = 0;
     glClearNamedBufferSubData(shadeWork_, GL_R32UI, 0, kDispatchOffset + GLsizeiptr(groupCount_) * 16,
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -203,24 +204,25 @@ void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pa
     glNamedBufferSubData(shadeWork_, 0, sizeof(counters), counters);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const bool fromList = pass == 2 && repairs <= repairCapacity_;
-    const unsigned classify = classifyProgram(onlyGroup_, fromList);
-    glUseProgram(classify);
-    if (fromList) {
-        glDispatchCompute(repairs, 1, 1); // one workgroup per listed tile
-    } else {
-        glProgramUniform1ui(classify, k.locPass, pass);
-        glDispatchCompute(tilesX_, tilesY_, chunks_); // lfdShadeChunk order
-    }
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    const unsigned list = fromList ? listRepairProgram_.get() : listProgram_.get();
+    glUseProgram(list);
+    glProgramUniform1ui(list, k.locShadeGroups, groupCount_);
+    if (fromList)
+        glProgramUniform1ui(list, k.locRepairs, repairs);
+    const uint32_t invocations = (fromList ? repairs : entryCount_) * groupCount_;
+    const uint32_t workgroups = divideUp(invocations, 64);
+    const uint32_t width = std::min<uint32_t>(workgroups, k.shadeDispatchWidth);
+    glDispatchCompute(width, divideUp(workgroups, width), 1); // lfdpr_shade_list.comp's (x, y) order
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-    // Step 2: each group's indirect dispatch from its tile count.
+    // Step 2: each group's indirect dispatch from its entry count.
     glUseProgram(dispatchProgram_);
     glProgramUniform1ui(dispatchProgram_, k.locShadeGroups, groupCount_);
     glDispatchCompute(divideUp(groupCount_, 64), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
-    // Step 3: one dispatch per group over its tiles, its textures bound. Groups shade
-    // disjoint pixels, so no barrier is needed between them.
+    // Step 3: one dispatch per group over its tile chunks, its textures bound. Each pixel
+    // is shaded only by its winner's group, so no barrier is needed between them.
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, shadeWork_);
     const uint32_t shared = k.maxShadeGroups - 1;
     for (size_t g = 0; g < groups_.size(); ++g) {
@@ -242,11 +244,9 @@ void LfdprVisibilityShading::classifyAndShade(const GpuScene& scene, uint32_t pa
 }
 
 uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targets,
-                                       const std::vector<int32_t>& texturedMaterials, bool untexturedDrawn,
                                        uint32_t points)
 {
     const LfdprConstants& k = LfdprConstants::get();
-    updateGroups(scene, texturedMaterials, untexturedDrawn);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);
@@ -254,16 +254,14 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
     glBindImageTexture(k.imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glBindTextureUnit(k.unitViewDepth, depthTexels_);
     glBindTextureUnit(k.unitViewIndex, index_ ? indexTexels_.get() : 0u);
-    glBindTextureUnit(k.unitPixelStates, stateTexels_);
     glBindTextureUnit(k.unitMaterialGroups, materialGroupTexels_);
-    glBindImageTexture(k.imagePixelStates, stateTexels_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
-    // The background everywhere first (a memset; an imageStore per empty pixel in the
-    // classify pass cost more on llvmpipe), then the shading overwrites covered pixels.
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
+    // The background everywhere first (a memset), then the shading overwrites covered pixels.
     glClearTexImage(targets.colorArray(), 0, GL_RGBA, GL_FLOAT, kBackground);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_TEXTURE_FETCH_BARRIER_BIT);
     dispatches_ = 0;
-    classifyAndShade(scene, 0, 0);
+    listAndShade(scene, 0, 0);
 
     // The 32-bit path's rare repair: the index pass, then the flagged pixels again.
     uint32_t repairs = 0;
@@ -271,7 +269,7 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
         glGetNamedBufferSubData(shadeWork_, 0, sizeof(repairs), &repairs); // shadeCounters.repairCount
         if (repairs > 0) {
             splatPass(points, indexProgram_);
-            classifyAndShade(scene, 2, repairs);
+            listAndShade(scene, 2, repairs);
         }
     }
     // The EIA pass samples the array, read-back copies it.

@@ -135,10 +135,10 @@ public:
         // Step 3: visibility, then shading once per visible pixel.
         bindBuffers(scene);
         timer.begin(stage::kViewGeneration);
-        shading_.splat(stored);
+        shading_.splat(scene, texturedMaterials_, stored);
         timer.end();
         timer.begin(stage::kResolve);
-        info_.repairs = shading_.shade(scene, targets, texturedMaterials_, untexturedDrawn_, stored);
+        info_.repairs = shading_.shade(scene, targets, stored);
         timer.end();
 
         // Step 4: what happened.
@@ -198,7 +198,6 @@ private:
         std::vector<LfdprDrawGpu> draws;
         largeBase_.clear();
         texturedMaterials_.clear();
-        untexturedDrawn_ = false;
         uint64_t triangles = 0;
         const bool hasUv = (scene.cpu().vertices.mask() & kStreamUv) != 0;
         for (const DrawItem& d : scene.draws()) {
@@ -210,7 +209,6 @@ private:
             if (textured &&
                 std::find(texturedMaterials_.begin(), texturedMaterials_.end(), d.material) == texturedMaterials_.end())
                 texturedMaterials_.push_back(d.material);
-            untexturedDrawn_ = untexturedDrawn_ || (!textured && d.indexCount >= 3);
         }
         if (triangles > 0xFFFFFFFFull)
             throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
@@ -288,7 +286,6 @@ private:
     size_t drawCount_ = 0;
     std::vector<uint32_t> largeBase_;
     std::vector<int32_t> texturedMaterials_;
-    bool untexturedDrawn_ = false; // some draw shades in the untextured group
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, large_, largeDispatch_, draws_;
     std::array<gl::Texture, 10> texels_; // buffer textures over the buffers above (bindBuffers)
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
