@@ -97,6 +97,11 @@ bool lfdSetupTriangle(vec3 p0, vec3 p1, vec3 p2, uint outside0, uint outside1, u
     s.texPerWorld = textured ? stats.texPerWorld / areaScale : 0.0;
     if ((options & LFDPR_OPTION_TEXTURE_SPLATTING) != 0u)
         spacing /= lfdTexelSplatDensityScale(sizeXy, sizeUv);
+#ifdef LFDPR_CELL_SCALE
+    // Beyond the paper (LfdprOptions::cellScale; compute point generation of the
+    // visibility pipeline only): cells of several sampling spacings, fewer points.
+    spacing *= float(LFDPR_CELL_SCALE);
+#endif
 
     // Step 6: T_align and S_ortho: sampling coordinates of the vertices (p0 at the origin);
     // beyond LFDPR_MAX_TILES tiles the triangle is sampled coarser.

@@ -76,6 +76,11 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
                  "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
     app.add_flag("--no-pixel-culling", f.noPixelCulling,
                  "lfdpr: sample every triangle, also those that hold no view pixel centre");
+    app.add_option("--lfdpr-cell-scale", o.rendererOptions.lfdpr.cellScale,
+                   "lfdpr visibility pipeline: point cells of N x N sampling spacings (1 = the paper's density; "
+                   "the views are the same for every N)")
+        ->check(CLI::Range(1u, 8u))
+        ->capture_default_str();
     app.add_option("--atomics", f.atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
     app.add_option("--lfdpr-pipeline", f.pipeline,
                    "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")

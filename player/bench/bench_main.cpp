@@ -96,7 +96,7 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
     app.add_flag("--lfdpr-variants", flags.variants,
                  "also time the paper's pipeline (lfdpr-paper) and lfdpr with each innovation "
                  "disabled (lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting, lfdpr-no-pixel-culling, "
-                 "lfdpr-no-mv-mipmapping)");
+                 "lfdpr-no-cell-scaling, lfdpr-no-mv-mipmapping)");
     app.add_option("--display", flags.displayProfile, "display profile JSON (default: the paper's prototype)");
     flags.viewsOpt = app.add_option("--views", flags.views, "number of views (overrides the profile); a "
                                                             "comma-separated list runs the matrix once per view count");

@@ -170,7 +170,13 @@ TEST_F(BenchTest, LfdprVariantsDisableOneInnovationEach)
         EXPECT_EQ(lfdpr->options().textureSplatting, e.texture) << e.name;
         EXPECT_EQ(lfdpr->options().multiviewMipmapping, e.mip) << e.name;
         EXPECT_EQ(lfdpr->options().pixelCentreCulling, e.cull) << e.name;
+        EXPECT_EQ(lfdpr->options().cellScale, 2u) << e.name;
     }
+    std::unique_ptr<player::Renderer> paperDensity = player::createRenderer("lfdpr-no-cell-scaling");
+    const auto* lfdpr = dynamic_cast<const player::LfdprRenderer*>(paperDensity.get());
+    ASSERT_NE(lfdpr, nullptr);
+    EXPECT_EQ(lfdpr->options().cellScale, 1u);
+    EXPECT_TRUE(lfdpr->options().pixelCentreCulling);
 }
 
 TEST_F(BenchTest, LfdprRowHasPointGenerationAndRatioLines)

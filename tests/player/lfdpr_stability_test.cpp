@@ -337,7 +337,8 @@ TEST_F(LfdprStabilityTest, HugeQuadFillingEveryViewIsTiledWithoutHoles)
             glm::vec3(0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f));
     finishFramed(scene);
 
-    auto lfdprRenderer = player::createLfdprRenderer();
+    // The paper's density (cellScale 1): the point count and the tiling are checked against it.
+    auto lfdprRenderer = player::createLfdprRenderer({.cellScale = 1});
     const Frame lfdpr = renderFrame(*lfdprRenderer, scene, profile);
     const Frame mvr = renderFrame("mvr", scene, profile);
     const Comparison c = compare(lfdpr, mvr, 8);
@@ -382,7 +383,8 @@ TEST_F(LfdprStabilityTest, HugeSliverBeyondSixteenTilesIsCoarsenedWithoutHoles)
     finishFramed(scene);
 
     const float f = player::lfdpr_math::lfdCoarsening(glm::vec2(float(samplesX), float(samplesY)), 2048.0f, 16.0f);
-    auto lfdprRenderer = player::createLfdprRenderer();
+    // The paper's density (cellScale 1): the coarsening is checked against it.
+    auto lfdprRenderer = player::createLfdprRenderer({.cellScale = 1});
     const Frame lfdpr = renderFrame(*lfdprRenderer, scene, profile);
     const Frame mvr = renderFrame("mvr", scene, profile);
     const Comparison c = compare(lfdpr, mvr, 8);

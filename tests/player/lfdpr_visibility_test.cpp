@@ -152,10 +152,11 @@ TEST_F(LfdprVisibilityTest, ComputePointGenerationSamplesLikeTheGeometryShader)
     const DisplayProfile profile = smallProfile(6, 160, 120);
     for (const Scene& scene : {cubeAndSphereScene(), denseTestScene()}) {
         for (bool lfdSampling : {true, false}) {
-            // note: the paper samples every triangle; pixel-centre culling (beyond the paper)
-            // is off here and has its own test.
-            auto visibility =
-                player::createLfdprRenderer({.lfdBiasedSampling = lfdSampling, .pixelCentreCulling = false});
+            // note: the paper samples every triangle at one point per sampling spacing;
+            // pixel-centre culling and cell scaling (beyond the paper) are off here and have
+            // their own tests.
+            auto visibility = player::createLfdprRenderer(
+                {.lfdBiasedSampling = lfdSampling, .pixelCentreCulling = false, .cellScale = 1});
             auto paper = player::createLfdprRenderer(
                 {.pipeline = LfdprOptions::Pipeline::Paper, .lfdBiasedSampling = lfdSampling});
             const Frame a = render(*visibility, scene, profile, 0.4);
@@ -196,6 +197,29 @@ TEST_F(LfdprVisibilityTest, PixelCentreCullingDropsOnlyPointsThatCanWinNoPixel)
             std::printf("pixel-centre culling, %u px views, angle %.1f: points %llu -> %llu, triangles %llu -> %llu\n",
                         width, angle, (unsigned long long)b.info.points, (unsigned long long)a.info.points,
                         (unsigned long long)b.info.triangles, (unsigned long long)a.info.triangles);
+        }
+    }
+}
+
+TEST_F(LfdprVisibilityTest, CellScalingKeepsTheViewsAndCutsThePoints)
+{
+    // Cells of k x k sampling spacings: a pixel is shaded from its winning point's triangle
+    // at its own centre, and a splat writes only centres inside that triangle, so the
+    // views must be byte-identical for every k, with fewer points where triangles span
+    // several cells (the cube's faces) - and never a hole, which too large a cell that the
+    // splat did not fully cover would leave.
+    const DisplayProfile profile = smallProfile(6, 160, 120);
+    for (const Scene& scene : {cubeAndSphereScene(), denseTestScene()}) {
+        auto paper = player::createLfdprRenderer({.cellScale = 1});
+        const Frame reference = render(*paper, scene, profile, 0.7);
+        for (const uint32_t scale : {2u, 3u}) {
+            auto scaled = player::createLfdprRenderer({.cellScale = scale});
+            const Frame f = render(*scaled, scene, profile, 0.7);
+            EXPECT_LT(f.info.points, reference.info.points) << "cell scale " << scale;
+            std::printf("cell scale %u: %llu -> %llu points\n", scale, (unsigned long long)reference.info.points,
+                        (unsigned long long)f.info.points);
+            for (uint32_t v = 0; v < profile.viewCount; ++v)
+                EXPECT_EQ(f.views[v].pixels, reference.views[v].pixels) << "view " << v << ", cell scale " << scale;
         }
     }
 }
@@ -376,7 +400,9 @@ TEST_F(LfdprVisibilityTest, AlphaMaskedCellsEmitNoPointsAndShowTheirHoles)
     masked.materials[0].alphaMode = AlphaMode::Mask;
     masked.materials[0].alphaCutoff = 0.5f;
 
-    auto lfdpr = player::createLfdprRenderer();
+    // The paper's density for both (alpha-masked cells always keep it), so the point
+    // counts compare.
+    auto lfdpr = player::createLfdprRenderer({.cellScale = 1});
     auto mvr = player::createRenderer("mvr");
     const Frame solid = render(*lfdpr, opaque, profile);
     const Frame cut = render(*lfdpr, masked, profile);
@@ -445,6 +471,7 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u", "LFD_STREAMS 0x1u"}},
         {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x1u", "LFD_STREAMS 0x9u"}},
         {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1"}},
+        {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_CELL_SCALE 2"}},
         {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
         {"lfdpr_shade_list.comp", "comp", {}},
         {"lfdpr_shade_list.comp", "comp", {"LFDPR_REPAIR_LIST 1"}},

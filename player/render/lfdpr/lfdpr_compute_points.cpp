@@ -23,7 +23,7 @@ bool alphaTested(const GpuScene& scene, int32_t material)
 
 } // namespace
 
-LfdprComputePointGeneration::LfdprComputePointGeneration(bool pixelCentreCulling)
+LfdprComputePointGeneration::LfdprComputePointGeneration(bool pixelCentreCulling, uint32_t cellScale)
 {
     for (int alpha = 0; alpha < 2; ++alpha)
         for (int large = 0; large < 2; ++large) {
@@ -34,6 +34,8 @@ LfdprComputePointGeneration::LfdprComputePointGeneration(bool pixelCentreCulling
                 defines.emplace_back("LFDPR_ALPHA_TEST 1");
             if (large)
                 defines.emplace_back("LFDPR_LARGE_PASS 1");
+            if (!alpha && cellScale > 1) // alpha-masked cells carry the mask: the paper's spacing
+                defines.push_back("LFDPR_CELL_SCALE " + std::to_string(cellScale));
             programs_[alpha][large] = gl::Program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, defines));
         }
 }

@@ -16,8 +16,10 @@ class GpuScene;
 class LfdprComputePointGeneration {
 public:
     // Builds the programs (per pass, with and without alpha test); `pixelCentreCulling`
-    // compiles in LFDPR_PIXEL_CENTRE_CULLING (LfdprOptions::pixelCentreCulling).
-    explicit LfdprComputePointGeneration(bool pixelCentreCulling);
+    // compiles in LFDPR_PIXEL_CENTRE_CULLING (LfdprOptions::pixelCentreCulling);
+    // cellScale > 1 compiles in LFDPR_CELL_SCALE (LfdprOptions::cellScale) for the programs
+    // of materials without an alpha test.
+    LfdprComputePointGeneration(bool pixelCentreCulling, uint32_t cellScale);
 
     // largeBase[d]: first slot of draw d in the large-triangle list (its triangles before
     // it); largeDispatch: the per-draw indirect dispatch words (uvec4 each, cleared to

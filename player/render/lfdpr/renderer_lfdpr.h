@@ -43,6 +43,14 @@ struct LfdprOptions {
     // sub-pixel triangles generate and splat fewer points. false: every triangle is sampled
     // as in the paper (the point set then equals the paper pipeline's).
     bool pixelCentreCulling = true;
+    // Beyond the paper, visibility pipeline only: each point's cell spans cellScale x
+    // cellScale of the paper's sampling spacings (so cellScale^2 fewer points on triangles
+    // that span several cells). Each pixel is shaded from its winning point's triangle at
+    // the pixel's own centre and the splat writes only centres inside that triangle, so
+    // the cell size decides which point of a triangle wins a pixel, never what the pixel
+    // shows: the views are the same for every scale. Alpha-masked materials keep the
+    // paper's spacing (their cells carry the mask). 1: the paper's density.
+    uint32_t cellScale = 2;
     // Auto: 64-bit atomics where GL_NV_shader_atomic_int64 exists, else two-pass 32-bit.
     // Int64 where unsupported throws gl::GlError at construction.
     enum class Atomics { Auto, Int64, TwoPass32 } atomics = Atomics::Auto;

@@ -39,7 +39,7 @@ using lfdpr_bindings::LfdprDrawGpu; // generated from shaders/lfdpr_bindings.gls
 class LfdprVisibilityRenderer final : public LfdprRenderer {
 public:
     explicit LfdprVisibilityRenderer(const LfdprOptions& options)
-        : options_(options), k_(LfdprConstants::get()), pointGeneration_(options.pixelCentreCulling),
+        : options_(options), k_(LfdprConstants::get()), pointGeneration_(options.pixelCentreCulling, options.cellScale),
           shading_(lfdprUseInt64(options.atomics), options.testIndexRaces)
     {
         GLint64 maxBlockBytes = 0;
@@ -182,6 +182,7 @@ public:
             {"lfd_sampling", options_.lfdBiasedSampling ? 1.0 : 0.0},
             {"texture_splatting", options_.textureSplatting ? 1.0 : 0.0},
             {"pixel_centre_culling", options_.pixelCentreCulling ? 1.0 : 0.0},
+            {"cell_scale", double(options_.cellScale)},
             {"pipeline_paper", 0.0},
         };
     }
