@@ -231,7 +231,7 @@ struct LfdprShadeCountersGpu {
         uvec4 groupDispatch[LFDPR_MAX_SHADE_GROUPS]; \
         uint groupTiles[]; \
     }
-#define LFDPR_SHADE_DISPATCH_WIDTH 32768 // tiles per dispatch row (x stays under GL's 65535)
+#define LFDPR_SHADE_DISPATCH_WIDTH 32768 // workgroups per dispatch row (x stays under GL's 65535)
 // Marking and shading walk the views of one tile position in chunks of LFDPR_VIEW_CHUNK
 // views (a 64-bit view mask per group and chunk: LFDPR_VIEW_MASK_WORDS, at
 // LFDPR_SSBO_CHUNK_MASKS[(group * lfdShadeEntryCount + chunk index) * 2]). A group's list

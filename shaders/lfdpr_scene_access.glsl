@@ -4,13 +4,14 @@
 // record and sampling cell; everything else about it is derived from here.
 // Needs scene_bindings.glsl and lfdpr_bindings.glsl first.
 
-// LFDPR_SCENE_TEXELS: every per-point and per-pixel read goes through buffer textures
-// over the same buffers (LFDPR_UNIT_*): Mesa's llvmpipe turns a storage-buffer load at
-// a per-invocation address into a loop over the SIMD lanes, once per component and with a
-// bounds check per lane, while texelFetch is one vectorised gather of a whole texel;
-// measured on the shading pass, which follows point -> record -> draw -> triangle ->
-// vertices for every pixel (see README, "View generation and shading"). Point generation
-// (one invocation per triangle, reading its own draw's uniform data) keeps the SSBOs.
+// LFDPR_SCENE_TEXELS (lfdpr_shade.comp): the reads go through buffer textures over the
+// same buffers (LFDPR_UNIT_*): Mesa's llvmpipe turns a storage-buffer load at a
+// per-invocation address into a loop over the SIMD lanes, once per component and with a
+// bounds check per lane, while texelFetch is one vectorised gather of a whole texel. That
+// pays in the shading pass, which follows point -> record -> draw -> triangle -> vertices
+// for every pixel (see README, "View generation and shading"); it was measured slower in
+// the splat (one chain per point, amortised over its views: gallery view generation 45 ->
+// 71 ms), which keeps the storage buffers, as does point generation.
 #ifdef LFDPR_SCENE_TEXELS
 layout(binding = LFDPR_UNIT_INDICES) uniform usamplerBuffer t_sceneTriangles;
 layout(binding = LFDPR_UNIT_POSITIONS) uniform samplerBuffer t_scenePositions;

@@ -81,11 +81,10 @@ struct ViewTriangle {
     vec3 invW;
 };
 
-ViewTriangle viewTriangle(uint index, uint view)
+ViewTriangle viewTriangle(LfdprRecordGpu r, LfdprDrawGpu draw, uint view)
 {
     ViewTriangle t;
-    LfdprRecordGpu r = lfdRecord(lfdPoint(index).x);
-    t.draw = lfdDraw(r.draw);
+    t.draw = draw;
     t.vi = lfdTriangleVertices(t.draw, r.primitive);
     lfdTrianglePositions(t.draw, t.vi, t.p0, t.p1, t.p2);
     vec2 viewSize = u_lfd.viewSize.xy;
@@ -160,13 +159,15 @@ void shadeViewPixel(uint view, uvec2 xy, uint chunkTile)
         return; // background (the views were cleared to it)
 
     // Step 2: the winner's triangle in this view, if its material shades in this group (the
-    // chunk was listed for the group's points, which may be hidden here); a shared group
-    // shades one material.
-    ViewTriangle t = viewTriangle(index, view);
-    if (texelFetch(t_materialGroups, int(t.draw.material)).x != u_group)
+    // chunk was listed for the group's points, which may be hidden here; decided from the
+    // draw, before the triangle's vertices are fetched); a shared group shades one material.
+    LfdprRecordGpu record = lfdRecord(lfdPoint(index).x);
+    LfdprDrawGpu draw = lfdDraw(record.draw);
+    if (texelFetch(t_materialGroups, int(draw.material)).x != u_group)
         return;
-    if (u_group != 0u && t.draw.material != u_shadeMaterial)
+    if (u_group != 0u && draw.material != u_shadeMaterial)
         return;
+    ViewTriangle t = viewTriangle(record, draw, view);
     vec2 centre = vec2(xy) + 0.5;
 #ifndef LFDPR_INT64
     // Step 3 (32-bit path): the single splat pass stores depth by atomicMin and the index
@@ -192,7 +193,7 @@ void main()
     // the group's list (lfdpr_shade_list.comp). The view loop's trip count is the same for
     // every invocation (the mask is the workgroup's), so llvmpipe runs no lane idle for it.
     uvec2 size = uvec2(u_lfd.viewSize.xy);
-    uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
+    uvec2 tiles = lfdShadeTiles(size);
     uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;
     if (slot >= groupDispatch[u_group].w)
         return;

@@ -1,6 +1,14 @@
-// Tile chunks of the visibility pipeline's shading (lfdpr_shade_list.comp, lfdpr_shade.comp):
-// LFDPR_SHADE_TILE-square tile positions, each over a run of up to LFDPR_VIEW_CHUNK views.
+// Tile chunks of the visibility pipeline's shading (lfdpr_visibility.comp marks them,
+// lfdpr_shade_list.comp lists them, lfdpr_shade.comp shades them): LFDPR_SHADE_TILE-square
+// tile positions, each over a run of up to LFDPR_VIEW_CHUNK views. The one definition of
+// the tile grid, the chunk index and the mask layout for all three.
 // Needs lfdpr_bindings.glsl first.
+
+// Tiles per view in x and y.
+uvec2 lfdShadeTiles(uvec2 viewSize)
+{
+    return (viewSize + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
+}
 
 // A tile chunk: one tile position of the views [firstView, endView).
 struct LfdShadeChunk {
@@ -13,7 +21,19 @@ uint lfdShadeEntryCount(uvec2 tiles, uint viewCount)
     return tiles.x * tiles.y * ((viewCount + uint(LFDPR_VIEW_CHUNK) - 1u) / uint(LFDPR_VIEW_CHUNK));
 }
 
-// Chunk index = (chunk * tiles.y + tile y) * tiles.x + tile x.
+// Chunk index of tile `tile` in view chunk `chunk` (views chunk * LFDPR_VIEW_CHUNK on).
+uint lfdShadeChunkIndex(uint chunk, uvec2 tile, uvec2 tiles)
+{
+    return (chunk * tiles.y + tile.y) * tiles.x + tile.x;
+}
+
+// First word of the view mask of (group, chunk index) in LFDPR_SSBO_CHUNK_MASKS.
+uint lfdChunkMaskWord(uint group, uint chunkIndex, uint entries)
+{
+    return (group * entries + chunkIndex) * uint(LFDPR_VIEW_MASK_WORDS);
+}
+
+// The tile chunk of a chunk index (lfdShadeChunkIndex inverted).
 LfdShadeChunk lfdShadeChunk(uint index, uvec2 tiles, uint viewCount)
 {
     LfdShadeChunk c;

@@ -1,7 +1,8 @@
 #version 450 core
 // LFDPR shading, step 2 of 3: turn each shading group's entry count (groupDispatch[g].w,
 // counted by lfdpr_shade_list.comp) into the indirect dispatch lfdpr_shade.comp runs for it:
-// LFDPR_SHADE_DISPATCH_WIDTH tiles per row, so no dimension exceeds GL's limit.
+// one workgroup per entry, LFDPR_SHADE_DISPATCH_WIDTH per row, so no dimension exceeds
+// GL's limit.
 #include "scene_bindings.glsl"
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"

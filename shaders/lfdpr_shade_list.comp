@@ -33,8 +33,7 @@ layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
 
 void main()
 {
-    uvec2 size = uvec2(u_lfd.viewSize.xy);
-    uvec2 tiles = (size + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
+    uvec2 tiles = lfdShadeTiles(uvec2(u_lfd.viewSize.xy));
     uint entries = lfdShadeEntryCount(tiles, u_lfd.counts.x);
     uint i = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 64u) + gl_GlobalInvocationID.x;
 #ifdef LFDPR_REPAIR_LIST
@@ -48,7 +47,7 @@ void main()
     uint group = i / entries;
     uint chunk = i % entries;
 #endif
-    uint word = (group * entries + chunk) * uint(LFDPR_VIEW_MASK_WORDS);
+    uint word = lfdChunkMaskWord(group, chunk, entries);
     uvec2 mask = uvec2(chunkMasks[word], chunkMasks[word + 1u]);
     if (mask == uvec2(0u))
         return;

@@ -69,7 +69,7 @@ void lfdMarkChunk(uint group, uint chunk, int tileLo, int tileHi, uvec2 tileRows
 {
     for (uint ty = tileRows.x; ty <= tileRows.y; ++ty) {
         for (int tx = tileLo; tx <= tileHi; ++tx) {
-            uint word = (group * entries + (chunk * tiles.y + ty) * tiles.x + uint(tx)) * uint(LFDPR_VIEW_MASK_WORDS);
+            uint word = lfdChunkMaskWord(group, lfdShadeChunkIndex(chunk, uvec2(tx, ty), tiles), entries);
             if (views.x != 0u)
                 atomicOr(chunkMasks[word], views.x);
             if (views.y != 0u)
@@ -137,7 +137,7 @@ void main()
     uint viewCount = u_lfd.counts.x;
 #ifndef LFDPR_INDEX_PASS
     uint group = materialGroups[draw.material];
-    uvec2 tiles = (uvec2(viewPixels) + uvec2(LFDPR_SHADE_TILE - 1)) / uvec2(LFDPR_SHADE_TILE);
+    uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
     uint entries = lfdShadeEntryCount(tiles, viewCount);
     uvec2 tileRows = uvec2(rowLo, rowHi) / uint(LFDPR_SHADE_TILE);
 #endif

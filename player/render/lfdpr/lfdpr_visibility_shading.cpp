@@ -172,8 +172,8 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
         glTextureBuffer(materialGroupTexels_, GL_R32UI, materialGroups_);
     }
     glNamedBufferSubData(materialGroups_, 0, GLsizeiptr(groupBytes), groupOfMaterial_.data());
-    // The repair list after the groups' lists: one entry per repaired pixel, at most one
-    // dispatch's worth (more repairs than that classify the whole frame again instead).
+    // The repair list after the groups' lists: one entry per repaired pixel (more repairs
+    // than it holds shade every marked chunk again instead).
     repairBase_ = groupCount_ * entryCount_ * k.shadeEntryWords;
     // A repair entry lists its chunk for every group, so at most entryCount_ of them keep
     // each group's list within its room.

@@ -134,6 +134,7 @@ public:
 
         // Step 3: visibility, then shading once per visible pixel.
         bindBuffers(scene);
+        bindSceneTexels(scene);
         timer.begin(stage::kViewGeneration);
         shading_.splat(scene, texturedMaterials_, stored);
         timer.end();
@@ -232,13 +233,16 @@ private:
         glNamedBufferSubData(lineUbo_, 0, sizeof(line.gpu), &line.gpu);
     }
 
-    void bindBuffers(const GpuScene& scene)
+    unsigned streamOrDummy(const GpuScene& scene, unsigned location) const
+    {
+        const unsigned b = scene.streamBuffer(location);
+        return b ? b : dummy_.get();
+    }
+
+    void bindBuffers(const GpuScene& scene) const
     {
         auto ssbo = [](unsigned binding, unsigned buffer) { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer); };
-        auto stream = [&](unsigned location) {
-            const unsigned b = scene.streamBuffer(location);
-            return b ? b : dummy_;
-        };
+        auto stream = [&](unsigned location) { return streamOrDummy(scene, location); };
         ssbo(bindings::kSsboMaterials, scene.materialBuffer());
         ssbo(bindings::kSsboNodes, scene.nodeTransformBuffer());
         ssbo(bindings::kSsboTriangleStats, scene.triangleStatsBuffer());
@@ -255,10 +259,14 @@ private:
         ssbo(k_.ssboVisCounters, counters_);
         glBindBufferBase(GL_UNIFORM_BUFFER, k_.uboFrame, frameUbo_);
         glBindBufferBase(GL_UNIFORM_BUFFER, k_.uboCameraLine, lineUbo_);
+    }
 
-        // The per-point and per-pixel passes read the same buffers as buffer textures
-        // (lfdpr_scene_access.glsl, LFDPR_SCENE_TEXELS); attached again every frame since
-        // the point buffer is reallocated when it grows.
+    // The shading pass reads the same buffers as buffer textures (lfdpr_scene_access.glsl,
+    // LFDPR_SCENE_TEXELS); attached once a frame, after point generation, since the point
+    // buffer is reallocated when it grows.
+    void bindSceneTexels(const GpuScene& scene) const
+    {
+        auto stream = [&](unsigned location) { return streamOrDummy(scene, location); };
         size_t slot = 0;
         auto texel = [&](unsigned unit, GLenum format, unsigned buffer) {
             const gl::Texture& texture = texels_[slot++];
@@ -288,7 +296,7 @@ private:
     std::vector<uint32_t> largeBase_;
     std::vector<int32_t> texturedMaterials_;
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, large_, largeDispatch_, draws_;
-    std::array<gl::Texture, 10> texels_; // buffer textures over the buffers above (bindBuffers)
+    std::array<gl::Texture, 10> texels_; // buffer textures over the buffers above (bindSceneTexels)
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t triangleCapacity_ = 0, trianglesCoarsened_ = 0;
 };
