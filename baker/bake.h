@@ -84,6 +84,13 @@ struct TessellationStats {
     // the edges of the pieces of split triangles only (how close to the bound cuts land).
     double meanEdgeWorldAfter = 0.0;
     double meanPieceEdgeWorld = 0.0;
+    // New points lie on OpenSubdiv's bilinear surface of each welded mesh that has
+    // triangles to split (bilinear_surface.h): meshes it took and meshes it refused, and
+    // split triangles whose interior points were placed by barycentric weights of their
+    // corners instead (a refused mesh, or a face Bfr gave no surface).
+    size_t surfaceMeshes = 0;
+    size_t surfaceMeshesRefused = 0;
+    size_t surfaceFallbacks = 0;
 };
 
 // Cuts every triangle with a scene-space edge longer than maxEdgeWorld (edges are scaled
@@ -91,7 +98,8 @@ struct TessellationStats {
 // by a rule that depends only on the (position-welded) edge itself, so neighbouring
 // triangles - including across UV/normal seams - cut shared edges identically: no
 // T-junctions. Oversized faces are filled by OpenSubdiv's Bfr::Tessellation for their
-// edge rates, checked to keep every output edge within the bound (face_pattern.h).
+// edge rates, checked to keep every output edge within the bound (face_pattern.h); new
+// points lie on OpenSubdiv's bilinear Bfr::Surface of the welded mesh.
 // Attributes are interpolated from each face's own corners; normals/tangents
 // re-normalised. Triangles within the bound are left untouched. Updates primitives'
 // index ranges. Meshes are tessellated on up to `threads` threads at once (0: one per

@@ -49,6 +49,11 @@ void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const
     out << "bake report: " << pack.string() << "\n";
     out << "  triangles: " << r.trianglesIn << " in, " << r.trianglesOut << " out ("
         << r.tessellation.trianglesSplit << " oversized split), " << r.vertices << " vertices\n";
+    if (r.tessellation.trianglesSplit > 0)
+        out << "  new points: OpenSubdiv bilinear surface of " << r.tessellation.surfaceMeshes
+            << " meshes (refused: " << r.tessellation.surfaceMeshesRefused
+            << "), split triangles placed by barycentric weights instead: " << r.tessellation.surfaceFallbacks
+            << "\n";
     out << "  max edge: " << r.maxEdgePxBefore << " view px before, " << r.maxEdgePxAfter << " after\n";
     out << "  mean edge after: " << r.meanEdgePxAfter << " view px (" << r.meanPieceEdgePx
         << " over the pieces of split triangles)\n";

@@ -2,9 +2,12 @@
 //
 // The paper's bound ("spanned no more than a hundred pixels") holds for every output
 // edge, not just the boundary, so every candidate is checked on the output positions and
-// the one with the fewest triangles within the bound wins. The face is flat (what the
-// bilinear scheme evaluates too), so a point with Bfr coordinates (u, v) lies at
-// barycentric weights (1 - u - v, u, v) of the face's corners.
+// the one with the fewest triangles within the bound wins. Patterns are built in
+// barycentric weights of the face's corners (a point with Bfr coordinates (u, v) of the
+// triangle parameterization has weights (1 - u - v, u, v)); every position, both those
+// the bound is checked on and those then stored (FacePattern::interiorPoints), comes from
+// the caller's FacePoint: in tessellation.cpp the face's bilinear Bfr::Surface
+// (bilinear_surface.h), which is the flat triangle.
 //
 // First, the boundary polygon triangulated without interior points: any triangulation of
 // V boundary points with I interior points has V - 2 + 2I triangles, so if this one
@@ -24,21 +27,13 @@
 // Every candidate has the same boundary points, so the choice changes nothing at shared
 // edges.
 //
-// Why the triangle parameterization: Bfr parameterizes a triangle of the bilinear scheme
-// as three quad sub-faces, whose patterns need about 1.5x the triangles (rates 2, 2, 2:
-// 6 instead of 4; rates 3, 3, 3: 13 instead of 9). The triangle parameterization (the one
-// of the Loop scheme, whose regular face is the triangle) gives n^2 triangles for rate n.
-// Only the parameterization is taken from Loop, never its (smooth) surface.
-//
-// Why points come from barycentric weights, not from a Bfr::SurfaceFactory over the
-// welded mesh: tried (Loop with every edge and vertex infinitely sharp evaluates each face
-// to its flat triangle, to 1e-14), it changed no stored position and met two OpenSubdiv
-// 3.5 defects on the samples: Bfr overran a heap buffer at corners where ~48 sharp
-// triangles meet (the car's wheel hubs: the bake aborted), and faces at non-manifold or
-// double-sided vertices evaluated up to 20% off their plane. Keeping clear of both needed
-// valence thresholds guessed from the samples, and a baker must not corrupt its heap on a
-// scene nobody measured; the bilinear scheme would be exact but parameterizes a triangle
-// as three quads (rates 2..6: 6/13/24/37/54 triangles against 4/9/16/25/36).
+// Why the triangle parameterization for the patterns, although the surface is the
+// bilinear scheme's: Bfr parameterizes a triangle of the bilinear scheme as three quad
+// sub-faces, whose patterns need about 1.5x the triangles (rates 2..6: 6/13/24/37/54
+// triangles against 4/9/16/25/36). The triangle parameterization (the one of the Loop
+// scheme, whose regular face is the triangle) gives n^2 triangles for rate n. Only the
+// parameterization is taken from Loop, never its surface; the bilinear surface converts
+// each point's barycentric weights to its own sub-face coordinates.
 
 #include "face_pattern.h"
 
@@ -119,7 +114,7 @@ LocalMesh boundaryMesh(const std::array<int, 3>& rates, std::span<const glm::vec
 // beside an edge are cut at its midpoint, so the face stays conforming (no T-junctions
 // inside it) and its boundary is never touched. Returns false if the triangle count
 // would pass maxTriangles.
-bool bisectLongEdges(const std::array<glm::vec3, 3>& corners, LocalMesh& mesh, double bound, size_t maxTriangles)
+bool bisectLongEdges(const FacePoint& pointAt, LocalMesh& mesh, double bound, size_t maxTriangles)
 {
     auto key = [](size_t a, size_t b) { return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b)); };
     constexpr size_t kNoTriangle = std::numeric_limits<size_t>::max();
@@ -158,7 +153,7 @@ bool bisectLongEdges(const std::array<glm::vec3, 3>& corners, LocalMesh& mesh, d
             return false;
         const size_t m = mesh.points.size();
         mesh.weights.push_back(0.5 * (mesh.weights[edge.a] + mesh.weights[edge.b]));
-        mesh.points.push_back(interiorPosition(corners, mesh.weights.back()));
+        mesh.points.push_back(pointAt(mesh.weights.back()));
         for (size_t t : beside) {
             if (t == kNoTriangle)
                 continue;
@@ -195,7 +190,7 @@ double parametricArea(const LocalMesh& mesh, size_t a, size_t b, size_t c)
 // shortens the total edge length, so this ends), then moves every interior point to the
 // centroid of its neighbours where none of its triangles flips over. Interior points
 // only: the boundary, which neighbouring faces share, never moves.
-void relax(const std::array<glm::vec3, 3>& corners, LocalMesh& mesh, size_t boundaryCount, int rounds)
+void relax(const FacePoint& pointAt, LocalMesh& mesh, size_t boundaryCount, int rounds)
 {
     constexpr double kMinArea = 1e-12;
     auto key = [](size_t a, size_t b) { return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b)); };
@@ -270,7 +265,7 @@ void relax(const std::array<glm::vec3, 3>& corners, LocalMesh& mesh, size_t boun
                 wound = wound && parametricArea(mesh, mesh.triangles[t][0], mesh.triangles[t][1],
                                                 mesh.triangles[t][2]) > kMinArea;
             if (wound)
-                mesh.points[v] = interiorPosition(corners, mesh.weights[v]);
+                mesh.points[v] = pointAt(mesh.weights[v]);
             else
                 mesh.weights[v] = previous;
         }
@@ -282,13 +277,14 @@ FacePattern toPattern(const LocalMesh& mesh, size_t boundaryCount)
     FacePattern pattern;
     pattern.fromOpenSubdiv = mesh.fromOpenSubdiv;
     pattern.interiorWeights.assign(mesh.weights.begin() + std::ptrdiff_t(boundaryCount), mesh.weights.end());
+    pattern.interiorPoints.assign(mesh.points.begin() + std::ptrdiff_t(boundaryCount), mesh.points.end());
     for (const auto& t : mesh.triangles)
         pattern.facets.insert(pattern.facets.end(), {int(t[0]), int(t[1]), int(t[2])});
     pattern.longestEdge = longestFacetEdge(pattern.facets, mesh.points);
     return pattern;
 }
 
-LocalMesh openSubdivMesh(const std::array<glm::vec3, 3>& corners, const std::array<int, 3>& rates,
+LocalMesh openSubdivMesh(const FacePoint& pointAt, const std::array<int, 3>& rates,
                          std::span<const glm::vec3> boundary, int innerRate)
 {
     // Loop's regular face is the triangle: this is Bfr's triangle parameterization.
@@ -316,7 +312,7 @@ LocalMesh openSubdivMesh(const std::array<glm::vec3, 3>& corners, const std::arr
     for (size_t c = boundary.size(); c < size_t(tessellation.GetNumCoords()); ++c) {
         const double u = coords[2 * c], v = coords[2 * c + 1];
         mesh.weights.emplace_back(1.0 - u - v, u, v);
-        mesh.points.push_back(interiorPosition(corners, mesh.weights.back()));
+        mesh.points.push_back(pointAt(mesh.weights.back()));
     }
     std::vector<int> facets(3 * size_t(tessellation.GetNumFacets()));
     tessellation.GetFacets(facets.data());
@@ -434,6 +430,13 @@ glm::vec3 interiorPosition(const std::array<glm::vec3, 3>& corners, const glm::d
 FacePattern facePattern(const std::array<glm::vec3, 3>& corners, const std::array<int, 3>& rates,
                         std::span<const glm::vec3> boundary, double bound)
 {
+    return facePattern([&corners](const glm::dvec3& w) { return interiorPosition(corners, w); }, rates, boundary,
+                       bound);
+}
+
+FacePattern facePattern(const FacePoint& pointAt, const std::array<int, 3>& rates, std::span<const glm::vec3> boundary,
+                        double bound)
+{
     if (boundary.size() != boundaryPointCount(rates))
         throw BakeError("tessellation: boundary point count does not match the edge rates");
 
@@ -453,15 +456,15 @@ FacePattern facePattern(const std::array<glm::vec3, 3>& corners, const std::arra
         // pattern's own count means bisection is chasing float rounding.
         const size_t maxTriangles = 4 * (mesh.triangles.size() + boundary.size() * boundary.size());
         LocalMesh relaxed = mesh;
-        if (bisectLongEdges(corners, mesh, bound, maxTriangles)) {
+        if (bisectLongEdges(pointAt, mesh, bound, maxTriangles)) {
             FacePattern candidate = toPattern(mesh, boundary.size());
             if (!best || better(candidate, *best, bound))
                 best = std::move(candidate);
         }
         // The same, relaxed before and after bisection.
-        relax(corners, relaxed, boundary.size(), kRelaxRounds);
-        if (bisectLongEdges(corners, relaxed, bound, maxTriangles)) {
-            relax(corners, relaxed, boundary.size(), kRelaxRounds);
+        relax(pointAt, relaxed, boundary.size(), kRelaxRounds);
+        if (bisectLongEdges(pointAt, relaxed, bound, maxTriangles)) {
+            relax(pointAt, relaxed, boundary.size(), kRelaxRounds);
             FacePattern candidate = toPattern(relaxed, boundary.size());
             if (!best || better(candidate, *best, bound))
                 best = std::move(candidate);
@@ -470,22 +473,22 @@ FacePattern facePattern(const std::array<glm::vec3, 3>& corners, const std::arra
 
     // Inner rate 1 gives the fan around one interior point; equal edge rates n <= 3 with
     // inner rate n give the uniform pattern (inner rates 2 and 3 otherwise repeat the fan).
-    consider(openSubdivMesh(corners, rates, boundary, 1));
+    consider(openSubdivMesh(pointAt, rates, boundary, 1));
     if (rates[0] == rates[1] && rates[1] == rates[2] && rates[0] >= 2 && rates[0] <= 3)
-        consider(openSubdivMesh(corners, rates, boundary, rates[0]));
+        consider(openSubdivMesh(pointAt, rates, boundary, rates[0]));
     // From inner rate 4 on, interior points lie on a grid of spacing 1/m in barycentric
     // coordinates, so its edges along face edge i measure |edge i| / m: below the largest
     // edge rate (ceil(|edge| / bound)) the grid itself exceeds the bound, and larger
     // inner rates only add triangles.
     const int largestRate = std::max({rates[0], rates[1], rates[2]});
     if (largestRate >= 4)
-        consider(openSubdivMesh(corners, rates, boundary, largestRate));
+        consider(openSubdivMesh(pointAt, rates, boundary, largestRate));
     if (boundary.size() <= kMaxBoundaryOnlyPoints)
         for (Shape shape : {Shape::ShortestLongestEdge, Shape::ShortestDiagonals})
             if (std::optional<LocalMesh> mesh = boundaryOnlyMesh(rates, boundary, shape))
                 consider(std::move(*mesh));
     if (!best) // every candidate ran past its triangle limit: the uniform pattern as it is
-        best = toPattern(openSubdivMesh(corners, rates, boundary, largestRate), boundary.size());
+        best = toPattern(openSubdivMesh(pointAt, rates, boundary, largestRate), boundary.size());
     return *best;
 }
 

@@ -10,15 +10,26 @@
 // its three edge rates (face_pattern.cpp picks the inner rate and checks every output
 // edge against the bound).
 //
+// Where the new points are: on OpenSubdiv's bilinear surface of the welded mesh
+// (bilinear_surface.h: Far::TopologyRefiner -> Bfr::RefinerSurfaceFactory), which is
+// exactly the flat triangles. Interior points are evaluated on their face's Bfr::Surface
+// at their barycentric weights; where OpenSubdiv refuses the mesh or gives a face no
+// surface, they are the barycentric combination of the face's corners (the same flat
+// triangle), and the face is counted in TessellationStats. Edge points come from
+// BilinearSurface::edgePoint, the surface along an edge, which depends on the edge's two
+// ends alone.
+//
 // Crack-freeness: vertices are welded per mesh by exact position, so the two sides of a
 // UV/normal seam see the same welded edge. An edge's rate and the positions of its points
 // depend only on that welded edge (its canonical endpoint positions and the mesh bound),
-// never on the face being cut. A tessellation pattern's boundary is fixed by its edge
-// rates alone (Bfr places rate - 1 points along each edge, whatever happens inside the
-// face), so the two faces of a shared edge put bit-identical points on it: every point
-// one side has, the other has too, hence no T-junctions and no cracks, with or without
-// a seam. Attributes of a new point come from the face's own corners, so each side of a
-// seam keeps its own uv/normal at the shared position.
+// never on the face being cut (evaluating each face's own surface on the edge would not
+// do: the two faces reach it through different sub-faces and agree only to rounding). A
+// tessellation pattern's boundary is fixed by its edge rates alone (Bfr places rate - 1
+// points along each edge, whatever happens inside the face), so the two faces of a
+// shared edge put bit-identical points on it: every point one side has, the other has
+// too, hence no T-junctions and no cracks, with or without a seam. Attributes of a new
+// point come from the face's own corners, so each side of a seam keeps its own
+// uv/normal at the shared position.
 //
 // Threads (issue 9; the pack must not depend on them, parallel.h): meshes (groups of
 // primitives) are tessellated side by side, each reading the scene and writing only its
@@ -29,6 +40,7 @@
 
 #include "tessellation.h"
 
+#include "bilinear_surface.h"
 #include "face_pattern.h"
 #include "parallel.h"
 
@@ -41,6 +53,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <string>
 
@@ -215,7 +228,16 @@ public:
         weldPosition_.reserve(expectedVertices);
     }
 
-    void weld(uint32_t vertex) { weldOf_[vertex - firstVertex_] = weldId(v_.scene.positions[vertex]); }
+    // Welds the corners of the group's next triangle (triangles in the order plan() will
+    // see them: the face numbering of the group's surface).
+    void weldFace(const uint32_t* corner)
+    {
+        for (size_t i = 0; i < 3; ++i) {
+            const uint32_t w = weldId(v_.scene.positions[corner[i]]);
+            weldOf_[corner[i] - firstVertex_] = w;
+            faceWelds_.push_back(w);
+        }
+    }
 
     // Triangles are tessellated a chunk at a time, in three steps, so that the costly
     // part - the pattern of each oversized face (face_pattern.cpp) - can run on several
@@ -237,14 +259,22 @@ public:
     bool emit(size_t f, std::vector<uint32_t>& out);
 
     size_t unresolved() const { return unresolved_; }
+    // Whether the group's surface was built (only once a face needs cutting), OpenSubdiv's
+    // refusal of it (empty where it took the mesh), and the cut faces whose interior
+    // points were placed by barycentric weights because the surface has no face for them.
+    bool surfaceBuilt() const { return surface_ != nullptr; }
+    std::string surfaceRefusal() const { return surface_ && surface_->refused() ? surface_->refusal() : std::string(); }
+    size_t fallbacks() const { return fallbacks_; }
 
 private:
     // A triangle of the chunk being tessellated.
     struct Face {
+        uint32_t index = 0; // in the group: the surface's face index
         std::array<uint32_t, 3> corner{};
         std::array<int, 3> rates{};
         bool cut = false;
-        FacePattern pattern; // set by patterns() where cut
+        bool onSurface = false; // set by patterns(): the pattern's points are on the surface
+        FacePattern pattern;    // set by patterns() where cut
     };
 
     uint32_t weldOf(uint32_t vertex) const { return weldOf_[vertex - firstVertex_]; }
@@ -272,22 +302,26 @@ private:
     FlatMap<PositionKey> weldByPosition_;
     FlatMap<uint64_t> rateOf_;       // welded edge -> pieces
     FlatMap<uint64_t> edgePointsOf_; // vertex pair -> first of its rate - 1 edge points
+    std::vector<uint32_t> faceWelds_; // 3 welded ids per face, until the surface is built
+    std::unique_ptr<BilinearSurface> surface_;
+    uint32_t nextFace_ = 0; // group index of the next face plan() takes
     std::vector<Face> chunk_;
     std::vector<uint32_t> boundaryIndex_;
     size_t unresolved_ = 0;
+    size_t fallbacks_ = 0;
 };
 
-// Point k of `rate` points along welded edge (wa, wb), counted from wa. Computed from the
-// edge's canonical endpoint order (lower welded id first) and its canonical point number,
-// so every face that has this edge - on either side of a UV/normal seam, whichever way it
-// runs along the edge - gets the bit-identical position.
+// Point k of `rate` points along welded edge (wa, wb), counted from wa: the bilinear
+// surface along the edge. Computed from the edge's canonical endpoint order (lower welded
+// id first) and its canonical point number, so every face that has this edge - on either
+// side of a UV/normal seam, whichever way it runs along the edge - gets the
+// bit-identical position.
 glm::vec3 MeshTessellator::edgePoint(uint32_t wa, uint32_t wb, int rate, int k) const
 {
     const bool forward = wa < wb;
-    const glm::dvec3 lo(weldPosition_[forward ? wa : wb]);
-    const glm::dvec3 hi(weldPosition_[forward ? wb : wa]);
     const int canonical = forward ? k : rate - k;
-    return glm::vec3(lo + (hi - lo) * (double(canonical) / double(rate)));
+    return glm::vec3(BilinearSurface::edgePoint(weldPosition_[forward ? wa : wb], weldPosition_[forward ? wb : wa],
+                                                double(canonical) / double(rate)));
 }
 
 // The rate rule: ceil(length / bound) pieces, a function of the welded edge only, so
@@ -420,6 +454,7 @@ size_t MeshTessellator::plan(const uint32_t* triangles, size_t count, size_t bud
     size_t pieces = 0; // estimated, for the chunk's memory
     for (size_t t = 0; t < count && chunk_.size() < kFacesPerChunk && pieces < kPiecesPerChunk; ++t) {
         Face& face = chunk_.emplace_back();
+        face.index = nextFace_++;
         face.corner = {triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]};
         for (size_t i = 0; i < 3; ++i)
             face.rates[i] = edgeRate(weldOf(face.corner[i]), weldOf(face.corner[(i + 1) % 3]));
@@ -438,10 +473,18 @@ size_t MeshTessellator::plan(const uint32_t* triangles, size_t count, size_t bud
 
 void MeshTessellator::patterns(ThreadBudget& threads, const std::function<bool()>& stopped)
 {
-    // note: only reads the weld table and positions, which nothing changes until emit.
+    // The surface of the whole welded mesh, once its first face needs cutting (a mesh
+    // with nothing to cut never pays for it).
+    if (!surface_ && std::any_of(chunk_.begin(), chunk_.end(), [](const Face& face) { return face.cut; })) {
+        surface_ = std::make_unique<BilinearSurface>(faceWelds_, weldPosition_);
+        std::vector<uint32_t>().swap(faceWelds_);
+    }
+    // note: only reads the weld table, the surface and positions, which nothing changes
+    // until emit.
     const size_t ranges = (chunk_.size() + kFacesPerItem - 1) / kFacesPerItem;
     parallelFor(ranges, threads, [&](size_t r) {
         std::vector<glm::vec3> boundary;
+        BilinearSurface::Face surface;
         for (size_t f = r * kFacesPerItem; f < std::min(chunk_.size(), (r + 1) * kFacesPerItem); ++f) {
             Face& face = chunk_[f];
             if (!face.cut || stopped())
@@ -455,10 +498,16 @@ void MeshTessellator::patterns(ThreadBudget& threads, const std::function<bool()
                 for (int k = 1; k < face.rates[i]; ++k)
                     boundary.push_back(boundaryPoint(va, vb, face.rates[i], k));
             }
-            const std::array<glm::vec3, 3> position = {v_.scene.positions[face.corner[0]],
-                                                       v_.scene.positions[face.corner[1]],
-                                                       v_.scene.positions[face.corner[2]]};
-            face.pattern = facePattern(position, face.rates, boundary, bound_);
+            face.onSurface = surface_->initFace(face.index, surface);
+            if (face.onSurface) {
+                face.pattern = facePattern([&surface](const glm::dvec3& w) { return glm::vec3(surface.at(w)); },
+                                           face.rates, boundary, bound_);
+            } else {
+                const std::array<glm::vec3, 3> position = {v_.scene.positions[face.corner[0]],
+                                                           v_.scene.positions[face.corner[1]],
+                                                           v_.scene.positions[face.corner[2]]};
+                face.pattern = facePattern(position, face.rates, boundary, bound_);
+            }
         }
     });
 }
@@ -488,14 +537,17 @@ bool MeshTessellator::emit(size_t f, std::vector<uint32_t>& out)
     const FacePattern& pattern = face.pattern;
     if (!(pattern.longestEdge <= bound_))
         ++unresolved_;
+    if (!face.onSurface)
+        ++fallbacks_;
 
-    // Interior points belong to this face alone.
-    const std::array<glm::vec3, 3> position = {v_.scene.positions[corner[0]], v_.scene.positions[corner[1]],
-                                               v_.scene.positions[corner[2]]};
+    // Interior points belong to this face alone: stored where the pattern checked the
+    // bound, with attributes by their barycentric weights (each side of a seam from its
+    // own corners).
     const auto firstInterior = v_.base + uint32_t(v_.added.size());
-    for (const glm::dvec3& w : pattern.interiorWeights) {
+    for (size_t k = 0; k < pattern.interiorWeights.size(); ++k) {
+        const glm::dvec3& w = pattern.interiorWeights[k];
         const size_t vertex = appendVertex() - v_.base;
-        v_.added.positions[vertex] = interiorPosition(position, w);
+        v_.added.positions[vertex] = pattern.interiorPoints[k];
         interpolateAttributes<3>(v_.scene, v_.added, vertex, corner, {w.x, w.y, w.z});
     }
     const auto boundaryCount = int(boundaryIndex_.size());
@@ -674,6 +726,9 @@ struct GroupResult {
     size_t trianglesAdded = 0;  // output minus input triangles
     size_t trianglesSplit = 0;
     size_t unresolved = 0;
+    bool surfaceBuilt = false;   // the group had faces to cut, so its surface was built
+    bool surfaceRefused = false; // and OpenSubdiv refused it
+    size_t fallbacks = 0;        // cut faces placed by barycentric weights instead
     double pieceEdgeSum = 0.0; // scene units, edges of the pieces of cut triangles
     size_t pieceEdgeCount = 0;
 };
@@ -725,8 +780,8 @@ void splitGroup(const Scene& scene, const Group& group, size_t groupIndex, const
                                 groupTriangles);
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
-        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; ++i)
-            tessellator.weld(scene.indices[i]);
+        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; i += 3)
+            tessellator.weldFace(scene.indices.data() + i);
     }
     const auto position = [&](uint32_t i) -> const glm::vec3& { return vertices.position(i); };
 
@@ -775,6 +830,13 @@ void splitGroup(const Scene& scene, const Group& group, size_t groupIndex, const
     }
     result.added = std::move(vertices.added);
     result.unresolved = tessellator.unresolved();
+    result.surfaceBuilt = tessellator.surfaceBuilt();
+    result.fallbacks = tessellator.fallbacks();
+    if (const std::string refusal = tessellator.surfaceRefusal(); !refusal.empty()) {
+        result.surfaceRefused = true;
+        log.info("tessellation: " + label + ": OpenSubdiv refused the mesh (" + refusal +
+                 "); its new points are placed by barycentric weights of the triangles' corners");
+    }
     log.info("tessellation: " + label + ": " + std::to_string(groupTriangles) + " -> " +
              std::to_string(groupOut) + " triangles (" + std::to_string(result.trianglesSplit) + " split)");
 }
@@ -885,6 +947,9 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
         pieceEdgeSum += r.pieceEdgeSum;
         pieceEdgeCount += r.pieceEdgeCount;
         unresolved += r.unresolved;
+        stats.surfaceMeshes += r.surfaceBuilt && !r.surfaceRefused ? 1 : 0;
+        stats.surfaceMeshesRefused += r.surfaceRefused ? 1 : 0;
+        stats.surfaceFallbacks += r.fallbacks;
     }
 
     if (stats.trianglesSplit > 0) {
@@ -928,7 +993,13 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
              " split), longest edge " + std::to_string(stats.maxEdgeWorldBefore) + " -> " +
              std::to_string(stats.maxEdgeWorldAfter) + " scene units, mean edge " +
              std::to_string(stats.meanEdgeWorldAfter) + " (pieces of split triangles " +
-             std::to_string(stats.meanPieceEdgeWorld) + ")");
+             std::to_string(stats.meanPieceEdgeWorld) + ")" +
+             (stats.trianglesSplit > 0
+                  ? "; new points on OpenSubdiv's bilinear surface of " + std::to_string(stats.surfaceMeshes) +
+                        " meshes (refused: " + std::to_string(stats.surfaceMeshesRefused) +
+                        "), split triangles placed by barycentric weights instead: " +
+                        std::to_string(stats.surfaceFallbacks)
+                  : std::string()));
     return stats;
 }
 

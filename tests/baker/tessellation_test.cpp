@@ -1,7 +1,8 @@
 // Tessellation stage: the bound holds, area and uv area are preserved, closed meshes stay
 // closed (OpenMesh) with no T-junctions across UV/normal seams, attributes are
 // interpolated, small triangles are untouched, instance scale is respected; an edge is
-// cut into ceil(length / bound) pieces; face patterns cover their face.
+// cut into ceil(length / bound) pieces; face patterns cover their face; new points lie on
+// OpenSubdiv's bilinear surface, and a mesh OpenSubdiv refuses is split all the same.
 
 #include "bake.h"
 #include "face_pattern.h"
@@ -556,6 +557,10 @@ TEST(Tessellation, LogsPerMeshAndSummary)
     ASSERT_EQ(lines.size(), 2u);
     EXPECT_NE(lines[0].find("mesh 'quad'"), std::string::npos) << lines[0];
     EXPECT_NE(lines[1].find("2 -> " + std::to_string(scene.triangleCount())), std::string::npos) << lines[1];
+    EXPECT_NE(lines[1].find("bilinear surface of 1 meshes (refused: 0), split triangles placed by barycentric "
+                            "weights instead: 0"),
+              std::string::npos)
+        << lines[1];
 }
 
 TEST(Tessellation, MixedSizesAcrossSeamsHaveNoTJunctions)
@@ -726,6 +731,112 @@ TEST(Tessellation, CubeStaysWatertightAtEveryRate)
         EXPECT_NEAR(stats.meanPieceEdgeWorld, mean, 1e-9) << bound;
         EXPECT_LE(stats.meanEdgeWorldAfter, bound);
     }
+}
+
+TEST(Tessellation, NewPointsLieOnTheBilinearSurfaceAcrossSeams)
+{
+    // The cube's faces have their own vertices (seams along every edge). Its new points
+    // are evaluated on OpenSubdiv's bilinear surface of the welded cube (no fallback),
+    // which is the flat faces: every vertex lies exactly (to the float) on a face plane,
+    // and the cube stays closed.
+    for (double bound : {0.6, 0.21, 0.07}) {
+        Scene scene = cubeScene();
+        const TessellationStats stats = tessellateMeshes(scene, bounds(scene, bound), unitScales(scene), Log{});
+        EXPECT_EQ(stats.surfaceMeshes, 1u);
+        EXPECT_EQ(stats.surfaceMeshesRefused, 0u);
+        EXPECT_EQ(stats.surfaceFallbacks, 0u);
+        EXPECT_LE(longestEdge(scene), bound);
+        EXPECT_EQ(countTJunctions(scene), 0u);
+        EXPECT_TRUE(meshTopology(scene, 0).closedManifold());
+        for (const glm::vec3& p : scene.vertices.positions)
+            EXPECT_EQ(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}), 0.5f) << p.x << " " << p.y << " " << p.z;
+    }
+}
+
+TEST(Tessellation, AwkwardTopologyIsSplitOnTheSurface)
+{
+    // A closed cone of 64 large triangles around one apex (valence 64: the car sample's
+    // wheel hubs have 48), a double-sided pair and an edge shared by three faces: every
+    // split triangle gets its points from the bilinear surface, within the bound, on its
+    // own plane.
+    Scene scene;
+    constexpr uint32_t kRim = 64;
+    std::vector<Vertex> cone(1 + kRim);
+    cone[0].position = {0.0f, 0.0f, 2.0f};
+    for (uint32_t i = 0; i < kRim; ++i) {
+        const float a = 2.0f * kPi * float(i) / float(kRim);
+        cone[1 + i].position = {6.0f * std::cos(a), 6.0f * std::sin(a), 0.0f};
+    }
+    std::vector<uint32_t> triangles;
+    for (uint32_t i = 0; i < kRim; ++i)
+        triangles.insert(triangles.end(), {0u, 1 + i, 1 + (i + 1) % kRim});
+    for (uint32_t i = 1; i + 1 < kRim; ++i) // the base, so that the cone is closed
+        triangles.insert(triangles.end(), {1u, 2 + i, 1 + i});
+    const auto base = uint32_t(cone.size());
+    for (glm::vec3 p : {glm::vec3(10, 0, 0), glm::vec3(13, 0, 0.5f), glm::vec3(10.3f, 2.7f, -0.4f),
+                        glm::vec3(11, -2.5f, 0.2f), glm::vec3(11, 0.3f, 2.8f)})
+        cone.push_back({p});
+    for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 1u, 1u, 0u, 3u, 0u, 1u, 4u})
+        triangles.push_back(base + i);
+    addPrimitive(scene, cone, triangles);
+    addMesh(scene, "awkward", 1);
+    const Scene input = scene;
+    const double bound = 0.5;
+    const TessellationStats stats = tessellateMeshes(scene, bounds(scene, bound), unitScales(scene), Log{});
+    EXPECT_EQ(stats.trianglesSplit, input.triangleCount());
+    EXPECT_EQ(stats.surfaceMeshes, 1u);
+    EXPECT_EQ(stats.surfaceFallbacks, 0u);
+    EXPECT_LE(longestEdge(scene), bound);
+    EXPECT_NEAR(worldArea(scene), worldArea(input), 1e-4 * worldArea(input));
+    expectSaneStreams(scene);
+}
+
+TEST(Tessellation, MeshOpenSubdivRefusesIsSplitByBarycentricWeightsAndCounted)
+{
+    // One mesh OpenSubdiv refuses (a fan whose centre has 65536 edges, past its valence
+    // limit, beside one oversized triangle) and one it takes (the cube): the refused
+    // mesh is still split within the bound, by barycentric weights, and counted.
+    Scene scene;
+    constexpr uint32_t kRim = 65536;
+    std::vector<Vertex> fan(1 + kRim);
+    for (uint32_t i = 0; i < kRim; ++i) {
+        const double a = 2.0 * 3.14159265358979 * double(i) / kRim;
+        fan[1 + i].position = {float(0.4 * std::cos(a)), float(0.4 * std::sin(a)), 0.0f};
+    }
+    std::vector<uint32_t> triangles;
+    for (uint32_t i = 0; i < kRim; ++i)
+        triangles.insert(triangles.end(), {0u, 1 + i, 1 + (i + 1) % kRim});
+    fan.push_back({glm::vec3(10, 0, 0), glm::vec2(0, 0)});
+    fan.push_back({glm::vec3(13, 0, 0), glm::vec2(1, 0)});
+    fan.push_back({glm::vec3(10, 3, 0), glm::vec2(0, 1)});
+    triangles.insert(triangles.end(), {kRim + 1, kRim + 2, kRim + 3});
+    addPrimitive(scene, fan, triangles);
+    addMesh(scene, "fan", 1);
+    const Scene cube = cubeScene();
+    std::vector<Vertex> cubeVertices(cube.vertices.positions.size());
+    for (size_t i = 0; i < cubeVertices.size(); ++i)
+        cubeVertices[i] = {cube.vertices.positions[i], cube.vertices.uvs[i], cube.vertices.normals[i],
+                           cube.vertices.tangents[i]};
+    addPrimitive(scene, cubeVertices, cube.indices);
+    addMesh(scene, "cube", 1);
+    const double areaBefore = worldArea(scene);
+
+    std::vector<std::string> lines;
+    Log log;
+    log.info = [&](const std::string& s) { lines.push_back(s); };
+    const double bound = 0.9;
+    const TessellationStats stats = tessellateMeshes(scene, bounds(scene, bound), unitScales(scene), log);
+    EXPECT_EQ(stats.surfaceMeshesRefused, 1u);
+    EXPECT_EQ(stats.surfaceMeshes, 1u);
+    EXPECT_EQ(stats.surfaceFallbacks, 1u); // the fan's big triangle
+    EXPECT_EQ(stats.trianglesSplit, 13u);
+    EXPECT_LE(longestEdge(scene), bound);
+    EXPECT_NEAR(worldArea(scene), areaBefore, 1e-3);
+    expectSaneStreams(scene);
+    EXPECT_TRUE(meshTopology(scene, 1).closedManifold());
+    EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const std::string& s) {
+        return s.find("'fan': OpenSubdiv refused") != std::string::npos && s.find("valence") != std::string::npos;
+    }));
 }
 
 } // namespace
