@@ -1,24 +1,29 @@
 #!/usr/bin/env bash
 # The accuracy/speed matrix of issue 8 (paper section 5, Tables 1 and 2): bakes the samples
-# (car, gallery, room) and the third-party scenes in ../shared/scenes when present, then runs
-# lfd-bench once over all of them at the prototype's 48 views of 480x360 with
+# (car, gallery, room, and the ~1.1M-triangle dense block) and the third-party scenes in
+# ../shared/scenes when present, then runs lfd-bench once over all of them at the
+# prototype's 48 views of 480x360 with
 #   renderers mvr, lfdpr  x  --ss 1,2v,2s  x  --aa none,view-spatial
 # against the gold standard gstd, and copies table.md and chart.png (+ svg, results.csv)
 # to docs/bench/. Each configuration is written as soon as it finishes; Ctrl-C keeps them.
+# Installs what is missing first (scripts/setup.sh, which includes python3-matplotlib for
+# the chart) and builds if needed.
 # Usage: bash scripts/bench-matrix.sh [FRAMES (default 1)] [WARMUP (default 1)]
 # Extra lfd-bench flags via LFD_BENCH_FLAGS (e.g. "--aa none,spatial,view,view-spatial").
-# Measured on the 2-core llvmpipe development machine for 6 scenes: about 15 minutes with
-# gstd's views in its disk cache; rendering gstd adds about 10 minutes per scene.
+# Measured on the 2-core llvmpipe development machine for 7 scenes: MATRIX_MINUTES; gstd's
+# views are kept in its disk cache (rendering them took 6-30 s per scene, DENSE_GSTD for dense).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 frames="${1:-1}"
 warmup="${2:-1}"
+bash scripts/setup.sh
 [ -x build/player/lfd-bench ] || bash scripts/build.sh
 out=out/bench-matrix
 mkdir -p "$out/packs"
 ./build/samples/lfd-make-samples "$out/samples" --scene all --quiet
+./build/samples/lfd-make-samples "$out/samples" --scene dense --quiet
 packs=()
-for s in car gallery room; do
+for s in car gallery room dense; do
   ./build/baker/lfd-bake "$out/samples/$s/$s.gltf" -o "$out/packs/$s.lfdpack" --quiet
   packs+=("$out/packs/$s.lfdpack")
 done

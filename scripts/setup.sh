@@ -10,7 +10,7 @@ packages=(
   libegl-dev libepoxy-dev libglfw3-dev libegl-mesa0 libgl1-mesa-dri mesa-utils
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool assimp-testmodels glslang-tools ffmpeg
-  clang libclang-rt-14-dev python3
+  clang libclang-rt-14-dev python3 python3-matplotlib
 )
 
 missing=()

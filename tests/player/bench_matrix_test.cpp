@@ -1,8 +1,9 @@
 // lfd-bench's matrix on a small in-memory scene: every renderer x --ss x --aa
 // configuration runs and is named, the matrix files hold every configuration, the Pareto
-// front is the non-dominated set, a stop request keeps what finished, and a missing chart
-// tool is reported rather than failing.
+// front is the non-dominated set, the chart is drawn, a stop request keeps what finished,
+// and a missing chart tool is reported rather than failing.
 #include "gl_test_support.h"
+#include "skip_or_fail.h"
 #include "test_scenes.h"
 
 #include "bench_matrix.h"
@@ -117,6 +118,19 @@ TEST_F(BenchMatrixTest, RunsEveryConfigurationAndWritesTheMatrix)
                          (t(k) < t(i) || report.results[k].eia.rmse < report.results[i].eia.rmse);
         EXPECT_EQ(front[i], !dominated) << report.results[i].name;
     }
+
+    // The chart, drawn by matplotlib (scripts/setup.sh installs python3-matplotlib): a PNG
+    // and an SVG with one labelled point per configuration.
+    std::string why;
+    if (!player::drawMatrixChart(dir, why))
+        LFD_SKIP_OR_FAIL("chart.png not drawn: " << why);
+    const std::string png = readText(dir / "chart.png");
+    ASSERT_GT(png.size(), 8u);
+    EXPECT_EQ(png.substr(1, 3), "PNG");
+    const std::string svg = readText(dir / "chart.svg");
+    EXPECT_NE(svg.find("<svg"), std::string::npos);
+    for (const char* label : {"Pareto front", "mvr", "lfdpr SS 2v"})
+        EXPECT_NE(svg.find(label), std::string::npos) << label;
 }
 
 TEST_F(BenchMatrixTest, StopRequestKeepsWhatFinished)
