@@ -149,25 +149,25 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
     return vec4(color, 1.0);
 }
 
-// Shades pixel xy of one view if it is this group's (steps 2-4 of main).
-void shadeViewPixel(uint view, uvec2 xy, uint chunkTile)
+// Whether view pixel `pixel`'s winning point belongs to the group being shaded (the chunk
+// was listed for the group's points, which may be hidden here; decided from the draw,
+// before any vertex is fetched); a shared group shades one material.
+bool groupWinner(uint pixel, out LfdprRecordGpu record)
 {
-    uvec2 size = uvec2(u_lfd.viewSize.xy);
-    uint pixel = lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x);
     uint index = lfdPixelWinner(pixel);
     if (index == 0xFFFFFFFFu)
-        return; // background (the views were cleared to it)
+        return false; // background (the views were cleared to it)
+    record = lfdRecord(lfdPoint(index).x);
+    uint material = lfdDraw(record.draw).material;
+    return texelFetch(t_materialGroups, int(material)).x == u_group &&
+           (u_group == 0u || material == u_shadeMaterial);
+}
 
-    // Step 2: the winner's triangle in this view, if its material shades in this group (the
-    // chunk was listed for the group's points, which may be hidden here; decided from the
-    // draw, before the triangle's vertices are fetched); a shared group shades one material.
-    LfdprRecordGpu record = lfdRecord(lfdPoint(index).x);
-    LfdprDrawGpu draw = lfdDraw(record.draw);
-    if (texelFetch(t_materialGroups, int(draw.material)).x != u_group)
-        return;
-    if (u_group != 0u && draw.material != u_shadeMaterial)
-        return;
-    ViewTriangle t = viewTriangle(record, draw, view);
+// Shades view pixel `pixel` (xy of view `view`), whose winner's record is `record`
+// (steps 3-4 of main).
+void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint chunkTile)
+{
+    ViewTriangle t = viewTriangle(record, lfdDraw(record.draw), view);
     vec2 centre = vec2(xy) + 0.5;
 #ifndef LFDPR_INT64
     // Step 3 (32-bit path): the single splat pass stores depth by atomicMin and the index
@@ -190,8 +190,7 @@ void shadeViewPixel(uint view, uvec2 xy, uint chunkTile)
 void main()
 {
     // Step 1: this workgroup's tile chunk and its views with pixels of the group, from
-    // the group's list (lfdpr_shade_list.comp). The view loop's trip count is the same for
-    // every invocation (the mask is the workgroup's), so llvmpipe runs no lane idle for it.
+    // the group's list (lfdpr_shade_list.comp).
     uvec2 size = uvec2(u_lfd.viewSize.xy);
     uvec2 tiles = lfdShadeTiles(size);
     uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;
@@ -202,14 +201,31 @@ void main()
     uvec2 mask = uvec2(groupTiles[base + 1u], groupTiles[base + 2u]);
     LfdShadeChunk c = lfdShadeChunk(chunkTile, tiles, u_lfd.counts.x);
     uvec2 xy = c.tile * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy; // x, GL row
-    bool inside = all(lessThan(xy, size));
+    if (!all(lessThan(xy, size)))
+        mask = uvec2(0u);
+    // Step 2: the views of the mask in which this pixel's winner is the group's (a cheap
+    // walk: the winner, its record and draw). Step 3 then loops over those views alone,
+    // each invocation its own count. Why: a tile is rarely all one group's in every view
+    // (object and material edges, background), and llvmpipe runs the shading of a loop
+    // iteration for all 8 invocations of a SIMD row under a mask, so looping over the
+    // tile's views paid for every row in every view; a row now pays for as many views
+    // as its busiest pixel has.
+    uvec2 mine = uvec2(0u);
     for (uint word = 0u; word < uint(LFDPR_VIEW_MASK_WORDS); ++word) {
-        uint bits = mask[word];
-        while (bits != 0u) {
+        for (uint bits = mask[word]; bits != 0u; bits &= bits - 1u) {
             uint v = uint(findLSB(bits));
-            bits &= bits - 1u;
-            if (inside)
-                shadeViewPixel(c.firstView + 32u * word + v, xy, chunkTile);
+            uint view = c.firstView + 32u * word + v;
+            LfdprRecordGpu record;
+            if (groupWinner(lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x), record))
+                mine[word] |= 1u << v;
+        }
+    }
+    for (uint word = 0u; word < uint(LFDPR_VIEW_MASK_WORDS); ++word) {
+        for (uint bits = mine[word]; bits != 0u; bits &= bits - 1u) {
+            uint view = c.firstView + 32u * word + uint(findLSB(bits));
+            uint pixel = lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x);
+            // The winner again (step 2 found it is the group's; nothing changed it since).
+            shadeViewPixel(view, xy, pixel, lfdRecord(lfdPoint(lfdPixelWinner(pixel)).x), chunkTile);
         }
     }
 }
