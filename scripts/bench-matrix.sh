@@ -10,8 +10,9 @@
 # the chart) and builds if needed.
 # Usage: bash scripts/bench-matrix.sh [FRAMES (default 1)] [WARMUP (default 1)]
 # Extra lfd-bench flags via LFD_BENCH_FLAGS (e.g. "--aa none,spatial,view,view-spatial").
-# Measured on the 2-core llvmpipe development machine for 7 scenes: MATRIX_MINUTES; gstd's
-# views are kept in its disk cache (rendering them took 6-30 s per scene, DENSE_GSTD for dense).
+# Measured on the 2-core llvmpipe development machine for 7 scenes: about 17 minutes with 1
+# timed frame, 23 with 3; gstd's views are kept in its disk cache (rendering them took 6-30 s
+# per scene, about 3 minutes for dense).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 frames="${1:-1}"
