@@ -9,9 +9,9 @@
 // which the paper's pipeline keeps.
 //
 // One dispatch per shading group (lfdpr_shade_list.comp): a workgroup per listed tile chunk
-// (one tile position over a run of views), walking the views of its mask and in each the
-// pixels of group u_group (a textured group also checks the material, since groups are
-// shared past LFDPR_MAX_SHADE_GROUPS). The program is compiled per set of
+// (one tile position over a run of views), each invocation finding the views of the
+// chunk's mask in which its pixel is group u_group's and shading those (a textured group
+// also checks the material, since groups are shared past LFDPR_MAX_SHADE_GROUPS). The program is compiled per set of
 // textures (LFD_TEXTURE_MASK) and the scene's vertex streams (LFD_STREAMS, a mask of
 // LFD_STREAM_*): the untextured group's program has no sampling code at all, and no
 // program reads a stream the scene lacks (llvmpipe would run those loads under an off mask).

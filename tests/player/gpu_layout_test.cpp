@@ -531,7 +531,9 @@ struct GenResult {
 
 GenResult runGenerator(const std::string& glsl)
 {
-    const fs::path dir = testOutputDir("gpu_layout_gen");
+    // One directory per test: testOutputDir empties it, and ctest runs the tests in parallel.
+    const fs::path dir =
+        testOutputDir(std::string("gpu_layout_gen_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     const fs::path input = dir / "test_bindings.glsl", output = dir / "test_bindings_gpu.h", log = dir / "log.txt";
     std::ofstream(input) << glsl;
     const std::string command = std::string("\"") + LFD_GPU_LAYOUT_GEN + "\" \"" + input.string() + "\" \"" +
