@@ -77,15 +77,38 @@ bool lfdMayCoverPixelCentre(vec3 p0, vec3 p1, vec3 p2)
 
 
 // A triangle in one view, ready for per-pixel tests: window positions, 1 / w at its
-// vertices, and its orientation (+1 counter-clockwise, -1 clockwise, 0 degenerate) from
-// the canonical edge function, as lfdInsideTriangle decides it.
+// vertices, its orientation (+1 counter-clockwise, -1 clockwise, 0 degenerate) from the
+// canonical edge function, as lfdInsideTriangle decides it, and its three edges in
+// canonical order (lfdCanonicalEdge), decided here once rather than at every pixel.
+// Edge k is the one opposite vertex k: it starts at edgeStart[k], runs along edgeRun[k]
+// (the canonical end minus the canonical start), and its value at p is edgeSign[k] times
+// lfdEdge(start, end, p) - the very operations lfdCanonicalEdge does, so the values are
+// bit-identical to it and the two triangles sharing an edge still get exactly negated
+// values. edgeOwnsTies[k]: whether a sample exactly on edge k belongs to this triangle
+// (lfdEdgeOwns's tie rule).
 struct LfdViewTriangle {
     vec2 s0;
     vec2 s1;
     vec2 s2;
     vec3 invW;
     float orientation;
+    vec2 edgeStart[3];
+    vec2 edgeRun[3];
+    vec3 edgeSign;
+    bvec3 edgeOwnsTies;
 };
+
+// Edge (a, b) of t in canonical order, as slot k.
+void lfdSetCanonicalEdge(inout LfdViewTriangle t, int k, vec2 a, vec2 b)
+{
+    bool forward = lfdVertexLess(a, b);
+    vec2 start = forward ? a : b, end = forward ? b : a;
+    t.edgeStart[k] = start;
+    precise vec2 run = end - start;
+    t.edgeRun[k] = run;
+    t.edgeSign[k] = forward ? 1.0 : -1.0;
+    t.edgeOwnsTies[k] = t.orientation * t.edgeSign[k] > 0.0;
+}
 
 LfdViewTriangle lfdViewTriangle(vec2 s0, vec2 s1, vec2 s2, vec3 invW)
 {
@@ -96,7 +119,19 @@ LfdViewTriangle lfdViewTriangle(vec2 s0, vec2 s1, vec2 s2, vec3 invW)
     t.invW = invW;
     float area = lfdCanonicalEdge(s0, s1, s2);
     t.orientation = area > 0.0 ? 1.0 : (area < 0.0 ? -1.0 : 0.0);
+    lfdSetCanonicalEdge(t, 0, s1, s2);
+    lfdSetCanonicalEdge(t, 1, s2, s0);
+    lfdSetCanonicalEdge(t, 2, s0, s1);
     return t;
+}
+
+// Canonical edge k's value at p (= lfdCanonicalEdge of the edge, bit for bit: lfdEdge's
+// products and difference on the same operands).
+float lfdViewTriangleEdge(LfdViewTriangle t, int k, vec2 p)
+{
+    precise vec2 d = p - t.edgeStart[k];
+    precise float value = t.edgeRun[k].x * d.y - t.edgeRun[k].y * d.x;
+    return t.edgeSign[k] * value;
 }
 
 // The three canonical edge values at p: opposite s0, s1 and s2 (each triangle sharing an
@@ -104,20 +139,17 @@ LfdViewTriangle lfdViewTriangle(vec2 s0, vec2 s1, vec2 s2, vec3 invW)
 // screen barycentrics.
 vec3 lfdEdgeValues(LfdViewTriangle t, vec2 p)
 {
-    precise vec3 e = vec3(lfdCanonicalEdge(t.s1, t.s2, p), lfdCanonicalEdge(t.s2, t.s0, p),
-                          lfdCanonicalEdge(t.s0, t.s1, p));
-    return e;
+    return vec3(lfdViewTriangleEdge(t, 0, p), lfdViewTriangleEdge(t, 1, p), lfdViewTriangleEdge(t, 2, p));
 }
 
 // lfdInsideTriangle from precomputed edge values (same tie rule as lfdEdgeOwns: a sample
 // on a shared edge belongs to exactly one of the two triangles).
 bool lfdOwnsSample(LfdViewTriangle t, vec3 e)
 {
-    vec3 v = e * t.orientation;
-    bool own0 = v.x != 0.0 ? v.x > 0.0 : t.orientation * (lfdVertexLess(t.s1, t.s2) ? 1.0 : -1.0) > 0.0;
-    bool own1 = v.y != 0.0 ? v.y > 0.0 : t.orientation * (lfdVertexLess(t.s2, t.s0) ? 1.0 : -1.0) > 0.0;
-    bool own2 = v.z != 0.0 ? v.z > 0.0 : t.orientation * (lfdVertexLess(t.s0, t.s1) ? 1.0 : -1.0) > 0.0;
-    return t.orientation != 0.0 && own0 && own1 && own2;
+    bvec3 own = bvec3(e.x != 0.0 ? e.x * t.orientation > 0.0 : t.edgeOwnsTies.x,
+                      e.y != 0.0 ? e.y * t.orientation > 0.0 : t.edgeOwnsTies.y,
+                      e.z != 0.0 ? e.z * t.orientation > 0.0 : t.edgeOwnsTies.z);
+    return t.orientation != 0.0 && all(own);
 }
 
 // Depth key of the triangle's plane at a pixel from its edge values: 1 / w interpolated
