@@ -140,13 +140,12 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_UNIT_NORMALS 10      // RGB32F
 #define LFDPR_UNIT_TANGENTS 11     // RGBA32F
 #define LFDPR_UNIT_UVS 12          // RG32F
-#define LFDPR_UNIT_POINTS 13       // RG32UI: LfdprPointGpu
 #define LFDPR_UNIT_RECORDS 14      // RGBA32UI: LfdprRecordGpu (spacing as float bits)
 #define LFDPR_UNIT_DRAWS 15        // RGBA32UI: LfdprDrawGpu
 #define LFDPR_UNIT_NODES 16        // RGBA32F: NodeGpu, 8 texels each
 #define LFDPR_UNIT_MATERIALS 17    // RGBA32F: MaterialGpu, 4 texels each (flags as float bits)
 #define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
-#define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI point index (32-bit path)
+#define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI the winner's record (32-bit path)
 #define LFDPR_UNIT_MATERIAL_GROUPS 21 // per GPU material: R32UI shading group
 
 #define LFDPR_LOC_DRAW 7           // draw index (lfdpr_points.comp)
@@ -220,7 +219,7 @@ struct LfdprVisCountersGpu {
 // groupTiles[group * lfdShadeEntryCount * 3]), then the repair list (32-bit path): the
 // tile chunk index of each repaired pixel, at groupTiles[repairBase + i].
 struct LfdprShadeCountersGpu {
-    uint repairCount;    // 32-bit path: view pixels whose point index lost a race
+    uint repairCount;    // 32-bit path: view pixels whose record lost a race
     uint repairBase;     // groupTiles index of the repair list: the tile chunk of each such pixel
     uint repairCapacity; // entries the repair list holds
     uint pad0;

@@ -7,10 +7,10 @@
 // Needs lfdpr_bindings.glsl first.
 
 #ifdef LFDPR_INT64
-layout(binding = LFDPR_UNIT_VIEW_DEPTH) uniform usamplerBuffer t_viewWords; // RG32UI: index, key
+layout(binding = LFDPR_UNIT_VIEW_DEPTH) uniform usamplerBuffer t_viewWords; // RG32UI: record, key
 #else
 layout(binding = LFDPR_UNIT_VIEW_DEPTH) uniform usamplerBuffer t_viewDepth; // R32UI: depth key
-layout(binding = LFDPR_UNIT_VIEW_INDEX) uniform usamplerBuffer t_viewIndex; // R32UI: point index
+layout(binding = LFDPR_UNIT_VIEW_INDEX) uniform usamplerBuffer t_viewIndex; // R32UI: the winner's record
 #endif
 
 // The depth key stored for this pixel (0xFFFFFFFF: no point covers it).
@@ -23,7 +23,7 @@ uint lfdPixelKey(uint pixel)
 #endif
 }
 
-// The point that won this pixel, or 0xFFFFFFFF.
+// The triangle record of the point that won this pixel, or 0xFFFFFFFF.
 uint lfdPixelWinner(uint pixel)
 {
 #ifdef LFDPR_INT64

@@ -8,7 +8,7 @@
 // same buffers (LFDPR_UNIT_*): Mesa's llvmpipe turns a storage-buffer load at a
 // per-invocation address into a loop over the SIMD lanes, once per component and with a
 // bounds check per lane, while texelFetch is one vectorised gather of a whole texel. That
-// pays in the shading pass, which follows point -> record -> draw -> triangle -> vertices
+// pays in the shading pass, which follows record -> draw -> triangle -> vertices
 // for every pixel (see README, "View generation and shading"); it was measured slower in
 // the splat (one chain per point, amortised over its views: gallery view generation 45 ->
 // 71 ms), which keeps the storage buffers, as does point generation.
@@ -17,7 +17,6 @@ layout(binding = LFDPR_UNIT_INDICES) uniform usamplerBuffer t_sceneTriangles;
 layout(binding = LFDPR_UNIT_POSITIONS) uniform samplerBuffer t_scenePositions;
 layout(binding = LFDPR_UNIT_DRAWS) uniform usamplerBuffer t_draws;
 layout(binding = LFDPR_UNIT_RECORDS) uniform usamplerBuffer t_records;
-layout(binding = LFDPR_UNIT_POINTS) uniform usamplerBuffer t_points;
 layout(binding = LFDPR_UNIT_NODES) uniform samplerBuffer t_nodes;
 layout(binding = LFDPR_UNIT_MATERIALS) uniform samplerBuffer t_materials;
 
@@ -57,11 +56,6 @@ LfdprRecordGpu lfdRecord(uint record)
 {
     uvec4 r = texelFetch(t_records, int(record));
     return LfdprRecordGpu(r.x, r.y, uintBitsToFloat(r.zw));
-}
-
-uvec2 lfdPoint(uint index)
-{
-    return texelFetch(t_points, int(index)).xy;
 }
 
 // Vertex indices of triangle `primitive` of draw `draw`.

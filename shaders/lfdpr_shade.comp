@@ -15,7 +15,7 @@
 // textures (LFD_TEXTURE_MASK) and the scene's vertex streams (LFD_STREAMS, a mask of
 // LFD_STREAM_*): the untextured group's program has no sampling code at all, and no
 // program reads a stream the scene lacks (llvmpipe would run those loads under an off mask).
-// On the 32-bit path, u_pass 0 first checks that the stored point index belongs to the
+// On the 32-bit path, u_pass 0 first checks that the stored record belongs to the
 // stored depth key; a pixel that fails gets no index, its tile chunk goes on the repair
 // list, and after lfdpr_visibility.comp's index pass the listed chunks are shaded again
 // (u_pass 2).
@@ -154,10 +154,10 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
 // before any vertex is fetched); a shared group shades one material.
 bool groupWinner(uint pixel, out LfdprRecordGpu record)
 {
-    uint index = lfdPixelWinner(pixel);
-    if (index == 0xFFFFFFFFu)
+    uint winner = lfdPixelWinner(pixel);
+    if (winner == 0xFFFFFFFFu)
         return false; // background (the views were cleared to it)
-    record = lfdRecord(lfdPoint(index).x);
+    record = lfdRecord(winner);
     uint material = lfdDraw(record.draw).material;
     return texelFetch(t_materialGroups, int(material)).x == u_group &&
            (u_group == 0u || material == u_shadeMaterial);
@@ -225,7 +225,7 @@ void main()
             uint view = c.firstView + 32u * word + uint(findLSB(bits));
             uint pixel = lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x);
             // The winner again (step 2 found it is the group's; nothing changed it since).
-            shadeViewPixel(view, xy, pixel, lfdRecord(lfdPoint(lfdPixelWinner(pixel)).x), chunkTile);
+            shadeViewPixel(view, xy, pixel, lfdRecord(lfdPixelWinner(pixel)), chunkTile);
         }
     }
 }

@@ -6,7 +6,7 @@
 // chunk becomes one entry (chunk index, view mask) of the group's list, and
 // lfdpr_shade.comp runs a workgroup per entry over the views of its mask.
 // Why marks from the splat rather than a pass over the pixels: classifying every view pixel
-// (the chain winner -> point -> record -> draw -> material) cost 25-50 ms per frame on
+// (the chain winner -> record -> draw -> material) cost 25-50 ms per frame on
 // llvmpipe for the prototype's 8.3M view pixels; a point marks each tile chunk it touches
 // once per run of views (a few atomics per point), and this pass reads one mask per group
 // and chunk. A group may be listed where its points were then hidden; lfdpr_shade.comp

@@ -1,7 +1,10 @@
 #version 450 core
 // LFDPR visibility splatting (the visibility pipeline; paper section 3.2 without the
 // per-splat shading): one invocation per point splats it into every view, writing only
-// depth and the point index; lfdpr_shade.comp then shades each visible pixel once.
+// depth and the point's triangle record; lfdpr_shade.comp then shades each visible pixel
+// once. The record, not the point, is what the shading needs (it evaluates the triangle
+// at the pixel's own centre, whichever of its points won), so a pixel's word names it
+// directly and the shading reads one texel less per pixel and view.
 //
 // The splat is the point's sampling cell - a rectangle of the two spacings in the
 // triangle plane - projected to a quadrilateral; of the pixels in its bounding box only
@@ -19,14 +22,14 @@
 // shading work.
 //
 // Depth key: lfdPlaneDepthKey (smaller = nearer; 0xFFFFFFFF = empty).
-// LFDPR_INT64: atomicMin on (key << 32 | point index) (GL_NV_shader_atomic_int64).
+// LFDPR_INT64: atomicMin on (key << 32 | record) (GL_NV_shader_atomic_int64).
 // Otherwise 32-bit words: atomicMin on the key, and the invocation that lowered it stores
-// its point index with a plain store. A nearer point racing a farther one can leave the
-// farther one's index behind; lfdpr_shade.comp checks every pixel's index against its key
+// its record with a plain store. A nearer point racing a farther one can leave the
+// farther one's record behind; lfdpr_shade.comp checks every pixel's record against its key
 // and flags the few that disagree, and only then the index pass runs (LFDPR_INDEX_PASS, a
 // program of its own: llvmpipe would run an untaken branch for it in every pixel): where
-// the key equals the minimum, atomicMin on the point index. The image is the same either way:
-// a pixel's winner is a point of the nearest triangle there.
+// the key equals the minimum, atomicMin on the record. The image is the same either way:
+// a pixel's winner is the nearest triangle there.
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
 #extension GL_NV_shader_atomic_int64 : require
@@ -100,7 +103,8 @@ void main()
 
     // Step 1: the point, its triangle and the cell's corners in the triangle plane.
     uvec2 point = points[index];
-    LfdprRecordGpu r = records[point.x];
+    uint record = point.x; // what the view words hold
+    LfdprRecordGpu r = records[record];
     LfdprDrawGpu draw = draws[r.draw];
     vec3 p0, p1, p2;
     lfdTrianglePositions(draw, lfdTriangleVertices(draw, r.primitive), p0, p1, p2);
@@ -181,19 +185,19 @@ void main()
                     uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewPixels.x), viewCount);
                     wrote = true;
 #if defined(LFDPR_INT64)
-                    atomicMin(viewWords[pixel], (uint64_t(key) << 32) | uint64_t(index));
+                    atomicMin(viewWords[pixel], (uint64_t(key) << 32) | uint64_t(record));
 #elif defined(LFDPR_INDEX_PASS)
                     if (viewDepth[pixel] == key)
-                        atomicMin(viewIndex[pixel], index);
+                        atomicMin(viewIndex[pixel], record);
 #else
                     if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
-                        viewIndex[pixel] = index;
+                        viewIndex[pixel] = record;
 #ifdef LFDPR_TEST_INDEX_RACES
                     // Test hook (LfdprOptions::testIndexRaces): every LFDPR_TEST_INDEX_RACES-th
-                    // point also stores its index unconditionally, as a lost race would, so the
+                    // point also stores its record unconditionally, as a lost race would, so the
                     // tests can drive the repair through both of its paths.
                     if (index % uint(LFDPR_TEST_INDEX_RACES) == 0u)
-                        viewIndex[pixel] = index;
+                        viewIndex[pixel] = record;
 #endif
 #endif
                 }

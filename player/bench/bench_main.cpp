@@ -103,6 +103,9 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
     flags.sizeOpt = app.add_option("--view-size", flags.viewSize, "view size WxH (overrides the profile)");
     app.add_option("--frames", options.frames, "timed frames per renderer")->capture_default_str();
     app.add_option("--warmup", options.warmup, "untimed frames before them")->capture_default_str();
+    app.add_flag("!--sequential", options.interleave,
+                 "time each renderer's frames in one block, one renderer after the other (default: the "
+                 "renderers take turns frame by frame, so a machine whose speed drifts slows them alike)");
     app.add_option("--fps", options.fps, "frame k is at time k / fps")->capture_default_str();
     app.add_option("--turntable-period", options.turntablePeriod, "seconds per turntable revolution (0 = still)")
         ->capture_default_str();

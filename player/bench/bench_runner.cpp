@@ -87,6 +87,8 @@ struct BenchRun {
     Image referenceLens;
     std::vector<RendererResult> results;
     BenchReport& report;
+    // Stages and stats of the configurations timed round-robin (timeRoundRobin), by name.
+    std::map<std::string, RendererResult> roundRobin = {};
 };
 
 using Say = std::function<void(const std::string&)>;
@@ -221,6 +223,61 @@ bool timeFrames(BenchRun& run, Renderer& renderer, Reconstruction aa, RendererRe
     return true;
 }
 
+// Step 3, round-robin (BenchOptions::interleave): the timed configurations of each
+// supersampling mode take turns, frame by frame - all warm up, then frame k of each, then
+// frame k + 1 - each with its own renderer and timer. A shared machine's speed drifts
+// over seconds and minutes (on a 2-core virtual machine about one frame in six took up to
+// twice as long), and timing one configuration after the other let that drift land on one
+// of them; taking turns spreads it over all, so the ratios within a run stay fair.
+// Returns false when a stop request cut the timing short.
+bool timeRoundRobin(BenchRun& run)
+{
+    const BenchOptions& options = run.options;
+    std::vector<std::string> modes; // supersampling modes in run order (one target size at a time)
+    for (const Config& c : run.plan.order)
+        if (std::find(modes.begin(), modes.end(), c.ss) == modes.end())
+            modes.push_back(c.ss);
+    for (const std::string& mode : modes) {
+        struct Turn {
+            Config config;
+            Reconstruction aa;
+            std::unique_ptr<Renderer> renderer;
+            std::unique_ptr<GpuTimer> timer;
+        };
+        std::vector<Turn> turns;
+        for (const Config& c : run.plan.order)
+            if (c.ss == mode && (c.name() != options.reference || run.plan.referenceTimed))
+                turns.push_back({c, parseReconstruction(c.aa), createRenderer(c.renderer, options.rendererOptions),
+                                 std::make_unique<GpuTimer>()});
+        if (turns.empty())
+            continue;
+        run.pipeline.setSupersampling(parseSupersampling(mode));
+        if (!options.quiet)
+            run.progress << "lfd-bench: " << run.packName << " " << run.profile.viewCount << "x"
+                         << run.profile.viewWidth << "x" << run.profile.viewHeight << " --ss " << mode << ": "
+                         << turns.size() << " configuration(s) taking turns: warm-up " << options.warmup
+                         << " frame(s), then " << options.frames << " timed frame(s) each" << std::endl;
+        GpuTimer warmTimer;
+        for (uint32_t k = 0; k < options.warmup && !stopRequested(options); ++k)
+            for (Turn& t : turns)
+                run.pipeline.renderFrame(*t.renderer, double(k % options.frames) / options.fps, warmTimer, t.aa);
+        warmTimer.finish();
+        for (uint32_t k = 0; k < options.frames && !stopRequested(options); ++k)
+            for (Turn& t : turns)
+                run.pipeline.renderFrame(*t.renderer, double(k) / options.fps, *t.timer, t.aa);
+        if (stopRequested(options))
+            return false;
+        gl::checkGlError("timing --ss " + mode);
+        for (Turn& t : turns) {
+            t.timer->finish();
+            RendererResult& r = run.roundRobin[t.config.name()];
+            r.stages = t.timer->stages();
+            r.extra = t.renderer->extraStats();
+        }
+    }
+    return true;
+}
+
 // Step 4: the quality frame, untimed (gstd's views from the cache when it has them; the
 // EIA is built from them as usual), left in the pipeline's targets.
 void renderQualityFrame(BenchRun& run, Renderer& renderer, Reconstruction aa, RendererResult& result,
@@ -321,7 +378,15 @@ bool runConfig(BenchRun& run, size_t i)
     const Say say = progressFor(run, i, name);
     std::unique_ptr<Renderer> renderer = createRenderer(config.renderer, options.rendererOptions);
 
-    if (result.timed) {
+    if (result.timed && run.roundRobin.count(name)) {
+        const RendererResult& timed = run.roundRobin.at(name);
+        result.stages = timed.stages;
+        result.extra = timed.extra;
+        char line[128];
+        std::snprintf(line, sizeof(line), "mean total %.2f ms (timed taking turns)",
+                      result.stageMean(std::string(stage::kTotal)));
+        say(line);
+    } else if (result.timed) {
         if (!timeFrames(run, *renderer, aa, result, say))
             return false;
     } else {
@@ -416,6 +481,10 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     BenchRun run{options, profile, packName, progress, images, pipeline, planConfigs(options),
                  double(options.qualityFrame) / options.fps, {}, {}, {}, {}, {}, report};
     openGstdCache(run, glDescription);
+    if (options.interleave && !timeRoundRobin(run)) {
+        publish(report, run.plan, run.results, true);
+        return report;
+    }
     for (size_t i = 0; i < run.plan.order.size(); ++i) {
         if (stopRequested(options) || !runConfig(run, i)) {
             publish(report, run.plan, run.results, true);

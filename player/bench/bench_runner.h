@@ -36,6 +36,12 @@ struct BenchOptions {
     bool gstdCacheEnabled = true;
     uint32_t frames = 100;          // timed frames
     uint32_t warmup = 3;            // untimed frames before them
+    // Round-robin timing (default): the timed configurations of one supersampling mode take
+    // turns frame by frame (frame k of each, then k + 1), so a machine whose speed drifts
+    // over seconds or minutes (a shared virtual machine, a GPU's clocks) slows them alike
+    // and their ratios stay fair. false: each configuration's frames in one block, one
+    // configuration after the other.
+    bool interleave = true;
     double fps = 60.0;              // frame k is at time k / fps
     double turntablePeriod = 10.0;  // seconds per revolution, 0 = still
     uint32_t qualityFrame = 0;      // frame whose views and EIA are compared

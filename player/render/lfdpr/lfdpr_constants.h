@@ -40,7 +40,7 @@ struct LfdprConstants {
     unsigned uboCameraLine = lfdpr_bindings::kUboCameraLine;
     unsigned unitIndices = lfdpr_bindings::kUnitIndices, unitPositions = lfdpr_bindings::kUnitPositions,
              unitNormals = lfdpr_bindings::kUnitNormals, unitTangents = lfdpr_bindings::kUnitTangents,
-             unitUvs = lfdpr_bindings::kUnitUvs, unitPoints = lfdpr_bindings::kUnitPoints,
+             unitUvs = lfdpr_bindings::kUnitUvs,
              unitRecords = lfdpr_bindings::kUnitRecords, unitDraws = lfdpr_bindings::kUnitDraws,
              unitNodes = lfdpr_bindings::kUnitNodes, unitMaterials = lfdpr_bindings::kUnitMaterials,
              unitViewDepth = lfdpr_bindings::kUnitViewDepth, unitViewIndex = lfdpr_bindings::kUnitViewIndex,

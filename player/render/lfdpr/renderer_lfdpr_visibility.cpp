@@ -278,7 +278,6 @@ private:
         texel(k_.unitNormals, GL_RGB32F, stream(bindings::kAttribNormal));
         texel(k_.unitTangents, GL_RGBA32F, stream(bindings::kAttribTangent));
         texel(k_.unitUvs, GL_RG32F, stream(bindings::kAttribUv));
-        texel(k_.unitPoints, GL_RG32UI, points_);
         texel(k_.unitRecords, GL_RGBA32UI, records_);
         texel(k_.unitDraws, GL_RGBA32UI, draws_);
         texel(k_.unitNodes, GL_RGBA32F, scene.nodeTransformBuffer());
@@ -296,7 +295,7 @@ private:
     std::vector<uint32_t> largeBase_;
     std::vector<int32_t> texturedMaterials_;
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, large_, largeDispatch_, draws_;
-    std::array<gl::Texture, 10> texels_; // buffer textures over the buffers above (bindSceneTexels)
+    std::array<gl::Texture, 9> texels_; // buffer textures over the buffers above (bindSceneTexels)
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t triangleCapacity_ = 0, trianglesCoarsened_ = 0;
 };
