@@ -121,6 +121,58 @@ TEST_F(BenchTest, TimesEveryRendererAndComparesWithReference)
     EXPECT_NE(table.find("4 views of 64x48"), std::string::npos) << table;
 }
 
+// Round-robin timing (the default): the configurations take turns frame by frame, each
+// still timed on its own frames with its own stats; --sequential (interleave = false)
+// times one configuration after the other. Both give the same quality figures and stats
+// (timing order changes no image), and a stop while they take turns keeps nothing
+// half-timed.
+TEST_F(BenchTest, RenderersTakeTurnsUnlessSequential)
+{
+    const DisplayProfile profile = benchProfile();
+    BenchOptions o = options({"mvr", "lfdpr"});
+    o.quiet = false;
+    std::ostringstream turnsProgress, sequentialProgress;
+    const BenchReport turns =
+        player::runBenchmark(o, profile, cubeAndSphereScene(), "scene.lfdpack", "test GL", turnsProgress);
+    o.interleave = false;
+    const BenchReport sequential =
+        player::runBenchmark(o, profile, cubeAndSphereScene(), "scene.lfdpack", "test GL", sequentialProgress);
+
+    EXPECT_EQ(countOf(turnsProgress.str(), "2 configuration(s) taking turns"), 1u) << turnsProgress.str();
+    EXPECT_EQ(countOf(turnsProgress.str(), "(timed taking turns)"), 2u) << turnsProgress.str();
+    EXPECT_EQ(countOf(sequentialProgress.str(), "taking turns"), 0u) << sequentialProgress.str();
+    EXPECT_EQ(countOf(sequentialProgress.str(), "timed frame(s)"), 2u) << sequentialProgress.str();
+    ASSERT_EQ(turns.results.size(), 2u);
+    ASSERT_EQ(sequential.results.size(), 2u);
+    for (size_t i = 0; i < 2; ++i) {
+        const player::RendererResult& a = turns.results[i];
+        const player::RendererResult& b = sequential.results[i];
+        EXPECT_EQ(a.name, b.name);
+        EXPECT_TRUE(a.timed);
+        for (const char* stage : {"view_generation", "eia", "total"}) {
+            ASSERT_TRUE(a.stages.count(stage)) << a.name << " has no " << stage;
+            EXPECT_EQ(a.stages.at(stage).ms.size(), 3u) << a.name << " " << stage;
+        }
+        EXPECT_EQ(a.eia.rmse, b.eia.rmse) << a.name;
+        EXPECT_EQ(a.allViews.rmse, b.allViews.rmse) << a.name;
+        EXPECT_EQ(a.extraValue("points"), b.extraValue("points")) << a.name;
+    }
+    ASSERT_TRUE(turns.results[1].extraValue("points")); // lfdpr's stats come from its timed renderer
+    EXPECT_GT(*turns.results[1].extraValue("points"), 0.0);
+    EXPECT_TRUE(turns.results[1].stages.count("point_generation"));
+
+    // A stop while the configurations take turns: nothing finished, nothing reported.
+    o.interleave = true;
+    o.quiet = true;
+    int checks = 0;
+    o.shouldStop = [&] { return ++checks > 2; };
+    std::ostringstream quiet;
+    const BenchReport stopped =
+        player::runBenchmark(o, profile, cubeAndSphereScene(), "scene.lfdpack", "test GL", quiet);
+    EXPECT_TRUE(stopped.interrupted);
+    EXPECT_TRUE(stopped.results.empty());
+}
+
 TEST_F(BenchTest, ReferenceOutsideTheListIsRenderedUntimed)
 {
     std::ostringstream progress;
