@@ -30,6 +30,9 @@ uint lfdPixelWinner(uint pixel)
     uvec2 word = texelFetch(t_viewWords, int(pixel)).xy;
     return word.y == 0xFFFFFFFFu ? 0xFFFFFFFFu : word.x;
 #else
-    return texelFetch(t_viewDepth, int(pixel)).x == 0xFFFFFFFFu ? 0xFFFFFFFFu : texelFetch(t_viewIndex, int(pixel)).x;
+    // Both words start as all ones, and whenever the splat lowers a pixel's depth it also
+    // writes a record there (the repair's reset is written again by the index pass before
+    // anything reads it), so the record word alone tells a covered pixel.
+    return texelFetch(t_viewIndex, int(pixel)).x;
 #endif
 }
