@@ -129,7 +129,6 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_SSBO_VIS_COUNTERS 20 // LfdprVisCounters
 #define LFDPR_SSBO_SHADE_WORK 21   // LfdprShadeWork: per shading group, its tiles and dispatch
 #define LFDPR_SSBO_CHUNK_MASKS 22  // per shading group and tile chunk: the views splatted there
-#define LFDPR_SSBO_MATERIAL_GROUPS 23 // per GPU material: its shading group (uint)
 #define LFDPR_UBO_CAMERA_LINE 2
 // The same buffers as buffer textures (texelFetch), for the passes that read them per
 // point or per pixel: on Mesa's llvmpipe a storage-buffer load at a per-invocation address
@@ -146,7 +145,6 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_UNIT_MATERIALS 17    // RGBA32F: MaterialGpu, 4 texels each (flags as float bits)
 #define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
 #define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI the winner's record (32-bit path)
-#define LFDPR_UNIT_MATERIAL_GROUPS 21 // per GPU material: R32UI shading group
 
 #define LFDPR_LOC_DRAW 7           // draw index (lfdpr_points.comp)
 #define LFDPR_LOC_TRIANGLES 8      // triangles in the draw
@@ -197,7 +195,7 @@ struct LfdprDrawGpu {
     uint node;
     uint material;      // GPU material index
     uint firstTriangle; // scene triangle index of the draw's first triangle
-    uint pad;
+    uint group;         // its material's shading group (lfdprMaterialGroups)
 };
 
 // Counters of the visibility pipeline (std430; read back by name after point generation to

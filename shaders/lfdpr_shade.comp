@@ -50,7 +50,6 @@ layout(location = LFDPR_LOC_SHADE_GROUP) uniform uint u_group;
 layout(binding = LFDPR_UNIT_NORMALS) uniform samplerBuffer t_sceneNormals;
 layout(binding = LFDPR_UNIT_TANGENTS) uniform samplerBuffer t_sceneTangents;
 layout(binding = LFDPR_UNIT_UVS) uniform samplerBuffer t_sceneUvs;
-layout(binding = LFDPR_UNIT_MATERIAL_GROUPS) uniform usamplerBuffer t_materialGroups;
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
 #ifndef LFDPR_INT64
 layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) writeonly buffer ViewIndex {
@@ -158,9 +157,8 @@ bool groupWinner(uint pixel, out LfdprRecordGpu record)
     if (winner == 0xFFFFFFFFu)
         return false; // background (the views were cleared to it)
     record = lfdRecord(winner);
-    uint material = lfdDraw(record.draw).material;
-    return texelFetch(t_materialGroups, int(material)).x == u_group &&
-           (u_group == 0u || material == u_shadeMaterial);
+    LfdprDrawGpu draw = lfdDraw(record.draw);
+    return draw.group == u_group && (u_group == 0u || draw.material == u_shadeMaterial);
 }
 
 // Shades view pixel `pixel` (xy of view `view`), whose winner's record is `record`

@@ -55,9 +55,6 @@ layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) readonly buffer VisCounters {
     LfdprVisCountersGpu vis;
 };
 #ifndef LFDPR_INDEX_PASS
-layout(std430, binding = LFDPR_SSBO_MATERIAL_GROUPS) readonly buffer MaterialGroups {
-    uint materialGroups[];
-};
 layout(std430, binding = LFDPR_SSBO_CHUNK_MASKS) buffer ChunkMasks {
     uint chunkMasks[];
 };
@@ -140,7 +137,7 @@ void main()
 
     uint viewCount = u_lfd.counts.x;
 #ifndef LFDPR_INDEX_PASS
-    uint group = materialGroups[draw.material];
+    uint group = draw.group;
     uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
     uint entries = lfdShadeEntryCount(tiles, viewCount);
     uvec2 tileRows = uvec2(rowLo, rowHi) / uint(LFDPR_SHADE_TILE);

@@ -368,7 +368,6 @@ std::vector<BlockUse> visibilityBlocks()
                                  {"LargeDispatch", k.ssboLargeDispatch, k.largeDispatchBytes},
                                  {"VisCounters", k.ssboVisCounters, k.visCounterBytes},
                                  {"ChunkMasks", k.ssboChunkMasks, sizeof(uint32_t)},
-                                 {"MaterialGroups", k.ssboMaterialGroups, sizeof(uint32_t)},
                                  // Counters and the per-group dispatches, then the tile lists.
                                  {"ShadeWork", k.ssboShadeWork,
                                   k.shadeCounterBytes + k.maxShadeGroups * sizeof(glm::uvec4), "groupTiles[0]",

@@ -36,15 +36,14 @@ struct LfdprConstants {
              ssboDraws = lfdpr_bindings::kSsboDraws;
     unsigned ssboLarge = lfdpr_bindings::kSsboLarge, ssboLargeDispatch = lfdpr_bindings::kSsboLargeDispatch,
              ssboVisCounters = lfdpr_bindings::kSsboVisCounters, ssboShadeWork = lfdpr_bindings::kSsboShadeWork,
-             ssboChunkMasks = lfdpr_bindings::kSsboChunkMasks, ssboMaterialGroups = lfdpr_bindings::kSsboMaterialGroups;
+             ssboChunkMasks = lfdpr_bindings::kSsboChunkMasks;
     unsigned uboCameraLine = lfdpr_bindings::kUboCameraLine;
     unsigned unitIndices = lfdpr_bindings::kUnitIndices, unitPositions = lfdpr_bindings::kUnitPositions,
              unitNormals = lfdpr_bindings::kUnitNormals, unitTangents = lfdpr_bindings::kUnitTangents,
              unitUvs = lfdpr_bindings::kUnitUvs,
              unitRecords = lfdpr_bindings::kUnitRecords, unitDraws = lfdpr_bindings::kUnitDraws,
              unitNodes = lfdpr_bindings::kUnitNodes, unitMaterials = lfdpr_bindings::kUnitMaterials,
-             unitViewDepth = lfdpr_bindings::kUnitViewDepth, unitViewIndex = lfdpr_bindings::kUnitViewIndex,
-             unitMaterialGroups = lfdpr_bindings::kUnitMaterialGroups;
+             unitViewDepth = lfdpr_bindings::kUnitViewDepth, unitViewIndex = lfdpr_bindings::kUnitViewIndex;
     int locDraw = lfdpr_bindings::kLocDraw, locTriangles = lfdpr_bindings::kLocTriangles,
         locShadeMaterial = lfdpr_bindings::kLocShadeMaterial, locLargeBase = lfdpr_bindings::kLocLargeBase,
         locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups,

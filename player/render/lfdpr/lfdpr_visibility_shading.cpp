@@ -34,6 +34,15 @@ constexpr GLintptr kDispatchOffset = 16;
 
 } // namespace
 
+std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials)
+{
+    const uint32_t shared = LfdprConstants::get().maxShadeGroups - 1; // dispatch slots for textured materials
+    std::vector<uint32_t> groups(scene.cpu().materials.size() + 1, 0u); // + the default material, stored last
+    for (size_t i = 0; i < texturedMaterials.size(); ++i)
+        groups[scene.gpuMaterialIndex(texturedMaterials[i])] = 1u + uint32_t(i % shared);
+    return groups;
+}
+
 LfdprVisibilityShading::LfdprVisibilityShading(bool int64, uint32_t testIndexRaces) : int64_(int64)
 {
     // A shader error thrown below leaves nothing behind: the programs built so far are
@@ -106,7 +115,7 @@ void LfdprVisibilityShading::resize(uint32_t viewCount, uint32_t width, uint32_t
 size_t LfdprVisibilityShading::viewBufferBytes() const { return size_t(views_) * width_ * height_ * 8; }
 
 size_t LfdprVisibilityShading::shadeWorkBytes() const {
-    return shadeWorkBytes_ + materialGroupsBytes_ + chunkMaskBytes_;
+    return shadeWorkBytes_ + chunkMaskBytes_;
 }
 
 void LfdprVisibilityShading::splat(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
@@ -119,7 +128,6 @@ void LfdprVisibilityShading::splat(const GpuScene& scene, const std::vector<int3
     const GLuint zero = 0;
     glClearNamedBufferData(chunkMasks_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboMaterialGroups, materialGroups_);
     const GLuint ones = 0xFFFFFFFFu;
     glClearNamedBufferData(depth_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
     if (index_)
@@ -149,29 +157,17 @@ void LfdprVisibilityShading::splatPass(uint32_t points, unsigned program) const
 void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials)
 {
     const LfdprConstants& k = LfdprConstants::get();
-    const uint32_t shared = k.maxShadeGroups - 1; // dispatch slots for textured materials
 
-    // Step 1: the groups, each with the textures its program samples.
+    // Step 1: the groups (in lfdprMaterialGroups' order), each with the textures its
+    // program samples.
     groups_.clear();
     groups_.push_back({kNone, scene.gpuMaterialIndex(kNone), 0u});
     const std::vector<Material>& materials = scene.cpu().materials;
-    groupOfMaterial_.assign(materials.size() + 1, 0u); // + the default material, stored last
-    for (size_t i = 0; i < texturedMaterials.size(); ++i) {
-        const int32_t m = texturedMaterials[i];
+    for (const int32_t m : texturedMaterials)
         groups_.push_back({m, scene.gpuMaterialIndex(m), materialTextureFlags(materials[size_t(m)])});
-        groupOfMaterial_[scene.gpuMaterialIndex(m)] = 1u + uint32_t(i % shared);
-    }
     groupCount_ = uint32_t(std::min<size_t>(groups_.size(), k.maxShadeGroups));
 
     // Step 2: the buffers (grown, never shrunk, so a steady scene allocates nothing).
-    const size_t groupBytes = groupOfMaterial_.size() * sizeof(uint32_t);
-    if (groupBytes > materialGroupsBytes_) {
-        materialGroups_ = gl::createBuffer(groupBytes, GL_DYNAMIC_STORAGE_BIT);
-        materialGroupsBytes_ = groupBytes;
-        materialGroupTexels_ = gl::createTexture(GL_TEXTURE_BUFFER);
-        glTextureBuffer(materialGroupTexels_, GL_R32UI, materialGroups_);
-    }
-    glNamedBufferSubData(materialGroups_, 0, GLsizeiptr(groupBytes), groupOfMaterial_.data());
     // The repair list after the groups' lists: one entry per repaired pixel (more repairs
     // than it holds shade every marked chunk again instead).
     repairBase_ = groupCount_ * entryCount_ * k.shadeEntryWords;
@@ -254,7 +250,6 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
     glBindImageTexture(k.imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glBindTextureUnit(k.unitViewDepth, depthTexels_);
     glBindTextureUnit(k.unitViewIndex, index_ ? indexTexels_.get() : 0u);
-    glBindTextureUnit(k.unitMaterialGroups, materialGroupTexels_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
     // The background everywhere first (a memset), then the shading overwrites covered pixels.
     glClearTexImage(targets.colorArray(), 0, GL_RGBA, GL_FLOAT, kBackground);

@@ -19,6 +19,13 @@ namespace lfd::player {
 class GpuScene;
 class ViewTargets;
 
+// The shading group of every GPU material (index: GpuScene::gpuMaterialIndex): 0 for the
+// untextured ones, then 1 + i for textured material texturedMaterials[i] (scene material
+// indices), shared modulo the LFDPR_MAX_SHADE_GROUPS - 1 textured slots. The draw table
+// carries each draw's group (LfdprDrawGpu::group), which the splat marks by and the
+// shading checks a pixel's winner against.
+std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
+
 class LfdprVisibilityShading {
 public:
     // int64: one 64-bit atomicMin pass (GL_NV_shader_atomic_int64; its shaders are only
@@ -71,11 +78,9 @@ private:
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_; // 64-bit path: depth_ holds the words
     gl::Texture depthTexels_, indexTexels_; // the same, read as buffer textures
-    gl::Texture materialGroupTexels_;                     // materialGroups_ as a buffer texture
-    gl::Buffer shadeWork_, materialGroups_, chunkMasks_;
-    size_t shadeWorkBytes_ = 0, materialGroupsBytes_ = 0, chunkMaskBytes_ = 0;
+    gl::Buffer shadeWork_, chunkMasks_;
+    size_t shadeWorkBytes_ = 0, chunkMaskBytes_ = 0;
     std::vector<Group> groups_;
-    std::vector<uint32_t> groupOfMaterial_; // per GPU material
     uint32_t groupCount_ = 0;            // dispatch slots in use (<= LFDPR_MAX_SHADE_GROUPS)
     uint32_t repairBase_ = 0, repairCapacity_ = 0; // the repair list in the shade work buffer
     uint32_t views_ = 0, width_ = 0, height_ = 0;

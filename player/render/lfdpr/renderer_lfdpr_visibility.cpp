@@ -203,14 +203,18 @@ private:
         uint64_t triangles = 0;
         const bool hasUv = (scene.cpu().vertices.mask() & kStreamUv) != 0;
         for (const DrawItem& d : scene.draws()) {
-            draws.push_back({d.node, scene.gpuMaterialIndex(d.material), d.firstIndex / 3, 0});
-            largeBase_.push_back(uint32_t(triangles));
-            triangles += d.indexCount / 3;
             const bool textured =
                 hasUv && d.material != kNone && hasTextures(scene.cpu().materials[size_t(d.material)]);
             if (textured &&
                 std::find(texturedMaterials_.begin(), texturedMaterials_.end(), d.material) == texturedMaterials_.end())
                 texturedMaterials_.push_back(d.material);
+        }
+        const std::vector<uint32_t> groups = lfdprMaterialGroups(scene, texturedMaterials_);
+        for (const DrawItem& d : scene.draws()) {
+            const uint32_t material = scene.gpuMaterialIndex(d.material);
+            draws.push_back({d.node, material, d.firstIndex / 3, groups[material]});
+            largeBase_.push_back(uint32_t(triangles));
+            triangles += d.indexCount / 3;
         }
         if (triangles > 0xFFFFFFFFull)
             throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
