@@ -62,11 +62,11 @@ vec3 objectNormal(uint vertex)
     return texelFetch(t_sceneNormals, int(vertex)).xyz;
 }
 
-// Perspective-correct barycentrics of window point p (screen barycentrics weighted by
-// 1 / w, as the rasteriser interpolates varyings).
-vec3 perspectiveBarycentric(vec2 s0, vec2 s1, vec2 s2, vec3 invW, vec2 p)
+// Perspective-correct barycentrics from a pixel's screen barycentrics (its edge values):
+// weighted by 1 / w, as the rasteriser interpolates varyings.
+vec3 perspectiveBarycentric(vec3 edges, vec3 invW)
 {
-    vec3 b = vec3(lfdEdge(s1, s2, p), lfdEdge(s2, s0, p), lfdEdge(s0, s1, p)) * invW;
+    vec3 b = edges * invW;
     return b / (b.x + b.y + b.z);
 }
 
@@ -97,19 +97,23 @@ ViewTriangle viewTriangle(LfdprRecordGpu r, LfdprDrawGpu draw, uint view)
     return t;
 }
 
-vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
+vec4 shadePixel(ViewTriangle t, uint view, LfdViewTriangle vt, vec3 edges)
 {
     // Step 1: the triangle in this view.
     LfdprDrawGpu draw = t.draw;
     uvec3 vi = t.vi;
     vec3 p0 = t.p0, p1 = t.p1, p2 = t.p2;
-    vec2 s0 = t.s0, s1 = t.s1, s2 = t.s2;
     vec3 invW = t.invW;
 
-    // Step 2: attributes at the pixel centre, and the uv footprint from its neighbours.
-    vec3 b = perspectiveBarycentric(s0, s1, s2, invW, centre);
-    vec3 bx = perspectiveBarycentric(s0, s1, s2, invW, centre + vec2(1.0, 0.0));
-    vec3 by = perspectiveBarycentric(s0, s1, s2, invW, centre + vec2(0.0, 1.0));
+    // Step 2: attributes at the pixel centre, and the uv footprint from its neighbours one
+    // pixel right and up. The edge values at the centre (lfdEdgeValues, which the 32-bit
+    // check uses too) are affine in the window position, so the neighbours' are one add
+    // each: the derivatives of canonical edge k are its run rotated (lfdViewTriangleEdge).
+    vec3 ddx = -vec3(vt.edgeRun[0].y, vt.edgeRun[1].y, vt.edgeRun[2].y) * vt.edgeSign;
+    vec3 ddy = vec3(vt.edgeRun[0].x, vt.edgeRun[1].x, vt.edgeRun[2].x) * vt.edgeSign;
+    vec3 b = perspectiveBarycentric(edges, invW);
+    vec3 bx = perspectiveBarycentric(edges + ddx, invW);
+    vec3 by = perspectiveBarycentric(edges + ddy, invW);
     NodeGpu node = lfdNode(draw.node);
     LfdSurfacePoint p;
     p.position = b.x * p0 + b.y * p1 + b.z * p2;
@@ -123,7 +127,7 @@ vec4 shadePixel(ViewTriangle t, uint view, vec2 centre)
         p.normal = dot(face, eye - p.position) < 0.0 ? -face : face;
     }
     bool mirrored = determinant(mat3(node.sceneFromObject)) < 0.0;
-    p.frontFacing = (lfdCanonicalEdge(s0, s1, s2) > 0.0) != mirrored;
+    p.frontFacing = (vt.orientation > 0.0) != mirrored; // as the splat decided it
     p.tangent = vec4(0.0, 0.0, 0.0, 1.0);
     if ((LFD_STREAMS & LFD_STREAM_TANGENT) != 0u) {
         vec4 t = b.x * texelFetch(t_sceneTangents, int(vi.x)) + b.y * texelFetch(t_sceneTangents, int(vi.y)) +
@@ -167,11 +171,12 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint
 {
     ViewTriangle t = viewTriangle(record, lfdDraw(record.draw), view);
     vec2 centre = vec2(xy) + 0.5;
+    LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
+    vec3 edges = lfdEdgeValues(vt, centre);
 #ifndef LFDPR_INT64
     // Step 3 (32-bit path): the single splat pass stores depth by atomicMin and the index
     // by a plain store, so a racing point may have left its index under another's depth.
-    LfdViewTriangle vt = lfdViewTriangle(t.s0, t.s1, t.s2, t.invW);
-    if (u_pass == 0u && lfdPlaneDepthKey(vt, lfdEdgeValues(vt, centre)) != lfdPixelKey(pixel)) {
+    if (u_pass == 0u && lfdPlaneDepthKey(vt, edges) != lfdPixelKey(pixel)) {
         viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp LFDPR_INDEX_PASS sets it again
         uint entry = atomicAdd(shadeCounters.repairCount, 1u);
         if (entry < shadeCounters.repairCapacity)
@@ -182,7 +187,7 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint
 
     // Step 4: shade. (A repair pass shades again the listed chunks, where a pixel shaded
     // already gets the same colour.)
-    imageStore(u_views, ivec3(xy, view), shadePixel(t, view, centre));
+    imageStore(u_views, ivec3(xy, view), shadePixel(t, view, vt, edges));
 }
 
 void main()
