@@ -87,8 +87,11 @@ struct BenchRun {
     Image referenceLens;
     std::vector<RendererResult> results;
     BenchReport& report;
-    // Stages and stats of the configurations timed round-robin (timeRoundRobin), by name.
+    // Stages and stats of the configurations timed round-robin (timeRoundRobin), by name,
+    // and their renderers, kept for the quality frame: a renderer's state after its timed
+    // frames (grown buffers) is what the quality frame must see, as in sequential runs.
     std::map<std::string, RendererResult> roundRobin = {};
+    std::map<std::string, std::unique_ptr<Renderer>> roundRobinRenderers = {};
 };
 
 using Say = std::function<void(const std::string&)>;
@@ -273,6 +276,7 @@ bool timeRoundRobin(BenchRun& run)
             RendererResult& r = run.roundRobin[t.config.name()];
             r.stages = t.timer->stages();
             r.extra = t.renderer->extraStats();
+            run.roundRobinRenderers[t.config.name()] = std::move(t.renderer);
         }
     }
     return true;
@@ -376,7 +380,13 @@ bool runConfig(BenchRun& run, size_t i)
     result.ss = config.ss;
     result.timed = name != options.reference || run.plan.referenceTimed;
     const Say say = progressFor(run, i, name);
-    std::unique_ptr<Renderer> renderer = createRenderer(config.renderer, options.rendererOptions);
+    std::unique_ptr<Renderer> renderer;
+    if (auto kept = run.roundRobinRenderers.find(name); kept != run.roundRobinRenderers.end()) {
+        renderer = std::move(kept->second); // the timed one: the quality frame sees its state
+        run.roundRobinRenderers.erase(kept);
+    } else {
+        renderer = createRenderer(config.renderer, options.rendererOptions);
+    }
 
     if (result.timed && run.roundRobin.count(name)) {
         const RendererResult& timed = run.roundRobin.at(name);
