@@ -213,24 +213,16 @@ void main()
     // iteration for all 8 invocations of a SIMD row under a mask, so looping over the
     // tile's views paid for every row in every view; a row now pays for as many views
     // as its busiest pixel has.
-    // (Both loops below walk the two mask words in one loop: see step 3.)
     uvec2 mine = uvec2(0u);
     for (uvec2 bits = mask; bits != uvec2(0u);) {
-        uint word = bits.x != 0u ? 0u : 1u;
-        uint v = uint(findLSB(bits[word]));
-        bits[word] &= bits[word] - 1u;
-        uint view = c.firstView + 32u * word + v;
+        uint v = lfdTakeChunkView(bits);
         LfdprRecordGpu record;
-        if (groupWinner(lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x), record))
-            mine[word] |= 1u << v;
+        if (groupWinner(lfdViewWord(c.firstView + v, xy.x, xy.y, size.x, u_lfd.counts.x), record))
+            mine[v >> 5] |= 1u << (v & 31u);
     }
-    // One loop over both mask words, not a loop per word: llvmpipe runs a loop body at
-    // least once for a SIMD row, even when none of its invocations has an iteration, so
-    // a loop per word cost every row a wasted shading per word its pixels had no view in.
+    // Step 3: shade those views.
     for (uvec2 bits = mine; bits != uvec2(0u);) {
-        uint word = bits.x != 0u ? 0u : 1u;
-        uint view = c.firstView + 32u * word + uint(findLSB(bits[word]));
-        bits[word] &= bits[word] - 1u;
+        uint view = c.firstView + lfdTakeChunkView(bits);
         uint pixel = lfdViewWord(view, xy.x, xy.y, size.x, u_lfd.counts.x);
         // The winner again (step 2 found it is the group's; nothing changed it since).
         shadeViewPixel(view, xy, pixel, lfdRecord(lfdPixelWinner(pixel)), chunkTile);

@@ -42,3 +42,16 @@ LfdShadeChunk lfdShadeChunk(uint index, uvec2 tiles, uint viewCount)
     c.endView = min(c.firstView + uint(LFDPR_VIEW_CHUNK), viewCount);
     return c;
 }
+
+// Takes the lowest view set in a chunk's two-word view mask and clears it: the view's
+// offset in the chunk (0-63). Loop as `for (uvec2 bits = mask; bits != uvec2(0u);)`, one
+// loop over both words - llvmpipe runs a loop body at least once per SIMD row even when
+// none of its invocations has an iteration, so a loop per word cost every row a wasted
+// pass for a word its pixel had no view in.
+uint lfdTakeChunkView(inout uvec2 bits)
+{
+    uint word = bits.x != 0u ? 0u : 1u;
+    uint v = uint(findLSB(bits[word]));
+    bits[word] &= bits[word] - 1u;
+    return 32u * word + v;
+}

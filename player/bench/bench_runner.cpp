@@ -87,11 +87,16 @@ struct BenchRun {
     Image referenceLens;
     std::vector<RendererResult> results;
     BenchReport& report;
-    // Stages and stats of the configurations timed round-robin (timeRoundRobin), by name,
-    // and their renderers, kept for the quality frame: a renderer's state after its timed
-    // frames (grown buffers) is what the quality frame must see, as in sequential runs.
-    std::map<std::string, RendererResult> roundRobin = {};
-    std::map<std::string, std::unique_ptr<Renderer>> roundRobinRenderers = {};
+    // The configurations timed round-robin (timeRoundRobin), by name: their stages and
+    // stats, and their renderers, kept for the quality frame - a renderer's state after
+    // its timed frames (grown buffers) is what the quality frame must see, as in
+    // sequential runs.
+    struct Timed {
+        std::map<std::string, StageTimes> stages;
+        std::vector<std::pair<std::string, double>> extra;
+        std::unique_ptr<Renderer> renderer;
+    };
+    std::map<std::string, Timed> roundRobin = {};
 };
 
 using Say = std::function<void(const std::string&)>;
@@ -189,14 +194,20 @@ void openGstdCache(BenchRun& run, const std::string& glDescription)
     }
 }
 
-// A progress printer for configuration `i`: pack, view layout, place in the run, name.
+// The start of every progress line: pack and view layout.
+std::ostream& progressLine(const BenchRun& run)
+{
+    return run.progress << "lfd-bench: " << run.packName << " " << run.profile.viewCount << "x"
+                        << run.profile.viewWidth << "x" << run.profile.viewHeight << " ";
+}
+
+// A progress printer for configuration `i`: place in the run, name.
 Say progressFor(const BenchRun& run, size_t i, const std::string& name)
 {
     return [&run, i, name](const std::string& line) {
         if (!run.options.quiet)
-            run.progress << "lfd-bench: " << run.packName << " " << run.profile.viewCount << "x"
-                         << run.profile.viewWidth << "x" << run.profile.viewHeight << " [" << (i + 1) << "/"
-                         << run.plan.order.size() << "] " << name << ": " << line << std::endl;
+            progressLine(run) << "[" << (i + 1) << "/" << run.plan.order.size() << "] " << name << ": " << line
+                              << std::endl;
     };
 }
 
@@ -256,10 +267,9 @@ bool timeRoundRobin(BenchRun& run)
             continue;
         run.pipeline.setSupersampling(parseSupersampling(mode));
         if (!options.quiet)
-            run.progress << "lfd-bench: " << run.packName << " " << run.profile.viewCount << "x"
-                         << run.profile.viewWidth << "x" << run.profile.viewHeight << " --ss " << mode << ": "
-                         << turns.size() << " configuration(s) taking turns: warm-up " << options.warmup
-                         << " frame(s), then " << options.frames << " timed frame(s) each" << std::endl;
+            progressLine(run) << "--ss " << mode << ": " << turns.size()
+                              << " configuration(s) taking turns: warm-up " << options.warmup << " frame(s), then "
+                              << options.frames << " timed frame(s) each" << std::endl;
         GpuTimer warmTimer;
         for (uint32_t k = 0; k < options.warmup && !stopRequested(options); ++k)
             for (Turn& t : turns)
@@ -273,10 +283,10 @@ bool timeRoundRobin(BenchRun& run)
         gl::checkGlError("timing --ss " + mode);
         for (Turn& t : turns) {
             t.timer->finish();
-            RendererResult& r = run.roundRobin[t.config.name()];
-            r.stages = t.timer->stages();
-            r.extra = t.renderer->extraStats();
-            run.roundRobinRenderers[t.config.name()] = std::move(t.renderer);
+            BenchRun::Timed& timed = run.roundRobin[t.config.name()];
+            timed.stages = t.timer->stages();
+            timed.extra = t.renderer->extraStats();
+            timed.renderer = std::move(t.renderer);
         }
     }
     return true;
@@ -381,17 +391,18 @@ bool runConfig(BenchRun& run, size_t i)
     result.timed = name != options.reference || run.plan.referenceTimed;
     const Say say = progressFor(run, i, name);
     std::unique_ptr<Renderer> renderer;
-    if (auto kept = run.roundRobinRenderers.find(name); kept != run.roundRobinRenderers.end()) {
-        renderer = std::move(kept->second); // the timed one: the quality frame sees its state
-        run.roundRobinRenderers.erase(kept);
+    const auto timed = run.roundRobin.find(name);
+    const bool timedTakingTurns = timed != run.roundRobin.end();
+    if (timedTakingTurns) {
+        renderer = std::move(timed->second.renderer); // the timed one: the quality frame sees its state
+        result.stages = std::move(timed->second.stages);
+        result.extra = std::move(timed->second.extra);
+        run.roundRobin.erase(timed);
     } else {
         renderer = createRenderer(config.renderer, options.rendererOptions);
     }
 
-    if (result.timed && run.roundRobin.count(name)) {
-        const RendererResult& timed = run.roundRobin.at(name);
-        result.stages = timed.stages;
-        result.extra = timed.extra;
+    if (timedTakingTurns) {
         char line[128];
         std::snprintf(line, sizeof(line), "mean total %.2f ms (timed taking turns)",
                       result.stageMean(std::string(stage::kTotal)));

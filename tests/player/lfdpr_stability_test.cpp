@@ -682,7 +682,7 @@ TEST_F(LfdprStabilityTest, ManyViewsAgreeWithMvrInOrder)
         keepImages("views" + std::to_string(viewCount), lfdpr, mvr, viewCount - 1);
         // Per view agreement, holes and plausibility (the reasons are at kManyViewsBounds).
         EXPECT_EQ(violations(c, kManyViewsBounds), std::vector<std::string>{});
-        // Bytes per view pixel: 8 (visibility pipeline: depth and point index; paper
+        // Bytes per view pixel: 8 (visibility pipeline: depth and triangle record; paper
         // pipeline: depth and colour).
         const double bytesPerPixel = 8.0;
         const double expectedBytes = double(viewCount) * 64.0 * 48.0 * bytesPerPixel;

@@ -4,7 +4,7 @@
 // several threads in an order that changes from run to run, so this holds only where the
 // method makes every result independent of order: mvr by the depth test (equal depths keep
 // the first primitive in draw order), the lfdpr visibility pipeline by its 32-bit tie rule
-// (equal depths keep the lowest point index); gstd's seeded samples have their own test
+// (equal depths keep the lowest triangle record); gstd's seeded samples have their own test
 // (GstdTest.TwoRunsAreBitIdentical). The paper
 // pipeline's 32-bit path writes the colour of any splat whose depth equals the minimum,
 // which is order-dependent where two splats of different colour tie; it is held to a

@@ -1,6 +1,6 @@
 // LFDPR visibility splatting and per-pixel shading (the visibility pipeline;
 // shaders/lfdpr_visibility.comp, lfdpr_shade_list.comp, lfdpr_shade_dispatch.comp,
-// lfdpr_shade.comp): the per-view depth and point index buffers for either atomics path,
+// lfdpr_shade.comp): the per-view depth and winner (triangle record) buffers for either atomics path,
 // the splat pass(es), which also mark per shading group the tile chunks (a tile position
 // over a run of views) and views its points wrote, and shading in three steps - list each
 // group's marked chunks, size each group's dispatch on the GPU, then one indirect dispatch
@@ -29,7 +29,7 @@ std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vect
 class LfdprVisibilityShading {
 public:
     // int64: one 64-bit atomicMin pass (GL_NV_shader_atomic_int64; its shaders are only
-    // compiled then); otherwise a depth pass and a point-index pass over 32-bit words.
+    // compiled then); otherwise a depth pass and a record (index) pass over 32-bit words.
     // testIndexRaces: LfdprOptions::testIndexRaces (32-bit path only).
     explicit LfdprVisibilityShading(bool int64, uint32_t testIndexRaces = 0);
     ~LfdprVisibilityShading();
@@ -38,7 +38,7 @@ public:
 
     bool int64() const { return int64_; }
     void resize(uint32_t viewCount, uint32_t width, uint32_t height);
-    // 8 bytes per view pixel (depth + point index, or the 64-bit word).
+    // 8 bytes per view pixel (depth + the winner's record, or the 64-bit word).
     size_t viewBufferBytes() const;
     // The shading work: per group a dispatch, a list of tile chunks and the splat's marks.
     size_t shadeWorkBytes() const;
@@ -51,7 +51,7 @@ public:
     void splat(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, uint32_t points);
     // Shades every visible pixel into targets and writes the background elsewhere, one
     // dispatch per group over the chunks splat() marked for it. On the 32-bit path, pixels
-    // whose point index lost a race to a nearer point are repaired - the index pass over
+    // whose record lost a race to a nearer point are repaired - the index pass over
     // all `points`, then their chunks shaded again - and their number is returned (0 on
     // the 64-bit path).
     uint32_t shade(const GpuScene& scene, ViewTargets& targets, uint32_t points);

@@ -25,7 +25,7 @@ namespace lfd::player {
 
 struct LfdprOptions {
     // Visibility (default, beyond the paper): compute point generation, 8-byte points,
-    // visibility splatting of depth and point index with camera-line coherence, then one
+    // visibility splatting of depth and triangle record with camera-line coherence, then one
     // mvr-identical shading per visible view pixel with textureGrad at the exact footprint.
     // Paper: the paper's pipeline as published - geometry-shader point generation, 48-byte
     // points carrying tv_min / tv_max, shading per splat and view (multiview mipmapping).

@@ -3,8 +3,8 @@
 //   1. "point_generation": compute point generation (lfdpr_compute_points) into 8-byte
 //      points and 16-byte triangle records; the point count is read back, and after an
 //      overflow the buffer grows and generation is redone in the same frame;
-//   2. "view_generation": visibility splatting of depth and point index into every view
-//      (lfdpr_visibility_shading, camera-line coherence);
+//   2. "view_generation": visibility splatting of depth and the point's triangle record
+//      into every view (lfdpr_visibility_shading, camera-line coherence);
 //   3. "resolve": one shading per visible view pixel, as mvr shades a fragment.
 #include "renderer_lfdpr.h"
 
