@@ -257,6 +257,26 @@ LFD_FN vec4 lfdInterpolateTexValue(vec4 tvMin, vec4 tvMax, float weight)
     return tvMin + (tvMax - tvMin) * weight;
 }
 
+// Texture footprint of a pixel (beyond the paper: the visibility pipeline shades each view
+// pixel with textureGrad). The derivative along one window axis of a perspective-correct
+// attribute at the pixel centre - one column of the footprint's Jacobian, as EWA filtering
+// takes it. `edges`: the pixel's screen barycentrics (its three edge values); `dEdges`:
+// their derivatives along the axis (constant: edge functions are affine in the window
+// position); `invW`: 1 / w at the vertices; a0..a2: the attribute there. With
+// w_k = e_k invW_k the perspective-correct barycentrics are w_k / sum(w), so
+//   d a / dx = sum_k dE_k invW_k (a_k - a) / sum(w),   a = sum_k w_k a_k / sum(w).
+// A one-pixel forward difference would be the secant half a pixel away: on a receding
+// surface always towards the wider footprint, so textures came out blurrier than the
+// rasteriser's 2x2-quad differences, which use the nearer secant on half the rows.
+LFD_FN vec2 lfdPerspectiveDerivative(vec3 edges, vec3 dEdges, vec3 invW, vec2 a0, vec2 a1, vec2 a2)
+{
+    vec3 w = edges * invW;
+    float invSum = 1.0f / (w.x + w.y + w.z);
+    vec2 a = (w.x * a0 + w.y * a1 + w.z * a2) * invSum;
+    vec3 dw = dEdges * invW;
+    return (dw.x * (a0 - a) + dw.y * (a1 - a) + dw.z * (a2 - a)) * invSum;
+}
+
 // ---------------------------------------------------------------------------------------
 // Coverage tests (section 3.2).
 

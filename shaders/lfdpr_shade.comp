@@ -62,14 +62,6 @@ vec3 objectNormal(uint vertex)
     return texelFetch(t_sceneNormals, int(vertex)).xyz;
 }
 
-// Perspective-correct barycentrics from a pixel's screen barycentrics (its edge values):
-// weighted by 1 / w, as the rasteriser interpolates varyings.
-vec3 perspectiveBarycentric(vec3 edges, vec3 invW)
-{
-    vec3 b = edges * invW;
-    return b / (b.x + b.y + b.z);
-}
-
 // A visible point's triangle in one view: its draw, vertices, scene positions and window
 // positions (projected as lfdpr_visibility.comp projects them).
 struct ViewTriangle {
@@ -105,15 +97,14 @@ vec4 shadePixel(ViewTriangle t, uint view, LfdViewTriangle vt, vec3 edges)
     vec3 p0 = t.p0, p1 = t.p1, p2 = t.p2;
     vec3 invW = t.invW;
 
-    // Step 2: attributes at the pixel centre, and the uv footprint from its neighbours one
-    // pixel right and up. The edge values at the centre (lfdEdgeValues, which the 32-bit
-    // check uses too) are affine in the window position, so the neighbours' are one add
-    // each: the derivatives of canonical edge k are its run rotated (lfdViewTriangleEdge).
-    vec3 ddx = -vec3(vt.edgeRun[0].y, vt.edgeRun[1].y, vt.edgeRun[2].y) * vt.edgeSign;
-    vec3 ddy = vec3(vt.edgeRun[0].x, vt.edgeRun[1].x, vt.edgeRun[2].x) * vt.edgeSign;
-    vec3 b = perspectiveBarycentric(edges, invW);
-    vec3 bx = perspectiveBarycentric(edges + ddx, invW);
-    vec3 by = perspectiveBarycentric(edges + ddy, invW);
+    // Step 2: attributes at the pixel centre (perspective-correct barycentrics: the screen
+    // ones, its edge values, weighted by 1 / w as the rasteriser interpolates varyings),
+    // and the uv footprint there (lfdPerspectiveDerivative: the exact derivatives, not a
+    // one-pixel difference). The edge values (lfdEdgeValues, which the 32-bit check uses
+    // too) are affine in the window position: the derivatives of canonical edge k are its
+    // run rotated (lfdViewTriangleEdge).
+    vec3 w = edges * invW;
+    vec3 b = w / (w.x + w.y + w.z);
     NodeGpu node = lfdNode(draw.node);
     LfdSurfacePoint p;
     p.position = b.x * p0 + b.y * p1 + b.z * p2;
@@ -141,8 +132,10 @@ vec4 shadePixel(ViewTriangle t, uint view, LfdViewTriangle vt, vec3 edges)
         vec2 uv0 = texelFetch(t_sceneUvs, int(vi.x)).xy, uv1 = texelFetch(t_sceneUvs, int(vi.y)).xy;
         vec2 uv2 = texelFetch(t_sceneUvs, int(vi.z)).xy;
         p.uv = b.x * uv0 + b.y * uv1 + b.z * uv2;
-        g_duvdx = bx.x * uv0 + bx.y * uv1 + bx.z * uv2 - p.uv;
-        g_duvdy = by.x * uv0 + by.y * uv1 + by.z * uv2 - p.uv;
+        vec3 ddx = -vec3(vt.edgeRun[0].y, vt.edgeRun[1].y, vt.edgeRun[2].y) * vt.edgeSign;
+        vec3 ddy = vec3(vt.edgeRun[0].x, vt.edgeRun[1].x, vt.edgeRun[2].x) * vt.edgeSign;
+        g_duvdx = lfdPerspectiveDerivative(edges, ddx, invW, uv0, uv1, uv2);
+        g_duvdy = lfdPerspectiveDerivative(edges, ddy, invW, uv0, uv1, uv2);
     }
 
     // Step 3: the material, as mvr shades it (alpha-masked cells were dropped when the
