@@ -76,7 +76,8 @@ bool lfdMayCoverPixelCentre(vec3 p0, vec3 p1, vec3 p2)
 }
 
 
-// A triangle in one view, ready for per-pixel tests: window positions, 1 / w at its
+// A triangle in one view, ready for per-pixel tests: window positions (on the sub-pixel
+// grid, lfdSnapToSubpixels), 1 / w at its
 // vertices, its orientation (+1 counter-clockwise, -1 clockwise, 0 degenerate) from the
 // canonical edge function, as lfdInsideTriangle decides it, and its three edges in
 // canonical order (lfdCanonicalEdge), decided here once rather than at every pixel.
@@ -85,7 +86,7 @@ bool lfdMayCoverPixelCentre(vec3 p0, vec3 p1, vec3 p2)
 // lfdEdge(start, end, p) - the very operations lfdCanonicalEdge does, so the values are
 // bit-identical to it and the two triangles sharing an edge still get exactly negated
 // values. edgeOwnsTies[k]: whether a sample exactly on edge k belongs to this triangle
-// (lfdEdgeOwns's tie rule).
+// (lfdSetCanonicalEdge's tie rule).
 struct LfdViewTriangle {
     vec2 s0;
     vec2 s1;
@@ -98,7 +99,29 @@ struct LfdViewTriangle {
     bvec3 edgeOwnsTies;
 };
 
-// Edge (a, b) of t in canonical order, as slot k.
+// Window positions snapped to the rasteriser's sub-pixel grid (GL_SUBPIXEL_BITS: 8 on
+// Mesa's llvmpipe and on NVIDIA's driver), as it snaps vertices before its edge tests, so
+// that lfdpr decides the pixel centres that lie within a fraction of a sub-pixel of an
+// edge as the rasteriser does (mvr, and gstd's sub-views) instead of by float rounding.
+// On the grid the edge values of the small triangles a bake makes are exact in float (run
+// and offset are multiples of 1/256 pixel), so a sample exactly on an edge gives exactly 0
+// and the tie rule decides it.
+#define LFDPR_SUBPIXEL_STEPS 256.0
+vec2 lfdSnapToSubpixels(vec2 s)
+{
+    return floor(s * LFDPR_SUBPIXEL_STEPS + 0.5) / LFDPR_SUBPIXEL_STEPS;
+}
+float lfdSnapToSubpixels(float s)
+{
+    return floor(s * LFDPR_SUBPIXEL_STEPS + 0.5) / LFDPR_SUBPIXEL_STEPS;
+}
+
+// Edge (a, b) of t in canonical order, as slot k. Tie rule (a sample exactly on the edge):
+// the rasteriser's left / bottom-edge convention. Walked counter-clockwise (GL window
+// coordinates, y up), the edge owns its samples when it goes down (the triangle lies to
+// its right: a left edge) or, horizontal, when it goes right (the triangle lies above it:
+// a bottom edge). The two triangles sharing an edge walk it in opposite directions, so
+// exactly one owns each sample on it.
 void lfdSetCanonicalEdge(inout LfdViewTriangle t, int k, vec2 a, vec2 b)
 {
     bool forward = lfdVertexLess(a, b);
@@ -107,11 +130,17 @@ void lfdSetCanonicalEdge(inout LfdViewTriangle t, int k, vec2 a, vec2 b)
     precise vec2 run = end - start;
     t.edgeRun[k] = run;
     t.edgeSign[k] = forward ? 1.0 : -1.0;
-    t.edgeOwnsTies[k] = t.orientation * t.edgeSign[k] > 0.0;
+    vec2 counterClockwise = run * (t.orientation * t.edgeSign[k]);
+    t.edgeOwnsTies[k] = counterClockwise.y < 0.0 || (counterClockwise.y == 0.0 && counterClockwise.x > 0.0);
 }
 
+// s0..s2 are snapped here (lfdSnapToSubpixels; the snap is idempotent, so a caller that
+// snapped them already for its pixel bounds gets the same triangle).
 LfdViewTriangle lfdViewTriangle(vec2 s0, vec2 s1, vec2 s2, vec3 invW)
 {
+    s0 = lfdSnapToSubpixels(s0);
+    s1 = lfdSnapToSubpixels(s1);
+    s2 = lfdSnapToSubpixels(s2);
     LfdViewTriangle t;
     t.s0 = s0;
     t.s1 = s1;
@@ -142,8 +171,8 @@ vec3 lfdEdgeValues(LfdViewTriangle t, vec2 p)
     return vec3(lfdViewTriangleEdge(t, 0, p), lfdViewTriangleEdge(t, 1, p), lfdViewTriangleEdge(t, 2, p));
 }
 
-// lfdInsideTriangle from precomputed edge values (same tie rule as lfdEdgeOwns: a sample
-// on a shared edge belongs to exactly one of the two triangles).
+// Whether t owns sample p, from p's precomputed edge values (a sample on a shared edge
+// belongs to exactly one of the two triangles: lfdSetCanonicalEdge's tie rule).
 bool lfdOwnsSample(LfdViewTriangle t, vec3 e)
 {
     bvec3 own = bvec3(e.x != 0.0 ? e.x * t.orientation > 0.0 : t.edgeOwnsTies.x,

@@ -126,8 +126,11 @@ void main()
         return; // behind a camera plane (the near plane clips such triangles)
 
     // Step 3: the rows the splat covers are the same in every view.
-    float yLo = max(min(min(ca.y, cb.y), min(cc.y, cd.y)), min(min(v0.y, v1.y), v2.y));
-    float yHi = min(max(max(ca.y, cb.y), max(cc.y, cd.y)), max(max(v0.y, v1.y), v2.y));
+    // The triangle's bounds are those of its vertices on the sub-pixel grid, where
+    // lfdViewTriangle puts them for the coverage test.
+    vec3 snappedY = vec3(lfdSnapToSubpixels(v0.y), lfdSnapToSubpixels(v1.y), lfdSnapToSubpixels(v2.y));
+    float yLo = max(min(min(ca.y, cb.y), min(cc.y, cd.y)), min(min(snappedY.x, snappedY.y), snappedY.z));
+    float yHi = min(max(max(ca.y, cb.y), max(cc.y, cd.y)), max(max(snappedY.x, snappedY.y), snappedY.z));
     ivec2 viewPixels = ivec2(viewSize);
     int rowLo = max(int(ceil(yLo - 0.5)), 0), rowHi = min(int(floor(yHi - 0.5)), viewPixels.y - 1);
     if (rowLo > rowHi)
@@ -151,7 +154,8 @@ void main()
             float e = lfdViewOffset(view);
             vec2 a = lfdWindowInView(ca, e), b = lfdWindowInView(cb, e);
             vec2 c = lfdWindowInView(cc, e), d = lfdWindowInView(cd, e);
-            vec2 s0 = lfdWindowInView(v0, e), s1 = lfdWindowInView(v1, e), s2 = lfdWindowInView(v2, e);
+            vec2 s0 = lfdSnapToSubpixels(lfdWindowInView(v0, e)), s1 = lfdSnapToSubpixels(lfdWindowInView(v1, e));
+            vec2 s2 = lfdSnapToSubpixels(lfdWindowInView(v2, e));
             float xLo = max(min(min(a.x, b.x), min(c.x, d.x)), min(min(s0.x, s1.x), s2.x));
             float xHi = min(max(max(a.x, b.x), max(c.x, d.x)), max(max(s0.x, s1.x), s2.x));
             int colLo = max(int(ceil(xLo - 0.5)), 0), colHi = min(int(floor(xHi - 0.5)), viewPixels.x - 1);
