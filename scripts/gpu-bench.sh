@@ -1,61 +1,108 @@
 #!/usr/bin/env bash
-# The LFDPR bench table on a GPU machine (or any machine): builds, generates the samples
-# (car, gallery, room, and the paper-scale dense block), bakes them and the third-party
-# scenes in ../shared/scenes when present, and runs lfd-bench at the prototype's 48 views
-# of 480x360 for mvr, mvr-layered, lfdpr (visibility pipeline) and lfdpr-paper.
-# Results: out/gpu-bench/<scene>/bench.{json,csv} and a summary table in
-# out/gpu-bench/table.md. Usage: bash scripts/gpu-bench.sh [FRAMES (default 20)]
+# The LFDPR bench table (README "Measured on a GPU"): lfd-bench at the prototype's 48 views
+# of 480x360 for mvr, mvr-layered, lfdpr (visibility pipeline) and lfdpr-paper on every
+# scene, against mvr, plus the dense block at 96 views. Runs in two places:
+#   * in a player bundle (scripts/bundle-player.sh): the bundle's lfd-bench over its
+#     packs/*.lfdpack - no build tools, no baker, no source tree needed;
+#   * in the source tree: builds, generates the samples (car, gallery, room, dense), bakes
+#     them and the scenes of ../shared/scenes, then runs the same.
+# Usage: bash gpu-bench.sh [FRAMES (default 20)] [OUTDIR (default ./gpu-bench-out in a
+# bundle, out/gpu-bench in the tree)]. Per scene OUTDIR/<scene>/bench.{json,csv}; the table
+# in OUTDIR/table.md (printed at the end; needs python3, else lfd-bench's own tables are
+# printed). Set LFD_BENCH_RENDERERS to time other renderers.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 frames="${1:-20}"
-[ -x build/player/lfd-bench ] || bash scripts/build.sh
-out=out/gpu-bench
-mkdir -p "$out/packs"
-./build/samples/lfd-make-samples "$out/samples" --scene all --quiet
-./build/samples/lfd-make-samples "$out/samples" --scene dense --quiet
-scenes=()
-for s in car gallery room dense; do
-  ./build/baker/lfd-bake "$out/samples/$s/$s.gltf" -o "$out/packs/$s.lfdpack" --quiet
-  scenes+=("$s")
-done
-if [ -d ../shared/scenes ]; then
-  for dir in ../shared/scenes/*/; do
-    name=$(basename "$dir")
-    gltf=$(ls "$dir"*.gltf 2>/dev/null | head -n 1 || true)
-    [ -n "$gltf" ] || continue
-    ./build/baker/lfd-bake "$gltf" -o "$out/packs/$name.lfdpack" --quiet
-    scenes+=("$name")
+renderers="${LFD_BENCH_RENDERERS:-mvr,mvr-layered,lfdpr,lfdpr-paper}"
+
+if [ -x "$here/libexec/lfd-bench" ]; then
+  # Bundle: prebuilt packs.
+  bench="$here/lfd-bench"
+  out="${2:-$PWD/gpu-bench-out}"
+  packs=("$here"/packs/*.lfdpack)
+  [ -e "${packs[0]}" ] || { echo "gpu-bench: no packs in $here/packs (give them to bundle-player.sh)" >&2; exit 2; }
+else
+  # Source tree: build, make and bake the scenes.
+  cd "$here/.."
+  [ -x build/player/lfd-bench ] || bash scripts/build.sh
+  bench=build/player/lfd-bench
+  out="${2:-out/gpu-bench}"
+  mkdir -p "$out/packs"
+  ./build/samples/lfd-make-samples "$out/samples" --scene all --quiet
+  ./build/samples/lfd-make-samples "$out/samples" --scene dense --quiet
+  packs=()
+  for s in car gallery room dense; do
+    ./build/baker/lfd-bake "$out/samples/$s/$s.gltf" -o "$out/packs/$s.lfdpack" --quiet
+    packs+=("$out/packs/$s.lfdpack")
   done
+  if [ -d ../shared/scenes ]; then
+    for dir in ../shared/scenes/*/; do
+      name=$(basename "$dir")
+      gltf=$(ls "$dir"*.gltf 2>/dev/null | head -n 1 || true)
+      [ -n "$gltf" ] || continue
+      ./build/baker/lfd-bake "$gltf" -o "$out/packs/$name.lfdpack" --quiet
+      packs+=("$out/packs/$name.lfdpack")
+    done
+  fi
 fi
-table="$out/table.md"
-{
-  echo "| scene | renderer | point gen ms (points) | view gen ms | resolve ms | EIA ms | total ms | vs mvr | vs mvr-layered | EIA RMSE | EIA SSIM |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|"
-} > "$table.tmp"
-for s in "${scenes[@]}"; do
-  echo "gpu-bench: $s"
-  ./build/player/lfd-bench "$out/packs/$s.lfdpack" --renderers mvr,mvr-layered,lfdpr,lfdpr-paper \
-    --reference mvr --frames "$frames" --warmup 3 --out "$out/$s" --quiet
-  python3 - "$out/$s/bench.json" "$s" >> "$table.tmp" <<'PY'
-import json, sys
-b = json.load(open(sys.argv[1]))
-def ms(r, stage):
-    st = r.get("stages", {}).get(stage)
-    return st["mean"] if st else None
-rows = b["renderers"]
-totals = {r["name"]: ms(r, "total") for r in rows}
-for r in rows:
-    f = lambda v: "-" if v is None else f"{v:.2f}"
-    t = totals[r["name"]]
-    pts = r.get("points")
-    pg = ms(r, "point_generation")
-    pgs = "-" if pg is None else f"{pg:.2f} ({pts/1e6:.2f}M)" if pts else f"{pg:.2f}"
-    q = r.get("quality", {}).get("eia", {})
-    vs = lambda other: "-" if not totals.get(other) or not t else f"{totals[other]/t:.2f}x"
-    print(f"| {sys.argv[2]} | {r['name']} | {pgs} | {f(ms(r,'view_generation'))} | {f(ms(r,'resolve'))} | "
-          f"{f(ms(r,'eia'))} | {f(t)} | {vs('mvr')} | {vs('mvr-layered')} | "
-          f"{f(q.get('rmse'))} | {('-' if q.get('ssim') is None else format(q['ssim'], '.4f'))} |")
-PY
+mkdir -p "$out"
+
+# One run per scene (and dense again at 96 views), each into its own folder.
+runs=()
+for pack in "${packs[@]}"; do
+  scene=$(basename "$pack" .lfdpack)
+  views=(48)
+  [ "$scene" = dense ] && views=(48 96)
+  for v in "${views[@]}"; do
+    name=$scene
+    [ "$v" = 48 ] || name="$scene-${v}v"
+    echo "gpu-bench: $name ($v views)"
+    "$bench" "$pack" --renderers "$renderers" --reference mvr --frames "$frames" --warmup 5 --views "$v" \
+      --view-size 480x360 --out "$out/$name" --quiet > "$out/$name.txt"
+    runs+=("$name")
+  done
 done
-mv "$table.tmp" "$table"
-cat "$table"
+
+if ! command -v python3 > /dev/null; then
+  for name in "${runs[@]}"; do
+    echo "== $name"
+    cat "$out/$name.txt"
+  done
+  exit 0
+fi
+python3 - "$out" "${runs[@]}" > "$out/table.md.tmp" <<'PY'
+import json, os, sys
+out, runs = sys.argv[1], sys.argv[2:]
+def f(v, fmt="{:.2f}"):
+    return "-" if v is None else fmt.format(v)
+first = json.load(open(os.path.join(out, runs[0], "bench.json")))
+print(f"GPU / driver: {first['gl']}\n")
+print("| scene (drawn tris) | views | renderer | point gen ms (points) | view gen ms | resolve ms | EIA ms | "
+      "total ms | wall ms/frame | vs mvr | vs mvr-layered | EIA RMSE | EIA SSIM | dispatches / barriers / waits per frame | frame GPU MiB |")
+print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+for run in runs:
+    b = json.load(open(os.path.join(out, run, "bench.json")))
+    rows = b["renderers"]
+    def ms(r, stage):
+        st = r.get("stages", {}).get(stage)
+        return st["mean"] if st else None
+    totals = {r["name"]: ms(r, "total") for r in rows}
+    scene = f"{run.split('-')[0] if run.endswith('v') else run} ({b['drawn_triangles'] / 1e3:.0f}K)"
+    for r in rows:
+        if not r.get("timed"):
+            continue
+        t = totals[r["name"]]
+        pts = r.get("extra", {}).get("points")
+        pg = ms(r, "point_generation")
+        pgs = "-" if pg is None else (f"{pg:.2f} ({pts / 1e3:.0f}K)" if pts else f"{pg:.2f}")
+        vs = lambda other: "-" if not totals.get(other) or not t else f"{totals[other] / t:.2f}x"
+        q = r.get("quality", {}).get("eia", {})
+        calls = r.get("gl_calls_per_frame", {})
+        shape = f"{calls.get('dispatches', 0):.0f} / {calls.get('barriers', 0):.0f} / {calls.get('waits', 0):.0f}"
+        print(f"| {scene} | {b['profile']['views']} | {r['name']} | {pgs} | {f(ms(r, 'view_generation'))} | "
+              f"{f(ms(r, 'resolve'))} | {f(ms(r, 'eia'))} | {f(t)} | {f(r.get('wall_ms_per_frame'))} | "
+              f"{vs('mvr')} | {vs('mvr-layered')} | {f(q.get('rmse'))} | {f(q.get('ssim'), '{:.4f}')} | {shape} | "
+              f"{r.get('frame_gpu_bytes', 0) / 2**20:.0f} |")
+PY
+mv "$out/table.md.tmp" "$out/table.md"
+cat "$out/table.md"

@@ -124,11 +124,13 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_SSBO_TANGENTS 15     // tangent stream (vec4), or a dummy
 #define LFDPR_SSBO_UVS 16          // uv stream (vec2), or a dummy
 #define LFDPR_SSBO_DRAWS 17        // LfdprDrawGpu per draw
-#define LFDPR_SSBO_LARGE 18        // per draw segment: primitives sampled by a workgroup
-#define LFDPR_SSBO_LARGE_DISPATCH 19 // per draw: uvec4 indirect dispatch (x = triangles)
+#define LFDPR_SSBO_LARGE 18        // per dispatch class segment: uvec2 (draw, primitive) sampled by a workgroup
+#define LFDPR_SSBO_LARGE_DISPATCH 19 // per dispatch class: uvec4 indirect dispatch (w = triangles queued)
 #define LFDPR_SSBO_VIS_COUNTERS 20 // LfdprVisCounters
 #define LFDPR_SSBO_SHADE_WORK 21   // LfdprShadeWork: per shading group, its tiles and dispatch
 #define LFDPR_SSBO_CHUNK_MASKS 22  // per shading group and tile chunk: the views splatted there
+#define LFDPR_SSBO_REPAIR 23       // LfdprRepairGpu: the 32-bit path's repair dispatches
+#define LFDPR_SSBO_WORKGROUPS 24   // LfdprWorkgroupGpu per point-generation workgroup
 #define LFDPR_UBO_CAMERA_LINE 2
 // The same buffers as buffer textures (texelFetch), for the passes that read them per
 // point or per pixel: on Mesa's llvmpipe a storage-buffer load at a per-invocation address
@@ -146,17 +148,15 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
 #define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI the winner's record (32-bit path)
 
-#define LFDPR_LOC_DRAW 7           // draw index (lfdpr_points.comp)
-#define LFDPR_LOC_TRIANGLES 8      // triangles in the draw
+#define LFDPR_LOC_FIRST_WORKGROUP 7 // lfdpr_points.comp: the dispatch's first LfdprWorkgroupGpu
+#define LFDPR_LOC_WORKGROUPS 8     // lfdpr_points.comp: LfdprWorkgroupGpu entries it covers
 #define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_shade.comp: the material whose textures are bound
-#define LFDPR_LOC_LARGE_BASE 10    // first LFDPR_SSBO_LARGE slot of the draw
+#define LFDPR_LOC_LARGE_BASE 10    // first LFDPR_SSBO_LARGE slot of the dispatch class
 #define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_shade.comp: the shading group dispatched
-#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_dispatch.comp, lfdpr_shade_list.comp: groups in use
-#define LFDPR_LOC_REPAIRS 13       // lfdpr_shade_list.comp (repair list): entries in the repair list
+#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_dispatch.comp, lfdpr_shade_list.comp,
+                                   // lfdpr_repair_dispatch.comp: groups in use
+#define LFDPR_LOC_LARGE_CLASS 13   // lfdpr_points.comp: the dispatch class (its LFDPR_SSBO_LARGE_DISPATCH entry)
 
-// Triangles whose sampling box exceeds this many pixels are sampled by one workgroup
-// (LFDPR_GROUP_SIZE threads striding over the box) instead of one invocation.
-#define LFDPR_LARGE_PIXELS 4096
 // Shading (lfdpr_shade_list.comp, lfdpr_shade.comp): view pixels are shaded in tiles of
 // LFDPR_SHADE_TILE x LFDPR_SHADE_TILE pixels, a tile position over a chunk of views at a
 // time. Materials fall into shading groups - group 0 every untextured material, then one
@@ -190,6 +190,17 @@ struct LfdprRecordGpu {
     vec2 spacing;    // along T_align's U and V (texture splatting, coarsening applied)
 };
 
+// One workgroup of compute point generation (std430): LFDPR_GROUP_SIZE consecutive
+// triangles of one draw, so every draw is sampled by one dispatch per dispatch class (all
+// draws without an alpha test in one; each alpha-tested draw, whose textures must be
+// bound, in its own) and no invocation searches for its draw.
+struct LfdprWorkgroupGpu {
+    uint draw;           // LfdprDrawGpu index
+    uint firstPrimitive; // its first triangle within the draw
+    uint primitives;     // triangles it samples (1..LFDPR_GROUP_SIZE)
+    uint pad0;
+};
+
 // One draw (std430).
 struct LfdprDrawGpu {
     uint node;
@@ -198,17 +209,31 @@ struct LfdprDrawGpu {
     uint group;         // its material's shading group (lfdprMaterialGroups)
 };
 
-// Counters of the visibility pipeline (std430; read back by name after point generation to
-// size the visibility dispatch and to redo the frame after an overflow).
+// Counters of the visibility pipeline (std430). The splat's indirect dispatch is made from
+// them on the GPU (lfdpr_dispatch.comp); the renderer reads them back frames later behind a
+// fence (gl::GpuReadback, by name), for the stats and to grow the point buffer after an
+// overflow - never waiting for them.
 struct LfdprVisCountersGpu {
-    uint pointCount;     // points generated (may exceed the capacity: generation is redone)
+    uint pointCount;     // points generated (may exceed the capacity: overflow)
     uint recordCount;    // emitting triangles
     uint oversizedCount; // larger than one sampling tile
     uint coarsenedCount; // larger than LFDPR_MAX_TILES tiles (sampled coarser)
     uint largeCount;     // sampled by a workgroup
-    uint pad0;
-    uint pad1;
-    uint pad2;
+    uint splatGroupsX;   // the splat's indirect dispatch (glDispatchComputeIndirect at
+    uint splatGroupsY;   // offsetof(LfdprVisCountersGpu, splatGroupsX)): workgroups of
+    uint splatGroupsZ;   // LFDPR_GROUP_SIZE points, x at most 65535
+};
+
+// The 32-bit path's repair, made on the GPU from the shading's first pass
+// (lfdpr_repair_dispatch.comp, std430): three indirect dispatches, each of zero workgroups
+// when it has nothing to do, so the frame never waits to learn whether to repair.
+struct LfdprRepairGpu {
+    uvec4 indexPass;  // xyz: lfdpr_visibility.comp LFDPR_INDEX_PASS over every point (0 without
+                      // repairs); w: view pixels to repair (the first pass's repairCount)
+    uvec4 listRepair; // xyz: lfdpr_shade_list.comp LFDPR_REPAIR_LIST over the repair list,
+                      // when the list holds every repair; w 0
+    uvec4 listAll;    // xyz: lfdpr_shade_list.comp over every marked chunk again, when more
+                      // pixels raced than the list holds; w 0
 };
 
 // Shading work (std430, LFDPR_SSBO_SHADE_WORK): counters, then per group an indirect

@@ -7,11 +7,15 @@
 // point set is the same (up to order). A point is 8 bytes: its triangle record and the
 // sampling cell (x | y << 16); the record holds the triangle and its final spacings.
 //
-// Default pass: one invocation per triangle of one draw. A triangle whose sampling box
-// exceeds LFDPR_LARGE_PIXELS is queued for the large pass instead, so no invocation
-// loops over a huge box while its neighbours idle.
-// LFDPR_LARGE_PASS: one workgroup per queued triangle of the draw; its threads stride over
-// the box, count, reserve one range of the point buffer, and write.
+// Default pass: one invocation per triangle. Workgroups are listed in LfdprWorkgroupGpu
+// entries (LFDPR_GROUP_SIZE triangles of one draw each), so one dispatch samples every draw
+// of a dispatch class: all draws without an alpha test, or one alpha-tested draw (its
+// textures bound). A triangle whose sampling box exceeds LFDPR_LARGE_CELLS cells
+// (lfdpr_work_shape.glsl) is queued for the large pass instead, so no invocation loops over
+// a large box while its neighbours idle.
+// LFDPR_LARGE_PASS: one workgroup per queued triangle of the class; one thread sets the
+// triangle up, its threads stride over the box, count, reserve one range of the point
+// buffer, and write.
 //
 // LFDPR_PIXEL_CENTRE_CULLING (beyond the paper, on by default): a triangle that holds no
 // view pixel centre in any view (lfdMayCoverPixelCentre) emits no points, since none of
@@ -26,6 +30,7 @@
 #include "scene_bindings.glsl"
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"
+#include "lfdpr_work_shape.glsl"
 #define LFD_PRECISE precise
 #include "lfdpr_math.glsl"
 #include "lfdpr_triangle_setup.glsl"
@@ -34,11 +39,10 @@
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
-layout(location = LFD_LOC_NODE) uniform uint u_node;
-layout(location = LFD_LOC_MATERIAL) uniform uint u_material;
 layout(location = LFD_LOC_STREAMS) uniform uint u_streams;
-layout(location = LFDPR_LOC_DRAW) uniform uint u_draw;
-layout(location = LFDPR_LOC_TRIANGLES) uniform uint u_triangles;
+layout(location = LFDPR_LOC_FIRST_WORKGROUP) uniform uint u_firstWorkgroup;
+layout(location = LFDPR_LOC_WORKGROUPS) uniform uint u_workgroups;
+layout(location = LFDPR_LOC_LARGE_CLASS) uniform uint u_largeClass;
 layout(location = LFDPR_LOC_LARGE_BASE) uniform uint u_largeBase;
 
 layout(binding = LFD_UNIT_BASE_COLOR) uniform sampler2D t_baseColor;
@@ -53,7 +57,10 @@ layout(std430, binding = LFDPR_SSBO_RECORDS) writeonly buffer Records {
     LfdprRecordGpu records[];
 };
 layout(std430, binding = LFDPR_SSBO_LARGE) buffer Large {
-    uint largeTriangles[];
+    uvec2 largeTriangles[]; // (draw, primitive)
+};
+layout(std430, binding = LFDPR_SSBO_WORKGROUPS) readonly buffer Workgroups {
+    LfdprWorkgroupGpu workgroups[];
 };
 layout(std430, binding = LFDPR_SSBO_LARGE_DISPATCH) buffer LargeDispatch {
     uvec4 largeDispatch[];
@@ -64,6 +71,7 @@ layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) coherent buffer VisCounters {
 
 // The triangle being sampled: setup plus what the alpha test needs.
 struct Sampled {
+    uint draw;
     LfdTriangleSetup s;
     float cutoff;
     float alphaLod;
@@ -71,9 +79,10 @@ struct Sampled {
     vec2 uv0, uv1, uv2;
 };
 
-bool setUp(uint primitive, out Sampled t)
+bool setUp(uint drawIndex, uint primitive, out Sampled t)
 {
-    LfdprDrawGpu draw = draws[u_draw];
+    t.draw = drawIndex;
+    LfdprDrawGpu draw = draws[drawIndex];
     uvec3 vertices = lfdTriangleVertices(draw, primitive);
     vec3 p0, p1, p2;
     lfdTrianglePositions(draw, vertices, p0, p1, p2);
@@ -82,10 +91,10 @@ bool setUp(uint primitive, out Sampled t)
         return false;
 #endif
     if (!lfdSetupTriangle(p0, p1, p2, lfdOutsideHullBits(p0), lfdOutsideHullBits(p1), lfdOutsideHullBits(p2),
-                          u_material, u_node, u_streams, draw.firstTriangle + primitive, t.s))
+                          draw.material, draw.node, u_streams, draw.firstTriangle + primitive, t.s))
         return false;
 #ifdef LFDPR_ALPHA_TEST
-    MaterialGpu m = materials[u_material];
+    MaterialGpu m = materials[draw.material];
     t.cutoff = m.emissiveCutoff.w;
     t.baseFactor = m.baseColorFactor;
     bool textured = (u_streams & LFD_STREAM_UV) != 0u && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE) != 0u;
@@ -122,7 +131,7 @@ bool emits(Sampled t, vec2 q)
 uint writeRecord(uint primitive, Sampled t)
 {
     uint record = atomicAdd(vis.recordCount, 1u);
-    records[record] = LfdprRecordGpu(u_draw, primitive, t.s.spacing);
+    records[record] = LfdprRecordGpu(t.draw, primitive, t.s.spacing);
     return record;
 }
 
@@ -138,25 +147,32 @@ void countShape(Sampled t)
 
 void main()
 {
-    uint primitive = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * uint(LFDPR_GROUP_SIZE) +
-                     gl_LocalInvocationIndex;
-    if (primitive >= u_triangles)
+    uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    if (workgroup >= u_workgroups)
         return;
+    LfdprWorkgroupGpu w = workgroups[u_firstWorkgroup + workgroup];
+    if (gl_LocalInvocationIndex >= w.primitives)
+        return;
+    uint primitive = w.firstPrimitive + gl_LocalInvocationIndex;
     Sampled t;
-    if (!setUp(primitive, t))
+    if (!setUp(w.draw, primitive, t))
         return;
     uint ex = uint(t.s.extent.x), ey = uint(t.s.extent.y);
-    if (ex * ey > uint(LFDPR_LARGE_PIXELS) || ex > 0xFFFFu || ey > 0xFFFFu) {
-        // Step 1 (large): queue for a workgroup.
-        uint slot = atomicAdd(largeDispatch[u_draw].x, 1u);
-        largeTriangles[u_largeBase + slot] = primitive;
+    if (ex * ey > uint(LFDPR_LARGE_CELLS) || ex > 0xFFFFu || ey > 0xFFFFu) {
+        // Step 1 (large): queue for a workgroup. The class's indirect dispatch keeps
+        // (x, y) covering the queue with x at most 65535 (monotone maxima, so the order in
+        // which triangles queue does not matter) and the count in w.
+        uint slot = atomicAdd(largeDispatch[u_largeClass].w, 1u);
+        atomicMax(largeDispatch[u_largeClass].x, min(slot + 1u, 65535u));
+        atomicMax(largeDispatch[u_largeClass].y, slot / 65535u + 1u);
+        largeTriangles[u_largeBase + slot] = uvec2(w.draw, primitive);
         atomicAdd(vis.largeCount, 1u);
         return;
     }
     countShape(t);
 
     // Step 2: count the cells, reserve them, write them (the capacity is never exceeded;
-    // the count still grows so the renderer sees an overflow and redoes the frame).
+    // the count still grows so the renderer sees the overflow).
     uint count = 0u;
     for (uint y = 0u; y < ey; ++y)
         for (uint x = 0u; x < ex; ++x)
@@ -178,25 +194,34 @@ void main()
 
 #else
 
+shared Sampled s_triangle;
+shared bool s_emitting;
 shared uint s_count;
 shared uint s_first;
 shared uint s_record;
 
 void main()
 {
-    uint primitive = largeTriangles[u_largeBase + gl_WorkGroupID.x];
-    Sampled t;
-    bool emitting = setUp(primitive, t); // same inputs as the default pass: true
-    uint ex = emitting ? uint(t.s.extent.x) : 0u, ey = emitting ? uint(t.s.extent.y) : 0u;
-    uint cells = ex * ey;
+    uint slot = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    if (slot >= largeDispatch[u_largeClass].w)
+        return; // past the queue (the (x, y) grid rounds up); the same for the whole workgroup
+    uvec2 queued = largeTriangles[u_largeBase + slot];
+
+    // Step 1: one thread sets the triangle up (same inputs as the default pass: it emits).
     if (gl_LocalInvocationIndex == 0u) {
         s_count = 0u;
-        if (emitting)
+        Sampled t;
+        s_emitting = setUp(queued.x, queued.y, t);
+        s_triangle = t;
+        if (s_emitting)
             countShape(t);
     }
     barrier();
+    Sampled t = s_triangle;
+    uint ex = s_emitting ? uint(t.s.extent.x) : 0u, ey = s_emitting ? uint(t.s.extent.y) : 0u;
+    uint cells = ex * ey;
 
-    // Step 1: each thread counts its cells (cells i, i + group, i + 2 group, ...).
+    // Step 2: each thread counts its cells (cells i, i + group, i + 2 group, ...).
     uint mine = 0u;
     for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))
         if (emits(t, vec2(c % ex, c / ex) + 0.5))
@@ -204,16 +229,16 @@ void main()
     uint offset = atomicAdd(s_count, mine);
     barrier();
 
-    // Step 2: one thread reserves the range and writes the record.
+    // Step 3: one thread reserves the range and writes the record.
     if (gl_LocalInvocationIndex == 0u && s_count > 0u) {
-        s_record = writeRecord(primitive, t);
+        s_record = writeRecord(queued.y, t);
         s_first = atomicAdd(vis.pointCount, s_count);
     }
     barrier();
     if (s_count == 0u)
         return;
 
-    // Step 3: write.
+    // Step 4: write.
     uint index = s_first + offset;
     uint capacity = u_lfd.counts.y;
     for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))

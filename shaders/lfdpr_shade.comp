@@ -9,7 +9,8 @@
 // which the paper's pipeline keeps.
 //
 // One dispatch per shading group (lfdpr_shade_list.comp): a workgroup per listed tile chunk
-// (one tile position over a run of views), each invocation finding the views of the
+// (one tile position over a run of views) and slice of its views (lfdpr_work_shape.glsl:
+// the whole chunk on llvmpipe, LFDPR_SHADE_VIEWS on a GPU), each invocation finding the views of the
 // chunk's mask in which its pixel is group u_group's and shading those (a textured group
 // also checks the material, since groups are shared past LFDPR_MAX_SHADE_GROUPS). The program is compiled per set of
 // textures (LFD_TEXTURE_MASK) and the scene's vertex streams (LFD_STREAMS, a mask of
@@ -25,6 +26,7 @@
 #include "scene_bindings.glsl"
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"
+#include "lfdpr_work_shape.glsl"
 #define LFD_PRECISE precise
 #include "lfdpr_math.glsl"
 #include "pbr_shading.glsl"
@@ -194,7 +196,8 @@ void main()
         return;
     uint base = (u_group * lfdShadeEntryCount(tiles, u_lfd.counts.x) + slot) * uint(LFDPR_SHADE_ENTRY_WORDS);
     uint chunkTile = groupTiles[base];
-    uvec2 mask = uvec2(groupTiles[base + 1u], groupTiles[base + 2u]);
+    // This workgroup's views of the chunk: slice gl_WorkGroupID.z (lfdpr_work_shape.glsl).
+    uvec2 mask = uvec2(groupTiles[base + 1u], groupTiles[base + 2u]) & lfdShadeSliceMask(gl_WorkGroupID.z);
     LfdShadeChunk c = lfdShadeChunk(chunkTile, tiles, u_lfd.counts.x);
     uvec2 xy = c.tile * LFDPR_SHADE_TILE + gl_LocalInvocationID.xy; // x, GL row
     if (!all(lessThan(xy, size)))

@@ -13,7 +13,8 @@
 // checks each pixel's winner.
 //   Pass 0: one invocation per (group, chunk). LFDPR_REPAIR_LIST: the 32-bit path's repair,
 //   one invocation per (repair-list entry, group): the listed chunks again, with the same
-//   masks (a chunk listed twice is shaded twice, to the same colours).
+//   masks (a chunk listed twice is shaded twice, to the same colours). The repair's
+//   dispatches are indirect (lfdpr_repair_dispatch.comp).
 #include "scene_bindings.glsl"
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"
@@ -23,7 +24,9 @@ layout(local_size_x = 64) in;
 
 layout(location = LFDPR_LOC_SHADE_GROUPS) uniform uint u_groups;
 #ifdef LFDPR_REPAIR_LIST
-layout(location = LFDPR_LOC_REPAIRS) uniform uint u_repairs;
+layout(std430, binding = LFDPR_SSBO_REPAIR) readonly buffer Repair {
+    LfdprRepairGpu repair; // indexPass.w: entries in the repair list (lfdpr_repair_dispatch.comp)
+};
 #endif
 
 layout(std430, binding = LFDPR_SSBO_CHUNK_MASKS) readonly buffer ChunkMasks {
@@ -37,7 +40,7 @@ void main()
     uint entries = lfdShadeEntryCount(tiles, u_lfd.counts.x);
     uint i = gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * 64u) + gl_GlobalInvocationID.x;
 #ifdef LFDPR_REPAIR_LIST
-    if (i >= u_repairs * u_groups)
+    if (i >= repair.indexPass.w * u_groups)
         return;
     uint group = i % u_groups;
     uint chunk = groupTiles[shadeCounters.repairBase + i / u_groups];

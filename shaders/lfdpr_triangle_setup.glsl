@@ -87,6 +87,7 @@ bool lfdSetupTriangle(vec3 p0, vec3 p1, vec3 p2, uint outside0, uint outside1, u
     uint options = u_lfd.counts.z;
     vec2 spacing = lfdSamplingSpacing(finestH, finestV, (options & LFDPR_OPTION_LFD_SAMPLING) != 0u);
     float sizeXy = spacing.x * spacing.y;
+    vec2 pixelSpacing = spacing;
 
     // Step 5: texture-based splatting (eq. lfd_texelSplatDensity). The baker's statistics
     // are in object space; the ratio of the triangle's scene and object areas scales them.
@@ -101,6 +102,15 @@ bool lfdSetupTriangle(vec3 p0, vec3 p1, vec3 p2, uint outside0, uint outside1, u
     // Beyond the paper (LfdprOptions::cellScale; compute point generation of the
     // visibility pipeline only): cells of several sampling spacings, fewer points.
     spacing *= float(LFDPR_CELL_SCALE);
+#endif
+#if defined(LFDPR_MAX_SPLAT_PIXELS) && !defined(LFDPR_ALPHA_TEST)
+    // Beyond the paper (visibility pipeline, GPU work shape: lfdpr_work_shape.glsl): a
+    // cell spans at most LFDPR_MAX_SPLAT_PIXELS of the finest view pixel per axis, so a
+    // coarse texture's large splat becomes several small points and no splat invocation
+    // loops over many pixels. The views do not change (the splat writes only pixel centres
+    // inside the point's own triangle, shaded at the pixel). Alpha-masked cells keep their
+    // size: their mask is sampled per cell.
+    spacing = min(spacing, pixelSpacing * LFDPR_MAX_SPLAT_PIXELS);
 #endif
 
     // Step 6: T_align and S_ortho: sampling coordinates of the vertices (p0 at the origin);

@@ -37,6 +37,7 @@
 #include "scene_bindings.glsl"
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"
+#include "lfdpr_work_shape.glsl"
 #define LFD_PRECISE precise
 #include "lfdpr_math.glsl"
 #include "lfdpr_scene_access.glsl"
@@ -70,10 +71,20 @@ void lfdMarkChunk(uint group, uint chunk, int tileLo, int tileHi, uvec2 tileRows
     for (uint ty = tileRows.x; ty <= tileRows.y; ++ty) {
         for (int tx = tileLo; tx <= tileHi; ++tx) {
             uint word = lfdChunkMaskWord(group, lfdShadeChunkIndex(chunk, uvec2(tx, ty), tiles), entries);
+#ifdef LFDPR_WORK_GPU
+            // Many points mark the same few words: an atomic only where a bit is missing
+            // (a stale read costs one redundant atomicOr, never a lost bit).
+            uvec2 have = uvec2(chunkMasks[word], chunkMasks[word + 1u]);
+            if ((have.x & views.x) != views.x)
+                atomicOr(chunkMasks[word], views.x);
+            if ((have.y & views.y) != views.y)
+                atomicOr(chunkMasks[word + 1u], views.y);
+#else
             if (views.x != 0u)
                 atomicOr(chunkMasks[word], views.x);
             if (views.y != 0u)
                 atomicOr(chunkMasks[word + 1u], views.y);
+#endif
         }
     }
 }
@@ -93,8 +104,13 @@ layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
 
 void main()
 {
-    uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * uint(LFDPR_GROUP_SIZE) +
-                 gl_LocalInvocationIndex;
+    // Workgroup w splats LFDPR_GROUP_SIZE consecutive points into one slice of
+    // LFDPR_SPLAT_VIEWS views (lfdpr_work_shape.glsl; lfdpr_dispatch.comp sized the grid).
+    uint viewCount = u_lfd.counts.x;
+    uint slices = lfdSplatSlices(viewCount);
+    uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    uint slice = workgroup % slices;
+    uint index = (workgroup / slices) * uint(LFDPR_GROUP_SIZE) + gl_LocalInvocationIndex;
     if (index >= min(vis.pointCount, u_lfd.counts.y))
         return;
 
@@ -138,18 +154,21 @@ void main()
     uint nearKey = lfdDepthKey(1.0 / u_line.wRange.x), farKey = lfdDepthKey(1.0 / u_line.wRange.y);
     vec3 invW = vec3(v0.invW, v1.invW, v2.invW);
 
-    uint viewCount = u_lfd.counts.x;
 #ifndef LFDPR_INDEX_PASS
     uint group = draw.group;
     uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
     uint entries = lfdShadeEntryCount(tiles, viewCount);
     uvec2 tileRows = uvec2(rowLo, rowHi) / uint(LFDPR_SHADE_TILE);
 #endif
-    for (uint firstView = 0u; firstView < viewCount; firstView += uint(LFDPR_VIEW_CHUNK)) {
-        uint endView = min(firstView + uint(LFDPR_VIEW_CHUNK), viewCount);
+    // This invocation's views: one slice, inside one view chunk (LFDPR_SPLAT_VIEWS divides
+    // LFDPR_VIEW_CHUNK), whose marks it gathers.
+    uint sliceFirst = slice * uint(LFDPR_SPLAT_VIEWS);
+    uint firstView = sliceFirst - sliceFirst % uint(LFDPR_VIEW_CHUNK); // the chunk's first view
+    {
+        uint endView = min(sliceFirst + uint(LFDPR_SPLAT_VIEWS), viewCount);
         int markLo = viewPixels.x, markHi = -1; // tile columns written in this view chunk
         uvec2 markViews = uvec2(0u);
-        for (uint view = firstView; view < endView; ++view) {
+        for (uint view = sliceFirst; view < endView; ++view) {
             // Step 4: this view's window positions of the cell; the columns it covers.
             float e = lfdViewOffset(view);
             vec2 a = lfdWindowInView(ca, e), b = lfdWindowInView(cb, e);

@@ -46,7 +46,8 @@ const char* kFooter =
 
 // Flag values parsed after CLI11 (sizes, pairs, names).
 struct RawFlags {
-    std::string pack, viewSize, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility";
+    std::string pack, viewSize, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility",
+        lfdprWork = "auto";
     uint32_t views = 0, frame = 0;
     bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false, noTurntable = false;
     bool noPixelCulling = false;
@@ -82,6 +83,10 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
         ->check(CLI::Range(1u, 8u))
         ->capture_default_str();
     app.add_option("--atomics", f.atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
+    app.add_option("--lfdpr-work", f.lfdprWork,
+                   "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
+                   "short invocations) | cpu (long invocations); the views are the same")
+        ->capture_default_str();
     app.add_option("--lfdpr-pipeline", f.pipeline,
                    "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
         ->capture_default_str();
@@ -201,6 +206,7 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
     try {
         lfdpr.atomics = lfd::player::parseLfdprAtomics(f.atomics);
         lfdpr.pipeline = lfd::player::parseLfdprPipeline(f.pipeline);
+        lfdpr.workShape = lfd::player::parseLfdprWorkShape(f.lfdprWork);
     } catch (const std::exception& e) {
         throw UsageError(e.what());
     }
@@ -488,10 +494,12 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
                 firstFrameMs = msSince(input.start);
             }
             if (k == outputFrame && wantOutputs) {
+                session.completeLastFrame();
                 outputs = session.readOutputs(k);
                 outputProfile = session.profile();
             }
             if (sequence.active) {
+                session.completeLastFrame();
                 sequence.profile = session.profile();
                 sequence.frames.push_back(writeQuiltFrame(sequence.base, sequence.profile, session.readOutputs(k), k));
                 if (sequence.tempFolder.empty())
@@ -499,10 +507,12 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
             }
         }
         timer.finish();
+        session.completeLastFrame(); // the renderer's stats of the last frame
         const auto stages = timer.stages(); // timing frames only
         if (outputFrame >= options.frames && wantOutputs) {
             // Frame K after the timed frames: rendered once more, not counted in the stats.
             session.renderFrame(double(outputFrame) / options.fps, quality);
+            session.completeLastFrame();
             outputs = session.readOutputs(outputFrame);
             outputProfile = session.profile();
             timer.finish();

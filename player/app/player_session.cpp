@@ -126,6 +126,13 @@ void PlayerSession::renderFrame(double time, FrameQuality quality)
     else
         pipeline_->renderFrame(*renderer_, time, timer_, reconstruction_);
     lastQuality_ = quality;
+    lastTime_ = time;
+}
+
+void PlayerSession::completeLastFrame()
+{
+    if (!quilts_)
+        pipeline_->completeFrame(*renderer_, lastTime_, reconstruction_, lastQuality_ == FrameQuality::Preview);
 }
 
 void PlayerSession::renderUntimedFrame(double time)
@@ -138,6 +145,7 @@ void PlayerSession::renderUntimedFrame(double time)
     pipeline_->renderFrame(*renderer_, time, scratch, reconstruction_);
     scratch.finish();
     lastQuality_ = FrameQuality::Full;
+    lastTime_ = time;
 }
 
 FrameOutputs PlayerSession::readOutputs(uint32_t frameIndex) const

@@ -127,6 +127,11 @@ public:
     // A full-quality frame on a scratch timer, not counted in timer()'s statistics (the
     // headless first frame while a streamed scene is not yet resident).
     void renderUntimedFrame(double time);
+    // Makes the last frame whole before its outputs are read: waits for the renderer's
+    // account of the frames so far and renders the last one again, untimed, if it
+    // overflowed a buffer (FramePipeline::completeFrame). Also brings the renderer's stats
+    // to the last frame. Blocking; a no-op for quilt input.
+    void completeLastFrame();
     FrameOutputs readOutputs(uint32_t frameIndex) const;
 
 private:
@@ -145,6 +150,7 @@ private:
     std::unique_ptr<Renderer> renderer_;
     Reconstruction reconstruction_ = Reconstruction::None;
     FrameQuality lastQuality_ = FrameQuality::Full;
+    double lastTime_ = 0.0;
     GpuTimer timer_, previewTimer_;
 };
 

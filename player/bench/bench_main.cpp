@@ -67,7 +67,7 @@ struct BenchFlags {
     std::vector<std::string> packs;
     std::string renderers = "mvr,mvr-layered,lfdpr", viewSize, displayProfile, views, aaList = "none", ssList = "1";
     bool variants = false;
-    std::string gstdCache;
+    std::string gstdCache, lfdprWork = "auto";
     bool noGstdCache = false;
     std::string outDir;
     bool glDebug = false;
@@ -97,6 +97,10 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
                  "also time the paper's pipeline (lfdpr-paper) and lfdpr with each innovation "
                  "disabled (lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting, lfdpr-no-pixel-culling, "
                  "lfdpr-no-cell-scaling, lfdpr-no-mv-mipmapping)");
+    app.add_option("--lfdpr-work", flags.lfdprWork,
+                   "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
+                   "short invocations) | cpu (long invocations); the views are the same")
+        ->capture_default_str();
     app.add_option("--display", flags.displayProfile, "display profile JSON (default: the paper's prototype)");
     flags.viewsOpt = app.add_option("--views", flags.views, "number of views (overrides the profile); a "
                                                             "comma-separated list runs the matrix once per view count");
@@ -152,6 +156,11 @@ void validateRendererFlags(const BenchFlags& flags, lfd::player::BenchOptions& o
     }
     options.gstdCache = flags.gstdCache;
     options.gstdCacheEnabled = !flags.noGstdCache;
+    try {
+        options.rendererOptions.lfdpr.workShape = parseLfdprWorkShape(flags.lfdprWork);
+    } catch (const std::exception& e) {
+        throw UsageError(e.what());
+    }
 }
 
 // --frames, --fps, --turntable-period: in range.

@@ -125,14 +125,14 @@ std::string benchTable(const BenchReport& report)
       << " against " << o.reference << "; GPU times are means over the timed frames\n\n";
 
     char line[512];
-    const char* rowFormat = "%-28s %22s %12s %11s %9s %11s %8s %15s %9s %9s %9s %10s %10s %10s %11s %11s\n";
+    const char* rowFormat = "%-28s %22s %12s %11s %9s %11s %9s %8s %15s %9s %9s %9s %10s %10s %10s %11s %11s\n";
     std::snprintf(line, sizeof(line), rowFormat, "renderer", "point_gen ms (points)", "view_gen ms",
-                  "resolve ms", "eia ms", "total ms", "vs mvr", "vs mvr-layered", "EIA RMSE", "EIA SSIM", "EIA FLIP",
+                  "resolve ms", "eia ms", "total ms", "wall ms", "vs mvr", "vs mvr-layered", "EIA RMSE", "EIA SSIM", "EIA FLIP",
                   "view RMSE", "view SSIM", "view FLIP", "views RMSE", "views SSIM");
     s << line;
     std::vector<std::string> otherStages;
     for (const RendererResult& r : report.results) {
-        std::string pointGen = "-", viewGen = "-", resolve = "-", eia = "-", total = "-";
+        std::string pointGen = "-", viewGen = "-", resolve = "-", eia = "-", total = "-", wall = "-";
         if (r.timed) {
             if (r.stages.count(stageKey(stage::kPointGeneration))) {
                 pointGen = format("%.2f", r.stageMean(stageKey(stage::kPointGeneration)));
@@ -144,6 +144,7 @@ std::string benchTable(const BenchReport& report)
             viewGen = format("%.2f", r.stageMean(stageKey(stage::kViewGeneration)));
             eia = format("%.2f", r.stageMean(stageKey(stage::kEia)));
             total = format("%.2f", r.stageMean(stageKey(stage::kTotal)));
+            wall = format("%.2f", r.wallMsPerFrame);
             for (const auto& [name, times] : r.stages)
                 if (name == stage::kDownsample ||
                     std::find(stage::kAll.begin(), stage::kAll.end(), name) == stage::kAll.end())
@@ -151,7 +152,7 @@ std::string benchTable(const BenchReport& report)
         }
         const std::string name = r.timed ? r.name : r.name + " (ref, untimed)";
         std::snprintf(line, sizeof(line), rowFormat, name.c_str(), pointGen.c_str(), viewGen.c_str(),
-                      resolve.c_str(), eia.c_str(), total.c_str(), ratioText(report.speedUp(r.name, "mvr")).c_str(),
+                      resolve.c_str(), eia.c_str(), total.c_str(), wall.c_str(), ratioText(report.speedUp(r.name, "mvr")).c_str(),
                       ratioText(report.speedUp(r.name, "mvr-layered")).c_str(),
                       format("%.2f", r.eia.rmse).c_str(), format("%.4f", r.eia.ssim).c_str(),
                       format("%.4f", r.eia.flip).c_str(), format("%.2f", r.centreView.rmse).c_str(),
@@ -159,9 +160,18 @@ std::string benchTable(const BenchReport& report)
                       format("%.2f", r.allViews.rmse).c_str(), format("%.4f", r.allViews.ssim).c_str());
         s << line;
     }
-    s << "(vs X = X's total / this total, > 1: faster than X; view = centre view, views = mean over all "
-         "views; RMSE 0..255, SSIM (luma) and FLIP (0..1, lower is better) against "
+    s << "(vs X = X's total / this total, > 1: faster than X; wall = wall-clock ms per frame over the timed "
+         "frames run back to back; view = centre view, views = mean over all views; RMSE 0..255, SSIM (luma) and "
+         "FLIP (0..1, lower is better) against "
       << o.reference << ")\n";
+    s << "per frame:";
+    for (const RendererResult& r : report.results)
+        if (r.timed)
+            s << " " << r.name << " " << format("%.1f", r.callsPerFrame.dispatches) << " dispatches, "
+              << format("%.1f", r.callsPerFrame.draws) << " draws, " << format("%.1f", r.callsPerFrame.barriers)
+              << " barriers, " << format("%.1f", r.callsPerFrame.syncs) << " waits, "
+              << format("%.1f", double(r.frameGpuBytes) / (1024.0 * 1024.0)) << " MiB;";
+    s << "\n";
     if (!otherStages.empty()) {
         s << "stages inside total not shown above:";
         for (const std::string& t : otherStages)
@@ -221,6 +231,12 @@ nlohmann::json benchJson(const BenchReport& report)
         for (const auto& [key, value] : r.extra)
             extra[key] = number(value);
         e["extra"] = extra;
+        e["wall_ms_per_frame"] = r.timed ? nlohmann::json(r.wallMsPerFrame) : nlohmann::json(nullptr);
+        e["gl_calls_per_frame"] = {{"dispatches", r.callsPerFrame.dispatches},
+                                   {"draws", r.callsPerFrame.draws},
+                                   {"barriers", r.callsPerFrame.barriers},
+                                   {"waits", r.callsPerFrame.syncs}};
+        e["frame_gpu_bytes"] = r.frameGpuBytes;
         e["speedup_vs_mvr"] = optionalNumber(report.speedUp(r.name, "mvr"));
         e["speedup_vs_mvr_layered"] = optionalNumber(report.speedUp(r.name, "mvr-layered"));
         e["quality"] = {{"reference", o.reference},
@@ -240,7 +256,9 @@ std::string benchCsv(const BenchReport& report)
     std::ostringstream s;
     s << "renderer,timed,frames,point_generation_ms,view_generation_ms,eia_ms,total_ms,total_median_ms,"
          "total_min_ms,total_max_ms,points,speedup_vs_mvr,speedup_vs_mvr_layered,eia_rmse,eia_psnr,eia_ssim,"
-         "view_rmse,view_psnr,view_ssim,views_rmse,views_psnr,views_ssim,eia_flip,view_flip,resolve_ms\n";
+         "view_rmse,view_psnr,view_ssim,views_rmse,views_psnr,views_ssim,eia_flip,view_flip,resolve_ms,"
+         "wall_ms_per_frame,dispatches_per_frame,draws_per_frame,barriers_per_frame,waits_per_frame,"
+         "frame_gpu_bytes\n";
     auto opt = [](const std::optional<double>& v) { return v ? csvNumber(*v) : std::string(); };
     for (const RendererResult& r : report.results) {
         s << r.name << ',' << (r.timed ? 1 : 0) << ',' << (r.timed ? report.options.frames : 0u);
@@ -258,8 +276,14 @@ std::string benchCsv(const BenchReport& report)
             s << ',' << csvNumber(q->rmse) << ',' << csvNumber(q->psnr) << ',' << csvNumber(q->ssim);
         // Columns added later go last, so earlier ones keep their positions for existing readers.
         s << ',' << csvNumber(r.eia.flip) << ',' << csvNumber(r.centreView.flip) << ','
-          << (r.stages.count(stageKey(stage::kResolve)) ? csvNumber(r.stageMean(stageKey(stage::kResolve))) : std::string())
-          << '\n';
+          << (r.stages.count(stageKey(stage::kResolve)) ? csvNumber(r.stageMean(stageKey(stage::kResolve))) : std::string());
+        if (r.timed)
+            s << ',' << csvNumber(r.wallMsPerFrame) << ',' << csvNumber(r.callsPerFrame.dispatches) << ','
+              << csvNumber(r.callsPerFrame.draws) << ',' << csvNumber(r.callsPerFrame.barriers) << ','
+              << csvNumber(r.callsPerFrame.syncs) << ',' << r.frameGpuBytes;
+        else
+            s << ",,,,,,";
+        s << '\n';
     }
     return s.str();
 }

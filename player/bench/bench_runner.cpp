@@ -1,5 +1,6 @@
 #include "bench_runner.h"
 
+#include "gl_call_counter.h"
 #include "gl_debug_output.h"
 
 #include "frame_pipeline.h"
@@ -230,6 +231,7 @@ bool timeFrames(BenchRun& run, Renderer& renderer, Reconstruction aa, RendererRe
     if (stopRequested(options))
         return false;
     result.stages = timer.stages();
+    renderer.settle(); // the stats of the last timed frame
     result.extra = renderer.extraStats();
     char line[128];
     std::snprintf(line, sizeof(line), "mean total %.2f ms", result.stageMean(std::string(stage::kTotal)));
@@ -285,11 +287,41 @@ bool timeRoundRobin(BenchRun& run)
             t.timer->finish();
             BenchRun::Timed& timed = run.roundRobin[t.config.name()];
             timed.stages = t.timer->stages();
+            t.renderer->settle(); // the stats of its last timed frame
             timed.extra = t.renderer->extraStats();
             timed.renderer = std::move(t.renderer);
         }
     }
     return true;
+}
+
+// Step 3b (timed configurations): the wall-clock time per frame - the timed frames again,
+// back to back, submitted as fast as the CPU can and finished once at the end (glFinish
+// before and after, outside the measurement's calls), so a frame that waits for the GPU,
+// or a CPU that cannot keep the GPU busy, shows as wall time above the GPU total - with
+// the GL calls those frames make (gl::GlCallCounter) and the GPU memory of a frame.
+void measureWallClock(BenchRun& run, Renderer& renderer, Reconstruction aa, RendererResult& result)
+{
+    using Clock = std::chrono::steady_clock;
+    const BenchOptions& options = run.options;
+    GpuTimer timer; // the frames as they always run, timer queries included
+    glFinish();
+    gl::GlCallCounts calls;
+    const Clock::time_point start = Clock::now();
+    {
+        gl::GlCallCounter counter;
+        for (uint32_t k = 0; k < options.frames && !stopRequested(options); ++k)
+            run.pipeline.renderFrame(renderer, double(k) / options.fps, timer, aa);
+        calls = counter.counts();
+    }
+    glFinish();
+    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    timer.finish();
+    const double frames = double(options.frames);
+    result.wallMsPerFrame = ms / frames;
+    result.callsPerFrame = {double(calls.dispatches) / frames, double(calls.draws) / frames,
+                            double(calls.barriers) / frames, double(calls.syncs) / frames};
+    result.frameGpuBytes = run.pipeline.frameGpuBytes(renderer);
 }
 
 // Step 4: the quality frame, untimed (gstd's views from the cache when it has them; the
@@ -311,7 +343,7 @@ void renderQualityFrame(BenchRun& run, Renderer& renderer, Reconstruction aa, Re
     }
     if (!result.fromCache) {
         const Clock::time_point qualityStart = Clock::now();
-        run.pipeline.renderFrame(renderer, run.qualityTime, qualityTimer, aa);
+        run.pipeline.renderCompleteFrame(renderer, run.qualityTime, qualityTimer, aa);
         if (cacheable) {
             try {
                 run.gstdCache->store(run.gstdKey, run.pipeline.targets());
@@ -412,6 +444,18 @@ bool runConfig(BenchRun& run, size_t i)
             return false;
     } else {
         say("reference only (not in --renderers): quality frame");
+    }
+    if (result.timed) {
+        measureWallClock(run, *renderer, aa, result);
+        if (stopRequested(options))
+            return false;
+        char line[160];
+        std::snprintf(line, sizeof(line), "wall clock %.2f ms per frame (GPU total %.2f ms), %.1f dispatches, "
+                      "%.1f draws, %.1f barriers, %.1f waits per frame",
+                      result.wallMsPerFrame, result.stageMean(std::string(stage::kTotal)),
+                      result.callsPerFrame.dispatches, result.callsPerFrame.draws, result.callsPerFrame.barriers,
+                      result.callsPerFrame.syncs);
+        say(line);
     }
     renderQualityFrame(run, *renderer, aa, result, say);
     if (!result.timed)

@@ -84,6 +84,18 @@ struct RendererResult {
     // Through the lens: the simulated viewer's image at the centre view position
     // (simulated_viewer.h) of this EIA against that of the reference's EIA.
     Quality lens;
+    // Wall-clock time per frame (README "Honest frame rates"): the timed frame count again,
+    // back to back as fast as the CPU submits them, finished once at the end; above the
+    // GPU total where a frame waits for the GPU or the CPU cannot keep it busy. 0 untimed.
+    double wallMsPerFrame = 0.0;
+    // The GL calls of those frames, per frame (gl::GlCallCounter): compute dispatches,
+    // draws, memory barriers and calls that wait for the GPU (0 in a steady state).
+    struct Calls {
+        double dispatches = 0.0, draws = 0.0, barriers = 0.0, syncs = 0.0;
+    } callsPerFrame;
+    // GPU memory of a frame (FramePipeline::frameGpuBytes): view targets, EIA and the
+    // renderer's per-frame buffers; the scene is BenchReport::sceneGpuBytes.
+    uint64_t frameGpuBytes = 0;
     double seconds = 0.0; // wall time of this renderer's run (timing + quality frame)
     bool fromCache = false; // the quality frame's views came from the gstd cache
 

@@ -136,6 +136,9 @@ EiaBuilder::EiaBuilder(const DisplayProfile& profile, uint64_t seed) : profile_(
                        GLsizei(profile_.panelHeight));
     glTextureParameteri(eia_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(eia_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    nearest_ = gl::createSampler();
+    glSamplerParameteri(nearest_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(nearest_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     if (glGetError() != GL_NO_ERROR) {
         throw gl::GlError("EIA: cannot allocate a " + std::to_string(profile_.panelWidth) + "x" +
                           std::to_string(profile_.panelHeight) +
@@ -184,11 +187,8 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
     GLint textureUnit = 0, imageUnit = 0;
     glGetUniformiv(prog, uniformLocation(prog, "views"), &textureUnit);
     glGetUniformiv(prog, uniformLocation(prog, "eia"), &imageUnit);
-    const gl::Sampler sampler = gl::createSampler();
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glBindTextureUnit(GLuint(textureUnit), views.colorArray());
-    glBindSampler(GLuint(textureUnit), sampler);
+    glBindSampler(GLuint(textureUnit), nearest_);
     glBindImageTexture(GLuint(imageUnit), eia_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
 
     // Step 3: one invocation per panel pixel.
@@ -206,6 +206,8 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
     glBindImageTexture(GLuint(imageUnit), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glUseProgram(0);
 }
+
+uint64_t EiaBuilder::bytes() const { return uint64_t(profile_.panelWidth) * profile_.panelHeight * 4; }
 
 std::vector<uint8_t> EiaBuilder::read() const {
     const size_t rowBytes = size_t(profile_.panelWidth) * 4;

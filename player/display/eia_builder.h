@@ -55,11 +55,13 @@ public:
     void build(const ViewTargets& views, Reconstruction mode, GpuTimer& timer); // stage "eia"
     unsigned texture() const { return eia_.get(); }
     std::vector<uint8_t> read() const; // RGBA8, panel size, rows top to bottom
+    uint64_t bytes() const;            // GPU memory of the EIA texture
 
 private:
     DisplayProfile profile_;
     uint64_t seed_;
     gl::Texture eia_;
+    gl::Sampler nearest_; // keeps the view array complete whatever its own filter state
     // One program per Reconstruction mode (EIA_MODE compiled in), built on first use.
     gl::Program programs_[4];
     unsigned program(Reconstruction mode);

@@ -1,17 +1,15 @@
-// PNG output/input through OpenImageIO and the image metrics (RMSE, PSNR, SSIM).
+// PNG output/input through the player's image codec (image_file.h) and the image
+// metrics (RMSE, PSNR, SSIM).
 #include "image_output.h"
 
-#include <OpenImageIO/imageio.h>
+#include "image_file.h"
+#include "image_metrics.h"
 
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
-#include <system_error>
-
-#include <unistd.h>
 
 namespace lfd::player {
 
@@ -29,15 +27,6 @@ std::string oneLine(std::string text) {
 
 [[noreturn]] void fail(const fs::path& path, const std::string& problem) {
     throw ImageError(oneLine("'" + path.string() + "': " + problem));
-}
-
-// Temporary name in the target's directory (rename is only atomic within one file
-// system) that keeps the extension, since OpenImageIO picks the format from it.
-fs::path temporaryPathFor(const fs::path& path) {
-    static std::atomic<unsigned> counter{0};
-    const std::string name = "." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                             "-" + std::to_string(counter++) + path.extension().string();
-    return path.parent_path() / name;
 }
 
 void checkSameSize(const Image& a, const Image& b, const char* metric) {
@@ -78,41 +67,10 @@ void writeImage(const fs::path& path, const uint8_t* pixels, uint32_t width, uin
         fail(path, "cannot write " + std::to_string(channels) + " channels (1..4 supported)");
     if (pixels == nullptr)
         fail(path, "no pixel data");
-
-    const fs::path temporary = temporaryPathFor(path);
-    auto removeTemporary = [&] {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-    };
-
-    // Step 1: write everything to the temporary file.
-    auto out = OIIO::ImageOutput::create(temporary.string());
-    if (!out)
-        fail(path, "cannot write this image format (" + OIIO::geterror() + ")");
-    OIIO::ImageSpec spec(int(width), int(height), int(channels), OIIO::TypeDesc::UINT8);
-    // Our alpha is straight (unassociated), as PNG stores it: no premultiplication round trip.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out->open(temporary.string(), spec)) {
-        const std::string error = out->geterror();
-        removeTemporary();
-        fail(path, "cannot open for writing: " + error);
-    }
-    const bool written = out->write_image(OIIO::TypeDesc::UINT8, pixels);
-    const std::string writeError = written ? std::string() : out->geterror();
-    const bool closed = out->close();
-    const std::string closeError = closed ? std::string() : out->geterror();
-    out.reset();
-    if (!written || !closed) {
-        removeTemporary();
-        fail(path, "write failed: " + (written ? closeError : writeError));
-    }
-
-    // Step 2: move it into place in one step.
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        removeTemporary();
-        fail(path, "cannot move the written image into place: " + ec.message());
+    try {
+        metrics::encodeImageFile(path, pixels, int(width), int(height), int(channels));
+    } catch (const metrics::MetricsIoError& e) {
+        throw ImageError(e.what());
     }
 }
 
@@ -126,24 +84,18 @@ void writeImage(const fs::path& path, const Image& image) {
 Image readImage(const fs::path& path, uint32_t channels) {
     if (channels > 4 || channels == 1 || channels == 2)
         fail(path, "can only convert to 3 or 4 channels (0 keeps the file's)");
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1); // keep PNG's straight alpha as stored
-    auto in = OIIO::ImageInput::open(path.string(), &config);
-    if (!in)
-        fail(path, "cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        fail(path, "image has no pixels");
-    const uint32_t fileChannels = uint32_t(std::min(spec.nchannels, 4));
-
+    metrics::DecodedImage decoded;
+    try {
+        decoded = metrics::decodeImageFile(path); // 8 bits per channel, straight alpha
+    } catch (const metrics::MetricsIoError& e) {
+        throw ImageError(e.what());
+    }
+    const uint32_t fileChannels = uint32_t(std::min(decoded.channels, 4));
     Image file;
-    file.width = uint32_t(spec.width);
-    file.height = uint32_t(spec.height);
+    file.width = uint32_t(decoded.width);
+    file.height = uint32_t(decoded.height);
     file.channels = fileChannels;
-    file.pixels.resize(size_t(file.width) * file.height * file.channels);
-    if (!in->read_image(0, 0, 0, int(fileChannels), OIIO::TypeDesc::UINT8, file.pixels.data()))
-        fail(path, "cannot read pixels: " + in->geterror());
-    in->close();
+    file.pixels = std::move(decoded.u8);
     if (channels == 0 || channels == fileChannels)
         return file;
 

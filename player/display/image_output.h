@@ -1,4 +1,4 @@
-// 8-bit images on disk (PNG through OpenImageIO) and the image metrics the tests and the
+// 8-bit images on disk (PNG through image_file.h) and the image metrics the tests and the
 // quality reports use. Pixels are always in image order (row 0 = top), channels
 // interleaved. Writes are atomic: a temporary file in the target directory is renamed
 // over the target, so a crash or a failed write never leaves a truncated image behind.

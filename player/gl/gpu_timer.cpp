@@ -86,9 +86,13 @@ void GpuTimer::collect(bool wait)
             if (!available)
                 break;
         }
+        // Results of a finished pair are read without a wait (GL_QUERY_RESULT_NO_WAIT: the
+        // end query is available, and queries finish in order), so polling during frames
+        // never stalls them; finish() waits.
+        const GLenum result = wait ? GL_QUERY_RESULT : GL_QUERY_RESULT_NO_WAIT;
         GLuint64 t0 = 0, t1 = 0;
-        glGetQueryObjectui64v(p->begin, GL_QUERY_RESULT, &t0);
-        glGetQueryObjectui64v(p->end, GL_QUERY_RESULT, &t1);
+        glGetQueryObjectui64v(p->begin, result, &t0);
+        glGetQueryObjectui64v(p->end, result, &t1);
         stages_[p->stage].ms.push_back(t1 > t0 ? double(t1 - t0) * 1e-6 : 0.0);
         freeQueries_.push_back(std::move(p->begin));
         freeQueries_.push_back(std::move(p->end));

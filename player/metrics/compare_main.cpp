@@ -60,7 +60,7 @@ int main(int argc, char** argv)
 
     CLI::App app{"lfd-compare: compare a test image with a reference image of the same size "
                  "(RMSE 0..255, PSNR dB, SSIM on luma, LDR FLIP)"};
-    app.add_option("REFERENCE", referencePath, "reference image (PNG or any format OpenImageIO reads)")
+    app.add_option("REFERENCE", referencePath, "reference image (PNG, JPEG, BMP, TGA, HDR, ...: image_file.h)")
         ->required();
     app.add_option("TEST", testPath, "test image, same width and height as the reference")->required();
     app.add_flag("--json", json, "print one JSON object {rmse, psnr, ssim, flip}; psnr is null for identical images");

@@ -1,120 +1,38 @@
-// Reading images into RgbImage and writing RGB8 images atomically, through OpenImageIO.
+// Reading images into RgbImage and writing RGB8 images atomically, through the player's
+// one image codec (image_file.h: stb_image, stb_image_write).
+#include "image_file.h"
 #include "image_metrics.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
-#include <atomic>
 #include <string>
-#include <system_error>
-
-#include <unistd.h>
 
 namespace lfd::metrics {
 
-namespace {
-
-namespace fs = std::filesystem;
-
-std::string oneLine(std::string text)
+RgbImage readRgbImage(const std::filesystem::path& path)
 {
-    std::replace_if(text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-    while (!text.empty() && text.back() == ' ')
-        text.pop_back();
-    return text;
+    // 8-bit files are read as bytes so their values convert exactly; 16-bit and HDR files
+    // keep their depth (scaled so 1.0 = 255).
+    const DecodedImage image = decodeImageFile(path, true);
+    const int channels = std::min(image.channels, 4);
+    if (image.bitsPerChannel == 8)
+        return rgbFromPixels8(image.u8.data(), image.width, image.height, channels);
+    std::vector<float> pixels;
+    if (image.bitsPerChannel == 16) {
+        pixels.reserve(image.u16.size());
+        for (const uint16_t v : image.u16)
+            pixels.push_back(float(v) / 65535.0f);
+    } else {
+        pixels = image.f32;
+    }
+    return rgbFromPixelsFloat(pixels.data(), image.width, image.height, channels);
 }
 
-[[noreturn]] void fail(const fs::path& path, const std::string& problem)
+void writeRgb8Image(const std::filesystem::path& path, std::span<const uint8_t> rgb, int width, int height)
 {
-    throw MetricsIoError(oneLine("'" + path.string() + "': " + problem));
-}
-
-// A temporary name beside the target (rename is atomic only within one file system) that
-// keeps the extension, since OpenImageIO picks the format from it.
-fs::path temporaryPathFor(const fs::path& path)
-{
-    static std::atomic<unsigned> counter{0};
-    return path.parent_path() / ("." + path.stem().string() + ".tmp-" +
-                                 std::to_string(::getpid()) + "-" + std::to_string(counter++) +
-                                 path.extension().string());
-}
-
-} // namespace
-
-RgbImage readRgbImage(const fs::path& path)
-{
-    std::error_code ec;
-    if (!fs::exists(path, ec))
-        fail(path, "no such file");
-    if (fs::is_directory(path, ec))
-        fail(path, "is a directory, not an image");
-    // Alpha is ignored, so colour is taken as stored, not premultiplied by alpha.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::open(path.string(), &config);
-    if (!in)
-        fail(path, "cannot read image: " + OIIO::geterror());
-    const OIIO::ImageSpec spec = in->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        fail(path, "image has no pixels");
-    const int channels = std::min(spec.nchannels, 4);
-    const size_t values = size_t(spec.width) * size_t(spec.height) * size_t(channels);
-
-    // 8-bit files are read as bytes so their values convert exactly.
-    if (spec.format == OIIO::TypeDesc::UINT8) {
-        std::vector<uint8_t> pixels(values);
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::UINT8, pixels.data()))
-            fail(path, "cannot read pixels: " + in->geterror());
-        return rgbFromPixels8(pixels.data(), spec.width, spec.height, channels);
-    }
-    std::vector<float> pixels(values);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        fail(path, "cannot read pixels: " + in->geterror());
-    return rgbFromPixelsFloat(pixels.data(), spec.width, spec.height, channels);
-}
-
-void writeRgb8Image(const fs::path& path, std::span<const uint8_t> rgb, int width, int height)
-{
-    if (width <= 0 || height <= 0)
-        fail(path, "cannot write an empty image (" + std::to_string(width) + "x" +
-                       std::to_string(height) + ")");
-    if (rgb.size() != size_t(width) * size_t(height) * 3)
-        fail(path, "pixel buffer does not hold " + std::to_string(width) + "x" +
-                       std::to_string(height) + "x3 bytes");
-
-    const fs::path temporary = temporaryPathFor(path);
-    auto removeTemporary = [&] {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-    };
-
-    // Step 1: everything goes to the temporary file.
-    auto out = OIIO::ImageOutput::create(temporary.string());
-    if (!out)
-        fail(path, "cannot write this image format: " + OIIO::geterror());
-    const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(temporary.string(), spec)) {
-        const std::string error = out->geterror();
-        removeTemporary();
-        fail(path, "cannot open for writing: " + error);
-    }
-    const bool written = out->write_image(OIIO::TypeDesc::UINT8, rgb.data());
-    const std::string writeError = written ? std::string() : out->geterror();
-    const bool closed = out->close();
-    const std::string closeError = closed ? std::string() : out->geterror();
-    out.reset();
-    if (!written || !closed) {
-        removeTemporary();
-        fail(path, "write failed: " + (written ? closeError : writeError));
-    }
-
-    // Step 2: moved into place in one step.
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        removeTemporary();
-        fail(path, "cannot move the written image into place: " + ec.message());
-    }
+    if (width > 0 && height > 0 && rgb.size() != size_t(width) * size_t(height) * 3)
+        throw MetricsIoError("'" + path.string() + "': pixel buffer does not hold " + std::to_string(width) +
+                             "x" + std::to_string(height) + "x3 bytes");
+    encodeImageFile(path, rgb.data(), width, height, 3);
 }
 
 } // namespace lfd::metrics

@@ -45,7 +45,7 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Reads any image OpenImageIO reads. 8-bit files convert exactly; other formats are read
+// Reads any image image_file.h decodes. 8-bit files convert exactly; 16-bit and HDR files are read
 // as float with 1.0 = 255.
 RgbImage readRgbImage(const std::filesystem::path& path);
 // Writes interleaved RGB8 (width * height * 3 bytes); the format follows the extension.

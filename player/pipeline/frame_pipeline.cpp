@@ -156,6 +156,38 @@ void FramePipeline::renderFrame(Renderer& renderer, double time, GpuTimer& timer
     timer.end();
 }
 
+uint32_t FramePipeline::renderCompleteFrame(Renderer& renderer, double time, GpuTimer& timer,
+                                           Reconstruction reconstruction)
+{
+    renderFrame(renderer, time, timer, reconstruction);
+    return completeFrame(renderer, time, reconstruction);
+}
+
+uint32_t FramePipeline::completeFrame(Renderer& renderer, double time, Reconstruction reconstruction, bool preview)
+{
+    // note: a renderer grows its buffers to 1.25x what the overflowing frame needed, so one
+    // more render is enough unless it hit its cap; the bound only guards against a renderer
+    // that can never settle.
+    uint32_t again = 0;
+    for (; again < 4 && !renderer.settle(); ++again) {
+        GpuTimer untimed;
+        if (preview)
+            renderPreviewFrame(renderer, time, untimed, reconstruction);
+        else
+            renderFrame(renderer, time, untimed, reconstruction);
+        untimed.finish();
+    }
+    return again;
+}
+
+uint64_t FramePipeline::frameGpuBytes(const Renderer& renderer) const
+{
+    uint64_t bytes = targets_->bytes() + eia_->bytes() + renderer.frameGpuBytes();
+    if (ssTargets_)
+        bytes += ssTargets_->bytes();
+    return bytes;
+}
+
 DisplayProfile previewProfile(const DisplayProfile& full, const PreviewShape& shape)
 {
     const uint32_t step = std::max(shape.viewStep, 1u), divisor = std::max(shape.sizeDivisor, 1u);

@@ -88,6 +88,19 @@ public:
     // down, stage "downsample", when set) and builds the EIA.
     void renderFrame(Renderer& renderer, double time, GpuTimer& timer,
                      Reconstruction reconstruction = Reconstruction::None);
+    // renderFrame, then completeFrame.
+    uint32_t renderCompleteFrame(Renderer& renderer, double time, GpuTimer& timer,
+                                 Reconstruction reconstruction = Reconstruction::None);
+    // Settles the renderer (Renderer::settle) after the frame at `time` (a preview frame if
+    // `preview`): if that frame overflowed a buffer the renderer learns about only now, it
+    // is rendered again, untimed, with the grown buffers, so the targets hold the whole
+    // frame. Waits for the GPU: for frames whose outputs are read. Returns how many times
+    // the frame was rendered again (0 almost always).
+    uint32_t completeFrame(Renderer& renderer, double time, Reconstruction reconstruction = Reconstruction::None,
+                           bool preview = false);
+    // GPU memory of a frame: the view targets (and the supersampled ones), the EIA and what
+    // the renderer holds for its frames (Renderer::frameGpuBytes), in bytes.
+    uint64_t frameGpuBytes(const Renderer& renderer) const;
     // The two halves, for views that come from elsewhere (lfd-bench's gstd cache):
     // animate only, then interleave whatever the view targets hold.
     void animate(double time);

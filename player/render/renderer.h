@@ -5,6 +5,7 @@
 
 #include "frame.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <utility>
@@ -26,8 +27,20 @@ public:
     // "point_generation".
     virtual void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets,
                         GpuTimer& timer) = 0;
-    // Renderer-specific numbers for the stats JSON, e.g. {"points", 2.29e6}.
+    // Renderer-specific numbers for the stats JSON, e.g. {"points", 2.29e6}; as of the last
+    // frame whose counts came back from the GPU (settle() brings them to the last frame).
     virtual std::vector<std::pair<std::string, double>> extraStats() const { return {}; }
+    // GPU memory the renderer holds for its frames beyond the scene and the view targets
+    // (point, record and per-view-pixel buffers), in bytes.
+    virtual uint64_t frameGpuBytes() const { return 0; }
+    // A renderer that sizes its buffers from counts the GPU keeps (lfdpr's points) reads
+    // them back frames later, behind a fence, so no frame waits for the GPU (README
+    // "Frames that never wait"); a frame that overflowed is known only then. settle() waits
+    // for the counts of every frame rendered so far, applies them (grown buffers, stats)
+    // and says whether the last frame was complete; false: it overflowed and rendering the
+    // same frame again draws it whole. Blocking: for frames whose outputs are read, never
+    // between steady-state frames.
+    virtual bool settle() { return true; }
 };
 
 // Renderers are built by name through the one registry, renderer_registry.h.

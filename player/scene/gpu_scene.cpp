@@ -8,6 +8,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -57,7 +58,12 @@ uint32_t materialTextureFlags(const Material& m)
            (m.emissiveTexture != kNone ? bindings::kMaterialEmissiveTexture : 0u);
 }
 
-GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options) : scene_(std::move(scene))
+namespace {
+std::atomic<uint64_t> g_sceneSerial{0};
+} // namespace
+
+GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options)
+    : scene_(std::move(scene)), serial_(++g_sceneSerial)
 {
     // Step 0: what fits (GL_MAX_TEXTURE_SIZE, the budget); planned before any allocation.
     GpuMemoryPlan ownPlan;

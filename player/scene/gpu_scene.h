@@ -72,6 +72,9 @@ public:
     unsigned triangleStatsBuffer() const { return statsSsbo_.get(); }
     unsigned nodeTransformBuffer() const { return nodeSsbo_.get(); }
     size_t gpuBytes() const { return gpuBytes_; }
+    // Unique per GpuScene made in this process (1, 2, ...), so renderers that keep tables
+    // per scene rebuild them for a new one even where it reuses a freed one's address.
+    uint64_t serial() const { return serial_; }
     const GpuTextureLayout& textureLayout(size_t index) const { return layouts_[index]; }
 
 private:
@@ -84,6 +87,7 @@ private:
     gl::VertexArray vao_;
     gl::Buffer ibo_, materialSsbo_, statsSsbo_, nodeSsbo_;
     size_t gpuBytes_ = 0;
+    uint64_t serial_;
 };
 
 } // namespace lfd::player

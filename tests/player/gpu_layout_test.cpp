@@ -364,7 +364,9 @@ std::vector<BlockUse> visibilityBlocks()
                                  {"Points", k.ssboPoints, k.compactPointBytes},
                                  {"Records", k.ssboRecords, k.recordBytes},
                                  {"Draws", k.ssboDraws, sizeof(lb::LfdprDrawGpu)},
-                                 {"Large", k.ssboLarge, sizeof(uint32_t)},
+                                 {"Large", k.ssboLarge, k.largeEntryBytes},
+                                 {"Workgroups", k.ssboWorkgroups, sizeof(lb::LfdprWorkgroupGpu)},
+                                 {"Repair", k.ssboRepair, k.repairBytes},
                                  {"LargeDispatch", k.ssboLargeDispatch, k.largeDispatchBytes},
                                  {"VisCounters", k.ssboVisCounters, k.visCounterBytes},
                                  {"ChunkMasks", k.ssboChunkMasks, sizeof(uint32_t)},
@@ -429,6 +431,19 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
                    visibilityBlocks()});
     out.push_back({"lfdpr compute points (alpha test)", {{GL_COMPUTE_SHADER, "lfdpr_points.comp"}},
                    {"LFDPR_ALPHA_TEST 1"}, visibilityBlocks()});
+    out.push_back({"lfdpr visibility dispatch", {{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}},
+                   {"LFDPR_VISIBILITY_PIPELINE 1"}, visibilityBlocks()});
+    out.push_back({"lfdpr repair dispatch", {{GL_COMPUTE_SHADER, "lfdpr_repair_dispatch.comp"}}, {},
+                   visibilityBlocks()});
+    // The GPU work shape (lfdpr_work_shape.glsl) declares the same blocks.
+    const std::string gpu = "LFDPR_WORK_GPU 1";
+    out.push_back({"lfdpr compute points (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, {gpu},
+                   visibilityBlocks()});
+    out.push_back({"lfdpr visibility (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {gpu},
+                   visibilityBlocks()});
+    out.push_back({"lfdpr shade (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, {gpu}, visibilityBlocks()});
+    out.push_back({"lfdpr shade dispatch (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}, {gpu},
+                   visibilityBlocks()});
     return out;
 }
 

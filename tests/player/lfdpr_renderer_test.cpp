@@ -219,7 +219,8 @@ TEST_F(LfdprRendererTest, SubPixelTriangleStillMakesAPointAndAPixel)
 TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
 {
     // The paper pipeline renders an overflowing frame partially and grows for the next one
-    // (the visibility pipeline redoes the frame: lfdpr_visibility_test.cpp).
+    // once the frame's counts are back (the visibility pipeline likewise:
+    // lfdpr_visibility_test.cpp).
     const Scene scene = cubeAndSphereScene();
     const DisplayProfile profile = smallProfile(4, 96, 72);
     const LfdprOptions::Pipeline paper = LfdprOptions::Pipeline::Paper;
@@ -235,8 +236,10 @@ TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
     player::GpuTimer timer;
 
     // Frame 1: overflows; only 16 points are stored and splatted (no out-of-bounds writes:
-    // the frame still renders, partially).
+    // the frame still renders, partially). Its counts come back without a wait, frames
+    // later; settle() waits for them and says the frame must be rendered again.
     renderer->render(gpu, frame, targets, timer);
+    EXPECT_FALSE(renderer->settle()) << "an overflowed frame is reported incomplete";
     const player::LfdprFrameInfo first = renderer->lastFrame();
     EXPECT_TRUE(first.overflowed);
     EXPECT_EQ(first.points, needed);
@@ -247,6 +250,7 @@ TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
     // Frame 2: grown to needed * 1.25, complete, and identical to an unconstrained render
     // (depth ties break by colour, so the image does not depend on point order).
     renderer->render(gpu, frame, targets, timer);
+    EXPECT_TRUE(renderer->settle());
     const player::LfdprFrameInfo second = renderer->lastFrame();
     EXPECT_FALSE(second.overflowed);
     EXPECT_GE(second.pointCapacity, uint32_t(std::ceil(1.25 * double(needed))));
@@ -270,9 +274,11 @@ TEST_F(LfdprRendererTest, PointBufferGrowthStopsAtItsCap)
     player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
     player::GpuTimer timer;
     // The scene needs thousands of points: every frame overflows, the buffer grows to the
-    // cap and no further, only what fits is stored and the frames still render.
+    // cap and no further, only what fits is stored and the frames still render; past the
+    // cap another render gains nothing, so settle() calls such a frame complete.
     for (uint32_t f = 1; f <= 3; ++f) {
         renderer->render(gpu, frame, targets, timer);
+        EXPECT_EQ(renderer->settle(), f > 1) << "frame " << f;
         const player::LfdprFrameInfo info = renderer->lastFrame();
         EXPECT_TRUE(info.overflowed) << "frame " << f;
         EXPECT_GT(info.points, 64u);

@@ -42,6 +42,10 @@ RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const 
     player::GpuTimer timer;
     for (int i = 0; i < request.frames; ++i)
         renderer.render(gpu, out.setup, targets, timer);
+    // As FramePipeline::completeFrame: a frame that overflowed (known once its counts are
+    // back) is rendered again with the grown buffers.
+    for (int again = 0; again < 4 && !renderer.settle(); ++again)
+        renderer.render(gpu, out.setup, targets, timer);
     if (request.eia) {
         player::EiaBuilder eia(profile);
         eia.build(targets, player::Reconstruction::None, timer);

@@ -1,7 +1,11 @@
 // LFDPR point generation in compute (the visibility pipeline; shaders/lfdpr_points.comp):
-// one invocation per triangle of each draw, then one workgroup per large triangle of each
-// draw. The caller binds the scene, the LFDPR buffers (points, records, the large-triangle
-// list and its per-draw dispatch words, counters) and the frame constants.
+// one invocation per triangle, then one workgroup per large triangle. Triangles are cut
+// into workgroups of LFDPR_GROUP_SIZE triangles of one draw (LfdprWorkgroupGpu), so one
+// dispatch samples every draw without an alpha test, and each alpha-tested draw (whose
+// textures must be bound) gets one of its own: the dispatch count does not grow with the
+// scene's draws. Large triangles are queued per such dispatch class and sampled by one
+// indirect dispatch each. The caller binds the scene, the LFDPR buffers (points, records,
+// draws, counters) and the frame constants.
 #pragma once
 
 #include "gl_handles.h"
@@ -18,18 +22,37 @@ public:
     // Builds the programs (per pass, with and without alpha test); `pixelCentreCulling`
     // compiles in LFDPR_PIXEL_CENTRE_CULLING (LfdprOptions::pixelCentreCulling);
     // cellScale > 1 compiles in LFDPR_CELL_SCALE (LfdprOptions::cellScale) for the programs
-    // of materials without an alpha test.
-    LfdprComputePointGeneration(bool pixelCentreCulling, uint32_t cellScale);
+    // of materials without an alpha test; `gpuWork` LFDPR_WORK_GPU (lfdpr_work_shape.glsl).
+    LfdprComputePointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork);
 
-    // largeBase[d]: first slot of draw d in the large-triangle list (its triangles before
-    // it); largeDispatch: the per-draw indirect dispatch words (uvec4 each, cleared to
-    // (0, 1, 1, 0) by the caller).
-    void run(const GpuScene& scene, const std::vector<uint32_t>& largeBase, unsigned largeDispatch) const;
+    // The workgroup table and the large-triangle queues for `scene`'s draws (again only
+    // when the scene changes).
+    void prepare(const GpuScene& scene);
+    // Clears the large-triangle queues' dispatch words (no barrier: the caller puts one
+    // after its own clears).
+    void clearQueues() const;
+    // Samples every drawn triangle: one dispatch per class, then one indirect dispatch per
+    // class over its queued large triangles.
+    void run(const GpuScene& scene) const;
+
+    size_t bufferBytes() const; // the workgroup table and the large-triangle queue
 
 private:
+    // One dispatch: the workgroups [firstWorkgroup, firstWorkgroup + workgroups) of the
+    // table; its large triangles go to queue segment largeBase.. and dispatch word `index`.
+    struct DispatchClass {
+        int32_t material;     // the alpha-tested draw's material, kNone for the opaque class
+        uint32_t firstWorkgroup, workgroups;
+        uint32_t largeBase;
+    };
     // [alpha test][large pass]: draws of alpha-masked materials use the programs with the
     // alpha test (LFDPR_ALPHA_TEST), all others the ones without.
     gl::Program programs_[2][2];
+    uint64_t sceneSerial_ = 0; // GpuScene::serial() of the scene the tables are for
+    size_t drawCount_ = 0;
+    std::vector<DispatchClass> classes_;
+    gl::Buffer workgroups_, large_, largeDispatch_;
+    size_t bytes_ = 0;
 };
 
 } // namespace lfd::player

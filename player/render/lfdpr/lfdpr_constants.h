@@ -36,7 +36,8 @@ struct LfdprConstants {
              ssboDraws = lfdpr_bindings::kSsboDraws;
     unsigned ssboLarge = lfdpr_bindings::kSsboLarge, ssboLargeDispatch = lfdpr_bindings::kSsboLargeDispatch,
              ssboVisCounters = lfdpr_bindings::kSsboVisCounters, ssboShadeWork = lfdpr_bindings::kSsboShadeWork,
-             ssboChunkMasks = lfdpr_bindings::kSsboChunkMasks;
+             ssboChunkMasks = lfdpr_bindings::kSsboChunkMasks, ssboRepair = lfdpr_bindings::kSsboRepair,
+             ssboWorkgroups = lfdpr_bindings::kSsboWorkgroups;
     unsigned uboCameraLine = lfdpr_bindings::kUboCameraLine;
     unsigned unitIndices = lfdpr_bindings::kUnitIndices, unitPositions = lfdpr_bindings::kUnitPositions,
              unitNormals = lfdpr_bindings::kUnitNormals, unitTangents = lfdpr_bindings::kUnitTangents,
@@ -44,10 +45,10 @@ struct LfdprConstants {
              unitRecords = lfdpr_bindings::kUnitRecords, unitDraws = lfdpr_bindings::kUnitDraws,
              unitNodes = lfdpr_bindings::kUnitNodes, unitMaterials = lfdpr_bindings::kUnitMaterials,
              unitViewDepth = lfdpr_bindings::kUnitViewDepth, unitViewIndex = lfdpr_bindings::kUnitViewIndex;
-    int locDraw = lfdpr_bindings::kLocDraw, locTriangles = lfdpr_bindings::kLocTriangles,
+    int locFirstWorkgroup = lfdpr_bindings::kLocFirstWorkgroup, locWorkgroups = lfdpr_bindings::kLocWorkgroups,
+        locLargeClass = lfdpr_bindings::kLocLargeClass,
         locShadeMaterial = lfdpr_bindings::kLocShadeMaterial, locLargeBase = lfdpr_bindings::kLocLargeBase,
-        locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups,
-        locRepairs = lfdpr_bindings::kLocRepairs;
+        locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups;
     // Shading in tiles per shading group (lfdpr_shade_list.comp, lfdpr_shade.comp).
     uint32_t shadeTile = lfdpr_bindings::kShadeTile, maxShadeGroups = lfdpr_bindings::kMaxShadeGroups,
              shadeDispatchWidth = lfdpr_bindings::kShadeDispatchWidth, viewChunk = lfdpr_bindings::kViewChunk,
@@ -56,7 +57,9 @@ struct LfdprConstants {
     uint32_t recordBytes = sizeof(lfdpr_bindings::LfdprRecordGpu);
     uint32_t compactPointBytes = sizeof(lfdpr_bindings::LfdprPointGpu);
     uint32_t visCounterBytes = sizeof(lfdpr_bindings::LfdprVisCountersGpu);
-    uint32_t largeDispatchBytes = sizeof(glm::uvec4); // LargeDispatch: uvec4 per draw
+    uint32_t repairBytes = sizeof(lfdpr_bindings::LfdprRepairGpu);
+    uint32_t largeDispatchBytes = sizeof(glm::uvec4); // LargeDispatch: uvec4 per dispatch class
+    uint32_t largeEntryBytes = sizeof(glm::uvec2);    // Large: (draw, primitive) per queued triangle
     uint32_t optionLfdSampling = lfdpr_bindings::kOptionLfdSampling,
              optionTextureSplatting = lfdpr_bindings::kOptionTextureSplatting,
              optionMvMipmapping = lfdpr_bindings::kOptionMvMipmapping;

@@ -1,6 +1,7 @@
-// Read-back of LFDPR's counter buffers through the generated structs (named fields, never
-// array positions): LfdprCountersGpu (the paper's pipeline, LfdprCounters block) and
-// LfdprVisCountersGpu (the visibility pipeline). Both stall until the GPU has written them.
+// LFDPR's counter blocks through the generated structs (named fields, never array
+// positions): LfdprCountersGpu (the paper's pipeline, LfdprCounters block) and
+// LfdprVisCountersGpu (the visibility pipeline). The renderers read them back frames later
+// through gl::GpuReadback, never waiting for them.
 #pragma once
 
 #include "lfdpr_bindings_gpu.h"
@@ -9,8 +10,5 @@ namespace lfd::player {
 
 using lfdpr_bindings::LfdprCountersGpu;
 using lfdpr_bindings::LfdprVisCountersGpu;
-
-LfdprCountersGpu readLfdprCounters(unsigned buffer);
-LfdprVisCountersGpu readLfdprVisCounters(unsigned buffer);
 
 } // namespace lfd::player

@@ -12,12 +12,16 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <string>
 
 namespace lfd::player {
 
 namespace {
+
+using lfdpr_bindings::LfdprRepairGpu;
+using lfdpr_bindings::LfdprVisCountersGpu;
 
 std::vector<std::string> atomicsDefines(bool int64)
 {
@@ -43,22 +47,32 @@ std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vect
     return groups;
 }
 
-LfdprVisibilityShading::LfdprVisibilityShading(bool int64, uint32_t testIndexRaces) : int64_(int64)
+LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, uint32_t testIndexRaces)
+    : int64_(int64), defines_(atomicsDefines(int64))
 {
+    if (gpuWork)
+        defines_.emplace_back("LFDPR_WORK_GPU 1");
+    auto build = [&](const char* shader, std::vector<std::string> extra) {
+        std::vector<std::string> defines = defines_;
+        defines.insert(defines.end(), extra.begin(), extra.end());
+        return gl::Program(gl::buildProgram({{GL_COMPUTE_SHADER, shader}}, defines));
+    };
     // A shader error thrown below leaves nothing behind: the programs built so far are
     // owned by their handles.
-    const std::vector<std::string> defines = atomicsDefines(int64);
-    std::vector<std::string> splatDefines = defines;
+    std::vector<std::string> splatDefines;
     if (!int64 && testIndexRaces > 0)
         splatDefines.push_back("LFDPR_TEST_INDEX_RACES " + std::to_string(testIndexRaces));
-    splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, splatDefines));
+    splatProgram_ = build("lfdpr_visibility.comp", splatDefines);
     if (!int64)
-        indexProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"}));
-    listProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}));
+        indexProgram_ = build("lfdpr_visibility.comp", {"LFDPR_INDEX_PASS 1"});
+    listProgram_ = build("lfdpr_shade_list.comp", {});
     if (!int64)
-        listRepairProgram_.reset(
-            gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {"LFDPR_REPAIR_LIST 1"}));
-    dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}));
+        listRepairProgram_ = build("lfdpr_shade_list.comp", {"LFDPR_REPAIR_LIST 1"});
+    dispatchProgram_ = build("lfdpr_shade_dispatch.comp", {});
+    if (!int64) {
+        repairDispatchProgram_ = build("lfdpr_repair_dispatch.comp", {});
+        repair_ = gl::createBuffer(LfdprConstants::get().repairBytes);
+    }
     // The untextured group's program is always needed; built now (for a scene with every
     // stream) so a shader error surfaces at construction, not in the middle of a frame.
     shadeProgram(0u, kStreamsAll);
@@ -71,7 +85,7 @@ unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t str
     const uint64_t key = uint64_t(textureMask) << 32 | streams;
     if (const auto it = shadePrograms_.find(key); it != shadePrograms_.end())
         return it->second.get();
-    std::vector<std::string> defines = atomicsDefines(int64_);
+    std::vector<std::string> defines = defines_;
     char mask[48];
     std::snprintf(mask, sizeof(mask), "LFD_TEXTURE_MASK 0x%Xu", textureMask);
     defines.emplace_back(mask);
@@ -118,8 +132,10 @@ size_t LfdprVisibilityShading::shadeWorkBytes() const {
     return shadeWorkBytes_ + chunkMaskBytes_;
 }
 
+size_t LfdprVisibilityShading::repairCountOffset() { return offsetof(LfdprRepairGpu, indexPass) + 12; }
+
 void LfdprVisibilityShading::splat(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
-                                   uint32_t points)
+                                   unsigned counters)
 {
     const LfdprConstants& k = LfdprConstants::get();
     // Step 1: the shading groups (the splat marks where each group's points land); clear
@@ -136,20 +152,17 @@ void LfdprVisibilityShading::splat(const GpuScene& scene, const std::vector<int3
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    if (points == 0)
-        return;
 
     // Step 2: splat (the 32-bit path's index pass runs only to repair, in shade()).
-    splatPass(points, splatProgram_);
+    splatPass(splatProgram_, counters);
 }
 
-void LfdprVisibilityShading::splatPass(uint32_t points, unsigned program) const
+void LfdprVisibilityShading::splatPass(unsigned program, unsigned counters) const
 {
-    const LfdprConstants& k = LfdprConstants::get();
-    const uint32_t groups = divideUp(points, k.groupSize);
-    const uint32_t x = std::min<uint32_t>(groups, 65535u);
     glUseProgram(program);
-    glDispatchCompute(x, divideUp(groups, x), 1);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters);
+    glDispatchComputeIndirect(offsetof(LfdprVisCountersGpu, splatGroupsX));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glUseProgram(0);
 }
@@ -187,28 +200,34 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
     }
 }
 
-void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass, uint32_t repairs)
+void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
 {
     const LfdprConstants& k = LfdprConstants::get();
 
     // Step 1: empty lists and the counters, then each group's list of tile chunks from the
-    // splat's marks (pass 2: the repair list's chunks when it held them all, else all again).
+    // splat's marks (pass 2: the repair list's chunks when it held them all, else all again;
+    // lfdpr_repair_dispatch.comp sized both, the one not needed to zero workgroups).
     const GLuint zero = 0;
     glClearNamedBufferSubData(shadeWork_, GL_R32UI, 0, kDispatchOffset + GLsizeiptr(groupCount_) * 16,
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprShadeCountersGpu
     glNamedBufferSubData(shadeWork_, 0, sizeof(counters), counters);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    const bool fromList = pass == 2 && repairs <= repairCapacity_;
-    const unsigned list = fromList ? listRepairProgram_.get() : listProgram_.get();
-    glUseProgram(list);
-    glProgramUniform1ui(list, k.locShadeGroups, groupCount_);
-    if (fromList)
-        glProgramUniform1ui(list, k.locRepairs, repairs);
-    const uint32_t invocations = (fromList ? repairs : entryCount_) * groupCount_;
-    const uint32_t workgroups = divideUp(invocations, 64);
-    const uint32_t width = std::min<uint32_t>(workgroups, k.shadeDispatchWidth);
-    glDispatchCompute(width, divideUp(workgroups, width), 1); // lfdpr_shade_list.comp's (x, y) order
+    for (const unsigned list : {listProgram_.get(), listRepairProgram_.get()})
+        if (list) // the repair list exists on the 32-bit path only
+            glProgramUniform1ui(list, k.locShadeGroups, groupCount_);
+    if (pass == 0) {
+        const uint32_t workgroups = divideUp(entryCount_ * groupCount_, 64);
+        const uint32_t width = std::min<uint32_t>(workgroups, k.shadeDispatchWidth);
+        glUseProgram(listProgram_);
+        glDispatchCompute(width, divideUp(workgroups, width), 1); // lfdpr_shade_list.comp's (x, y) order
+    } else {
+        glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, repair_);
+        glUseProgram(listRepairProgram_);
+        glDispatchComputeIndirect(offsetof(LfdprRepairGpu, listRepair));
+        glUseProgram(listProgram_);
+        glDispatchComputeIndirect(offsetof(LfdprRepairGpu, listAll));
+    }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
     // Step 2: each group's indirect dispatch from its entry count.
@@ -239,8 +258,26 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass, 
     glUseProgram(0);
 }
 
-uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targets,
-                                       uint32_t points)
+// The 32-bit path's repair after the first shading pass: its dispatches sized on the GPU
+// from the pass's count of raced pixels, then the index pass over every point and the
+// chunks of those pixels shaded again (all with zero workgroups when nothing raced).
+void LfdprVisibilityShading::repair(const GpuScene& scene)
+{
+    const LfdprConstants& k = LfdprConstants::get();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboRepair, repair_);
+    glUseProgram(repairDispatchProgram_);
+    glProgramUniform1ui(repairDispatchProgram_, k.locShadeGroups, groupCount_);
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    glUseProgram(indexProgram_);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, repair_);
+    glDispatchComputeIndirect(offsetof(LfdprRepairGpu, indexPass));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    listAndShade(scene, 2);
+}
+
+void LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targets)
 {
     const LfdprConstants& k = LfdprConstants::get();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
@@ -256,21 +293,12 @@ uint32_t LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targe
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_TEXTURE_FETCH_BARRIER_BIT);
     dispatches_ = 0;
-    listAndShade(scene, 0, 0);
-
-    // The 32-bit path's rare repair: the index pass, then the flagged pixels again.
-    uint32_t repairs = 0;
-    if (!int64_) {
-        glGetNamedBufferSubData(shadeWork_, 0, sizeof(repairs), &repairs); // shadeCounters.repairCount
-        if (repairs > 0) {
-            splatPass(points, indexProgram_);
-            listAndShade(scene, 2, repairs);
-        }
-    }
+    listAndShade(scene, 0);
+    if (!int64_)
+        repair(scene);
     // The EIA pass samples the array, read-back copies it.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    return repairs;
 }
 
 } // namespace lfd::player

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <string>
 #include <vector>
 
 namespace lfd::player {
@@ -30,8 +31,9 @@ class LfdprVisibilityShading {
 public:
     // int64: one 64-bit atomicMin pass (GL_NV_shader_atomic_int64; its shaders are only
     // compiled then); otherwise a depth pass and a record (index) pass over 32-bit words.
+    // gpuWork: LFDPR_WORK_GPU for every program (lfdpr_work_shape.glsl).
     // testIndexRaces: LfdprOptions::testIndexRaces (32-bit path only).
-    explicit LfdprVisibilityShading(bool int64, uint32_t testIndexRaces = 0);
+    LfdprVisibilityShading(bool int64, bool gpuWork, uint32_t testIndexRaces = 0);
     ~LfdprVisibilityShading();
     LfdprVisibilityShading(const LfdprVisibilityShading&) = delete;
     LfdprVisibilityShading& operator=(const LfdprVisibilityShading&) = delete;
@@ -43,19 +45,26 @@ public:
     // The shading work: per group a dispatch, a list of tile chunks and the splat's marks.
     size_t shadeWorkBytes() const;
 
-    // Clears the view buffers and splats `points` points into every view (one pass on
-    // either path), marking for each shading group the tile chunks and views its points
-    // wrote. Shading groups: 0 = every untextured material, then one per textured material
-    // the scene draws with (`texturedMaterials`, scene material indices). The caller has
-    // bound the scene, the LFDPR buffers and the constants.
-    void splat(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, uint32_t points);
+    // Clears the view buffers and splats the points into every view (one pass on either
+    // path; an indirect dispatch from `counters`, the LfdprVisCountersGpu block whose
+    // splat arguments lfdpr_dispatch.comp wrote), marking for each shading group the tile
+    // chunks and views its points wrote. Shading groups: 0 = every untextured material,
+    // then one per textured material the scene draws with (`texturedMaterials`, scene
+    // material indices). The caller has bound the scene, the LFDPR buffers and the constants.
+    void splat(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, unsigned counters);
     // Shades every visible pixel into targets and writes the background elsewhere, one
     // dispatch per group over the chunks splat() marked for it. On the 32-bit path, pixels
-    // whose record lost a race to a nearer point are repaired - the index pass over
-    // all `points`, then their chunks shaded again - and their number is returned (0 on
-    // the 64-bit path).
-    uint32_t shade(const GpuScene& scene, ViewTargets& targets, uint32_t points);
-    // Shading dispatches of the last shade() (groups with their programs; repairs add more).
+    // whose record lost a race to a nearer point are repaired - the index pass over every
+    // point (its count from the bound LfdprVisCountersGpu block), then their chunks shaded
+    // again - with dispatches the GPU sizes from its own count (lfdpr_repair_dispatch.comp),
+    // so nothing is read back; the count of repaired pixels is at repairCountOffset() in
+    // repairBuffer().
+    void shade(const GpuScene& scene, ViewTargets& targets);
+    // 32-bit path: the LfdprRepairGpu block (0 on the 64-bit path) and where in it the
+    // number of pixels repaired by the last shade() is.
+    unsigned repairBuffer() const { return repair_.get(); }
+    static size_t repairCountOffset();
+    // Shading dispatches of the last shade() (one per group and pass).
     uint32_t lastShadingDispatches() const { return dispatches_; }
 
 private:
@@ -64,21 +73,24 @@ private:
         uint32_t gpuMaterial; // u_shadeMaterial
         uint32_t textureMask; // LFD_TEXTURE_MASK of its program
     };
-    void splatPass(uint32_t points, unsigned program) const;
+    void splatPass(unsigned program, unsigned counters) const;
     void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
-    // pass 0: every marked chunk; pass 2: after a repair, the chunks of the `repairs`
-    // repaired pixels when the repair list held them all, else every marked chunk again.
-    void listAndShade(const GpuScene& scene, uint32_t pass, uint32_t repairs);
+    // pass 0: every marked chunk; pass 2: after a repair, the chunks of the repaired pixels
+    // when the repair list held them all, else every marked chunk again (both lists are
+    // dispatched indirectly, the one not needed with zero workgroups).
+    void listAndShade(const GpuScene& scene, uint32_t pass);
+    void repair(const GpuScene& scene);
     unsigned shadeProgram(uint32_t textureMask, uint32_t streams);
 
     bool int64_;
+    std::vector<std::string> defines_; // every program's: atomics path, work shape
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
     gl::Program listProgram_, listRepairProgram_; // lfdpr_shade_list.comp: marks, repair list
-    gl::Program dispatchProgram_;
+    gl::Program dispatchProgram_, repairDispatchProgram_;
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_; // 64-bit path: depth_ holds the words
     gl::Texture depthTexels_, indexTexels_; // the same, read as buffer textures
-    gl::Buffer shadeWork_, chunkMasks_;
+    gl::Buffer shadeWork_, chunkMasks_, repair_;
     size_t shadeWorkBytes_ = 0, chunkMaskBytes_ = 0;
     std::vector<Group> groups_;
     uint32_t groupCount_ = 0;            // dispatch slots in use (<= LFDPR_MAX_SHADE_GROUPS)

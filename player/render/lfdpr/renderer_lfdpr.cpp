@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace lfd::player {
 
@@ -32,6 +33,38 @@ bool lfdprUseInt64(LfdprOptions::Atomics atomics)
     default:
         return available;
     }
+}
+
+bool lfdprGpuWorkShape(LfdprOptions::WorkShape shape)
+{
+    switch (shape) {
+    case LfdprOptions::WorkShape::Gpu:
+        return true;
+    case LfdprOptions::WorkShape::Cpu:
+        return false;
+    case LfdprOptions::WorkShape::Auto:
+    default: {
+        // The software rasterisers Mesa ships (llvmpipe, softpipe) and OpenSWR run compute
+        // invocations as SIMD rows on a few CPU cores; everything else is a GPU.
+        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        const std::string name = renderer ? renderer : "";
+        for (const char* software : {"llvmpipe", "softpipe", "SWR"})
+            if (name.find(software) != std::string::npos)
+                return false;
+        return true;
+    }
+    }
+}
+
+LfdprOptions::WorkShape parseLfdprWorkShape(const std::string& text)
+{
+    if (text == "auto")
+        return LfdprOptions::WorkShape::Auto;
+    if (text == "gpu")
+        return LfdprOptions::WorkShape::Gpu;
+    if (text == "cpu")
+        return LfdprOptions::WorkShape::Cpu;
+    throw std::invalid_argument("--lfdpr-work: \"" + text + "\" is not one of auto, gpu, cpu");
 }
 
 LfdprOptions::Atomics parseLfdprAtomics(const std::string& text)

@@ -51,12 +51,21 @@ struct LfdprOptions {
     // shows: the views are the same for every scale. Alpha-masked materials keep the
     // paper's spacing (their cells carry the mask). 1: the paper's density.
     uint32_t cellScale = 2;
+    // Visibility pipeline: how its work is cut into invocations (shaders/lfdpr_work_shape.glsl,
+    // README "Work shaped for a GPU"). Gpu: many short invocations (a splat per point and
+    // slice of views, splats of a few pixels, shading per slice of views); Cpu: long
+    // invocations that amortise per-point setup over every view, which a CPU rasteriser
+    // runs fastest. Auto: Cpu on Mesa's software rasterisers (llvmpipe, softpipe) and
+    // OpenSWR, Gpu elsewhere. The views are the same either way.
+    enum class WorkShape { Auto, Gpu, Cpu } workShape = WorkShape::Auto;
     // Auto: 64-bit atomics where GL_NV_shader_atomic_int64 exists, else two-pass 32-bit.
     // Int64 where unsupported throws gl::GlError at construction.
     enum class Atomics { Auto, Int64, TwoPass32 } atomics = Atomics::Auto;
-    // Points the buffer holds initially; it grows (needed * 1.25) after an overflow. The
-    // visibility pipeline then regenerates the points within the same frame (no point is
-    // ever dropped below the cap); the paper pipeline renders that frame partially.
+    // Points the buffer holds initially; it grows (needed * 1.25) after an overflow, once the
+    // overflowing frame's counts are back from the GPU (read without waiting, frames later).
+    // Frames rendered until then keep what fits and are counted (overflow_frames);
+    // Renderer::settle() reports an overflowed last frame, which lfd-play and lfd-bench
+    // render again before reading its outputs, so no output ever lacks points below the cap.
     uint32_t initialPointCapacity = 1u << 20;
     // Upper bound of that growth (also capped by GL_MAX_SHADER_STORAGE_BLOCK_SIZE): past
     // it every frame stores what fits, is flagged as overflowed and renders partially,
@@ -68,7 +77,8 @@ struct LfdprOptions {
     uint32_t testIndexRaces = 0;
 };
 
-// Introspection for tests and the benchmark (values of the most recent render()).
+// Introspection for tests and the benchmark: values of the most recent frame whose counts
+// have come back from the GPU (after settle(): the last frame rendered).
 struct LfdprFrameInfo {
     uint64_t points = 0;           // points generated (may exceed capacity on overflow)
     uint64_t pointsStored = 0;     // min(points, capacity): points splatted this frame
@@ -83,7 +93,7 @@ struct LfdprFrameInfo {
     uint64_t pointBufferBytes = 0;
     uint64_t triangleBufferBytes = 0; // per-triangle records (and the large-triangle list)
     uint64_t trianglesLarge = 0;      // visibility pipeline: sampled by a workgroup
-    uint64_t regenerations = 0;       // visibility pipeline: point generation redone after growth
+    uint64_t bufferGrowths = 0;       // visibility pipeline: the point buffer grown after an overflow
     uint64_t repairs = 0;             // visibility pipeline, 32-bit: pixels whose index was repaired
     uint64_t viewBufferBytes = 0;
 };
@@ -107,6 +117,12 @@ LfdprOptions::Pipeline parseLfdprPipeline(const std::string& text);
 // Whether the driver has the 64-bit atomics the Int64 path needs; throws gl::GlError
 // for Int64 where it has not.
 bool lfdprUseInt64(LfdprOptions::Atomics atomics);
+
+// Whether the visibility pipeline runs the GPU work shape (WorkShape::Auto decided from
+// GL_RENDERER). Needs a current context.
+bool lfdprGpuWorkShape(LfdprOptions::WorkShape shape);
+// Parses "auto" | "gpu" | "cpu" (the --lfdpr-work flag); throws std::invalid_argument.
+LfdprOptions::WorkShape parseLfdprWorkShape(const std::string& text);
 
 // Parses "auto" | "64" | "32" (the --atomics flag); throws std::invalid_argument.
 LfdprOptions::Atomics parseLfdprAtomics(const std::string& text);

@@ -1,12 +1,16 @@
 // lfdpr, the paper's pipeline (LfdprOptions::Pipeline::Paper): owns the LFDPR buffers (points, triangle records, counters, per-view
 // inverses) and runs point generation, view generation and the resolve each frame; grows
-// the point buffer after an overflow and reports what happened (extraStats).
+// the point buffer after an overflow and reports what happened (extraStats). The counters
+// come back frames later through a fenced read-back slot (gl::GpuReadback), so no frame
+// waits for them; an overflowing frame renders what fits and the buffer grows once its
+// counts are back (settle() has a caller that reads the outputs render it again).
 #include "renderer_lfdpr.h"
 
 #include "frame_stages.h"
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
 #include "gl_handles.h"
+#include "gpu_readback.h"
 #include "gpu_timer.h"
 #include "lfdpr_constants.h"
 #include "lfdpr_counters.h"
@@ -19,6 +23,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <deque>
 #include <stdexcept>
 #include <vector>
 
@@ -65,7 +71,9 @@ public:
     void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets,
                 GpuTimer& timer) override
     {
-        // Step 1: buffers sized for this scene, these views, and the last frame's overflow.
+        // Step 1: buffers sized for this scene, these views, and the overflows whose counts
+        // have come back.
+        readback_.poll([this](uint64_t tag, const uint8_t* bytes) { applyCounts(tag, bytes); });
         prepareBuffers(scene, frame, targets);
         // note: points are sampled for frame.samplingFrame() (the display's views under
         // angular supersampling, so the cloud does not grow) and splatted into frame's.
@@ -102,8 +110,29 @@ public:
         views_.resolve(targets);
         timer.end();
 
-        // Step 4: what happened (read back for stats and to size the next frame).
-        readCounters();
+        // Step 4: the counters to a read-back slot (read frames later: stats, growth).
+        const uint64_t tag = ++frameSerial_;
+        submitted_.push_back({tag, pointCapacity_});
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        readback_.begin(tag);
+        readback_.copy(counters_, 0, 0, sizeof(LfdprCountersGpu));
+        readback_.end();
+        info_.pointCapacity = pointCapacity_;
+        info_.triangleCapacity = uint32_t(recordCapacity_);
+        info_.pointBufferBytes = uint64_t(pointCapacity_) * k_.pointBytes;
+        info_.viewBufferBytes = views_.viewBufferBytes();
+    }
+
+    bool settle() override
+    {
+        readback_.waitAll([this](uint64_t tag, const uint8_t* bytes) { applyCounts(tag, bytes); });
+        return !(info_.overflowed && lastCountedTag_ == frameSerial_ && nextCapacity_ > info_.pointCapacity);
+    }
+
+    uint64_t frameGpuBytes() const override
+    {
+        return uint64_t(std::max(pointCapacity_, nextCapacity_)) * k_.pointBytes + triangleBufferBytes() +
+               views_.viewBufferBytes();
     }
 
     std::vector<std::pair<std::string, double>> extraStats() const override
@@ -181,24 +210,31 @@ private:
         glBindBufferBase(GL_UNIFORM_BUFFER, k_.uboFrame, frameUbo_);
     }
 
-    void readCounters()
+    // A frame's counters, come back from the GPU: its stats, and after an overflow the
+    // capacity the next frames get (1.25 x the count).
+    void applyCounts(uint64_t tag, const uint8_t* bytes)
     {
-        const LfdprCountersGpu c = readLfdprCounters(counters_);
+        LfdprCountersGpu c;
+        std::memcpy(&c, bytes, sizeof(c));
+        uint32_t capacity = pointCapacity_;
+        while (!submitted_.empty() && submitted_.front().tag <= tag) {
+            if (submitted_.front().tag == tag)
+                capacity = submitted_.front().capacity;
+            submitted_.pop_front();
+        }
+        lastCountedTag_ = tag;
         info_.points = c.pointCount;
-        info_.pointCapacity = pointCapacity_;
-        info_.pointsStored = std::min<uint64_t>(c.pointCount, pointCapacity_);
+        info_.pointCapacity = capacity;
+        info_.pointsStored = std::min<uint64_t>(c.pointCount, capacity);
         info_.triangles = c.triangleCount;
         info_.trianglesOversized = c.oversizedCount;
         trianglesCoarsened_ = c.coarsenedCount;
-        info_.triangleCapacity = uint32_t(recordCapacity_);
-        info_.overflowed = c.pointCount > pointCapacity_;
+        info_.overflowed = c.pointCount > capacity;
         if (info_.overflowed) {
             ++info_.overflowFrames;
-            nextCapacity_ =
-                uint32_t(std::min<double>(std::ceil(double(c.pointCount) * 1.25), double(maxPointCapacity_)));
+            nextCapacity_ = std::max(nextCapacity_, uint32_t(std::min<double>(std::ceil(double(c.pointCount) * 1.25),
+                                                                              double(maxPointCapacity_))));
         }
-        info_.pointBufferBytes = uint64_t(pointCapacity_) * k_.pointBytes;
-        info_.viewBufferBytes = views_.viewBufferBytes();
     }
 
     LfdprOptions options_;
@@ -208,6 +244,13 @@ private:
     LfdprPointGeneration pointGeneration_;
     LfdprViewGeneration views_;
     gl::Buffer points_, counters_, frameUbo_, records_, sampling_, viewInverse_;
+    gl::GpuReadback readback_{sizeof(LfdprCountersGpu)};
+    struct Submitted {
+        uint64_t tag;
+        uint32_t capacity; // the point capacity the frame ran with
+    };
+    std::deque<Submitted> submitted_; // frames whose counts have not come back
+    uint64_t frameSerial_ = 0, lastCountedTag_ = 0;
     uint32_t pointCapacity_ = 0, nextCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t recordCapacity_ = 0, trianglesCoarsened_ = 0;
     size_t viewInverseCapacity_ = 0;

@@ -1,16 +1,22 @@
 // lfdpr, the visibility pipeline (LfdprOptions::Pipeline::Visibility, the default): owns
 // its buffers and runs, per frame,
 //   1. "point_generation": compute point generation (lfdpr_compute_points) into 8-byte
-//      points and 16-byte triangle records; the point count is read back, and after an
-//      overflow the buffer grows and generation is redone in the same frame;
+//      points and 16-byte triangle records, then the splat's dispatch arguments from the
+//      point count, on the GPU (lfdpr_dispatch.comp);
 //   2. "view_generation": visibility splatting of depth and the point's triangle record
 //      into every view (lfdpr_visibility_shading, camera-line coherence);
 //   3. "resolve": one shading per visible view pixel, as mvr shades a fragment.
+// No step waits for the GPU (README "Frames that never wait"): the counters are copied into
+// a read-back slot behind a fence and read frames later (gl::GpuReadback). A frame whose
+// points overflowed the buffer is known then: the buffer grows for the next frames (stat
+// overflow_frames), and settle() tells a caller that reads the frame's outputs to render it
+// again.
 #include "renderer_lfdpr.h"
 
 #include "frame_stages.h"
 #include "frame_uniforms.h"
 #include "gpu_scene.h"
+#include "gpu_readback.h"
 #include "gpu_timer.h"
 #include "lfdpr_camera_line.h"
 #include "lfdpr_compute_points.h"
@@ -27,7 +33,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <deque>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace lfd::player {
@@ -36,11 +46,19 @@ namespace {
 
 using lfdpr_bindings::LfdprDrawGpu; // generated from shaders/lfdpr_bindings.glsl, checked by the layout test
 
+// A frame's read-back slot: its counters, then (32-bit path) the pixels it repaired.
+struct CountsSlot {
+    LfdprVisCountersGpu counters;
+    uint32_t repairs;
+};
+constexpr size_t kRepairsOffset = offsetof(CountsSlot, repairs);
+
 class LfdprVisibilityRenderer final : public LfdprRenderer {
 public:
     explicit LfdprVisibilityRenderer(const LfdprOptions& options)
-        : options_(options), k_(LfdprConstants::get()), pointGeneration_(options.pixelCentreCulling, options.cellScale),
-          shading_(lfdprUseInt64(options.atomics), options.testIndexRaces)
+        : options_(options), k_(LfdprConstants::get()), gpuWork_(lfdprGpuWorkShape(options.workShape)),
+          pointGeneration_(options.pixelCentreCulling, options.cellScale, gpuWork_),
+          shading_(lfdprUseInt64(options.atomics), gpuWork_, options.testIndexRaces)
     {
         GLint64 maxBlockBytes = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
@@ -50,6 +68,10 @@ public:
         pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
         points_ = gl::createBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
         counters_ = gl::createBuffer(k_.visCounterBytes, GL_DYNAMIC_STORAGE_BIT);
+        std::vector<std::string> dispatchDefines{"LFDPR_VISIBILITY_PIPELINE 1"};
+        if (gpuWork_)
+            dispatchDefines.emplace_back("LFDPR_WORK_GPU 1");
+        dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}}, dispatchDefines));
         frameUbo_ = gl::createBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
         lineUbo_ = gl::createBuffer(sizeof(LfdprCameraLineGpu), GL_DYNAMIC_STORAGE_BIT);
         dummy_ = gl::createBuffer(16);
@@ -87,76 +109,83 @@ public:
     void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets,
                 GpuTimer& timer) override
     {
-        // Step 1: buffers for this scene and these views; frame constants.
+        // Step 1: buffers for this scene and these views (grown after an overflow the
+        // read-back has reported); frame constants.
         if (targets.viewCount() != frame.profile.viewCount || targets.width() != frame.profile.viewWidth ||
             targets.height() != frame.profile.viewHeight)
             throw std::invalid_argument("lfdpr: view targets do not match the frame's profile");
         prepareScene(scene);
         shading_.resize(targets.viewCount(), targets.width(), targets.height());
+        readback_.poll([this](uint64_t tag, const uint8_t* bytes) { applyCounts(tag, bytes); });
         // note: points are sampled for frame.samplingFrame() (the display's views under
         // angular supersampling, so the cloud does not grow) and splatted into frame's.
         const FrameSetup& sampling = frame.samplingFrame();
         uniforms_.upload(sampling);
         uploadCameraLine(frame);
+        const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
+                                 (options_.textureSplatting ? k_.optionTextureSplatting : 0u);
+        const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options);
+        glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
 
-        // Step 2: point generation; grown and redone while the buffer overflows.
-        LfdprVisCountersGpu c{};
+        // Step 2: point generation, then the splat's dispatch from the count (GPU side);
+        // the counters go to a read-back slot.
+        const uint64_t tag = ++frameSerial_;
+        submitted_.push_back({tag, pointCapacity_});
         timer.begin(stage::kPointGeneration);
-        for (;;) {
-            const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
-                                     (options_.textureSplatting ? k_.optionTextureSplatting : 0u);
-            const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options);
-            glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
-            bindBuffers(scene);
-            const GLuint zero = 0;
-            glClearNamedBufferData(counters_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-            const GLuint noGroups[4] = {0, 1, 1, 0};
-            glClearNamedBufferData(largeDispatch_, GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, noGroups);
-            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-            pointGeneration_.run(scene, largeBase_, largeDispatch_);
-            c = readLfdprVisCounters(counters_);
-            if (c.pointCount <= pointCapacity_ || pointCapacity_ >= maxPointCapacity_)
-                break;
-            // note: never drop points silently: grow to the needed count * 1.25 and redo.
-            pointCapacity_ = uint32_t(std::min<double>(std::ceil(double(c.pointCount) * 1.25), double(maxPointCapacity_)));
-            points_ = gl::createBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
-            ++info_.regenerations;
-        }
+        bindBuffers(scene);
+        const GLuint zero = 0;
+        glClearNamedBufferData(counters_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        pointGeneration_.clearQueues();
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        pointGeneration_.run(scene);
+        glUseProgram(dispatchProgram_);
+        glDispatchCompute(1, 1, 1);
+        glUseProgram(0);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+        readback_.begin(tag);
+        readback_.copy(counters_, 0, 0, sizeof(LfdprVisCountersGpu));
         timer.end();
-        const uint32_t stored = std::min(c.pointCount, pointCapacity_);
         if (frame.pointSampling) {
             uniforms_.upload(frame);
-            const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
-                                     (options_.textureSplatting ? k_.optionTextureSplatting : 0u);
-            const LfdprFrameGpu constants = makeLfdprFrame(frame, pointCapacity_, options);
-            glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
+            const LfdprFrameGpu splatConstants = makeLfdprFrame(frame, pointCapacity_, options);
+            glNamedBufferSubData(frameUbo_, 0, sizeof(splatConstants), &splatConstants);
         }
 
         // Step 3: visibility, then shading once per visible pixel.
         bindBuffers(scene);
         bindSceneTexels(scene);
         timer.begin(stage::kViewGeneration);
-        shading_.splat(scene, texturedMaterials_, stored);
+        shading_.splat(scene, texturedMaterials_, counters_);
         timer.end();
         timer.begin(stage::kResolve);
-        info_.repairs = shading_.shade(scene, targets, stored);
+        shading_.shade(scene, targets);
         timer.end();
+        if (!shading_.int64()) {
+            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+            readback_.copy(shading_.repairBuffer(), LfdprVisibilityShading::repairCountOffset(), kRepairsOffset,
+                           sizeof(uint32_t));
+        }
+        readback_.end();
 
-        // Step 4: what happened.
-        info_.points = c.pointCount;
-        info_.pointsStored = stored;
-        info_.triangles = c.recordCount;
-        info_.trianglesOversized = c.oversizedCount;
-        trianglesCoarsened_ = c.coarsenedCount;
-        info_.trianglesLarge = c.largeCount;
+        // Step 4: what is known without the GPU's counts.
         info_.pointCapacity = pointCapacity_;
         info_.triangleCapacity = uint32_t(triangleCapacity_);
-        info_.overflowed = c.pointCount > pointCapacity_;
-        if (info_.overflowed)
-            ++info_.overflowFrames;
         info_.pointBufferBytes = uint64_t(pointCapacity_) * k_.compactPointBytes;
-        info_.triangleBufferBytes = triangleCapacity_ * (k_.recordBytes + sizeof(uint32_t));
+        info_.triangleBufferBytes = triangleCapacity_ * k_.recordBytes + pointGeneration_.bufferBytes();
         info_.viewBufferBytes = shading_.viewBufferBytes();
+    }
+
+    bool settle() override
+    {
+        readback_.waitAll([this](uint64_t tag, const uint8_t* bytes) { applyCounts(tag, bytes); });
+        // The last frame was whole unless it overflowed and the buffer has room now.
+        return !(info_.overflowed && lastCountedTag_ == frameSerial_ && pointCapacity_ > info_.pointCapacity);
+    }
+
+    uint64_t frameGpuBytes() const override
+    {
+        return uint64_t(pointCapacity_) * k_.compactPointBytes + triangleCapacity_ * k_.recordBytes +
+               pointGeneration_.bufferBytes() + shading_.viewBufferBytes() + shading_.shadeWorkBytes();
     }
 
     std::vector<std::pair<std::string, double>> extraStats() const override
@@ -172,7 +201,7 @@ public:
             {"shade_work_bytes", double(shading_.shadeWorkBytes())},
             {"point_capacity", double(info_.pointCapacity)},
             {"overflow_frames", double(info_.overflowFrames)},
-            {"point_regenerations", double(info_.regenerations)},
+            {"point_buffer_growths", double(info_.bufferGrowths)},
             {"index_repairs", double(info_.repairs)},
             {"atomics", info_.int64Atomics ? 1.0 : 0.0},
             {"triangles_emitting", double(info_.triangles)},
@@ -184,19 +213,56 @@ public:
             {"texture_splatting", options_.textureSplatting ? 1.0 : 0.0},
             {"pixel_centre_culling", options_.pixelCentreCulling ? 1.0 : 0.0},
             {"cell_scale", double(options_.cellScale)},
+            {"work_shape_gpu", gpuWork_ ? 1.0 : 0.0},
             {"pipeline_paper", 0.0},
         };
     }
 
 private:
+    // A frame's counters, come back from the GPU: the stats of that frame, and after an
+    // overflow a point buffer grown to 1.25 x the count (never dropping points silently:
+    // overflow_frames counts every frame that lost some, and settle() has the caller
+    // render the last frame again).
+    void applyCounts(uint64_t tag, const uint8_t* bytes)
+    {
+        CountsSlot slot;
+        std::memcpy(&slot, bytes, sizeof(slot));
+        uint32_t capacity = pointCapacity_;
+        while (!submitted_.empty() && submitted_.front().tag <= tag) {
+            if (submitted_.front().tag == tag)
+                capacity = submitted_.front().capacity;
+            submitted_.pop_front();
+        }
+        const LfdprVisCountersGpu& c = slot.counters;
+        lastCountedTag_ = tag;
+        info_.points = c.pointCount;
+        info_.pointsStored = std::min(c.pointCount, capacity);
+        info_.triangles = c.recordCount;
+        info_.trianglesOversized = c.oversizedCount;
+        trianglesCoarsened_ = c.coarsenedCount;
+        info_.trianglesLarge = c.largeCount;
+        info_.repairs = shading_.int64() ? 0 : slot.repairs;
+        info_.pointCapacity = capacity;
+        info_.overflowed = c.pointCount > capacity;
+        if (!info_.overflowed)
+            return;
+        ++info_.overflowFrames;
+        const uint32_t wanted =
+            uint32_t(std::min<double>(std::ceil(double(c.pointCount) * 1.25), double(maxPointCapacity_)));
+        if (wanted > pointCapacity_) {
+            pointCapacity_ = wanted;
+            points_ = gl::createBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
+            ++info_.bufferGrowths;
+        }
+    }
+
     // Per-scene tables: draws, the large-triangle list segments, records; the materials
     // that need a shading pass of their own (textured, drawn).
     void prepareScene(const GpuScene& scene)
     {
-        if (&scene == scene_ && scene.draws().size() == drawCount_)
+        if (scene.serial() == sceneSerial_)
             return;
-        scene_ = &scene;
-        drawCount_ = scene.draws().size();
+        sceneSerial_ = scene.serial();
         std::vector<LfdprDrawGpu> draws;
         largeBase_.clear();
         texturedMaterials_.clear();
@@ -220,9 +286,8 @@ private:
             throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
         triangleCapacity_ = std::max<uint64_t>(triangles, 1);
         records_ = gl::createBuffer(triangleCapacity_ * k_.recordBytes);
-        large_ = gl::createBuffer(triangleCapacity_ * sizeof(uint32_t));
-        largeDispatch_ = gl::createBuffer(std::max<size_t>(draws.size(), 1) * k_.largeDispatchBytes);
         draws_ = gl::createBuffer(draws.size() * sizeof(LfdprDrawGpu), 0, draws.empty() ? nullptr : draws.data());
+        pointGeneration_.prepare(scene);
     }
 
     static bool hasTextures(const Material& m)
@@ -258,8 +323,6 @@ private:
         ssbo(k_.ssboDraws, draws_);
         ssbo(k_.ssboPoints, points_);
         ssbo(k_.ssboRecords, records_);
-        ssbo(k_.ssboLarge, large_);
-        ssbo(k_.ssboLargeDispatch, largeDispatch_);
         ssbo(k_.ssboVisCounters, counters_);
         glBindBufferBase(GL_UNIFORM_BUFFER, k_.uboFrame, frameUbo_);
         glBindBufferBase(GL_UNIFORM_BUFFER, k_.uboCameraLine, lineUbo_);
@@ -290,15 +353,23 @@ private:
 
     LfdprOptions options_;
     const LfdprConstants& k_;
+    bool gpuWork_; // LFDPR_WORK_GPU for every program (lfdpr_work_shape.glsl)
     LfdprFrameInfo info_;
     FrameUniforms uniforms_;
     LfdprComputePointGeneration pointGeneration_;
     LfdprVisibilityShading shading_;
-    const GpuScene* scene_ = nullptr;
-    size_t drawCount_ = 0;
+    uint64_t sceneSerial_ = 0; // GpuScene::serial() of the scene the tables are for
     std::vector<uint32_t> largeBase_;
     std::vector<int32_t> texturedMaterials_;
-    gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, large_, largeDispatch_, draws_;
+    gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, draws_;
+    gl::Program dispatchProgram_; // lfdpr_dispatch.comp: the splat's arguments from the count
+    gl::GpuReadback readback_{sizeof(CountsSlot)};
+    struct Submitted {
+        uint64_t tag;
+        uint32_t capacity; // the point capacity the frame ran with
+    };
+    std::deque<Submitted> submitted_; // frames whose counts have not come back
+    uint64_t frameSerial_ = 0, lastCountedTag_ = 0;
     std::array<gl::Texture, 9> texels_; // buffer textures over the buffers above (bindSceneTexels)
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t triangleCapacity_ = 0, trianglesCoarsened_ = 0;

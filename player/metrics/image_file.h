@@ -1,0 +1,45 @@
+// Image files for the player's tools (lfd-play, lfd-bench, lfd-compare) and libraries:
+// decoding with stb_image and encoding with stb_image_write (Debian's libstb-dev headers,
+// compiled into image_file.cpp), so the player links no image library and runs on a
+// machine that has a GL driver and nothing else (README "Running the player on another
+// machine"; the baker keeps OpenImageIO for its textures).
+//
+// Read: PNG (8 and 16 bits), JPEG (baseline and progressive), BMP, TGA, GIF (first frame),
+// PSD (composited), HDR and PNM. Write: PNG, JPEG (quality 95), BMP, TGA, by extension.
+// Every error is one line naming the file and the problem (MetricsIoError); writes are
+// atomic (writeFileAtomically), so a failed write leaves nothing at the target or beside it.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <vector>
+
+namespace lfd::metrics {
+
+struct DecodedImage {
+    int width = 0;
+    int height = 0;
+    int channels = 0;       // 1 grey, 2 grey + alpha, 3 RGB, 4 RGBA, as stored
+    int bitsPerChannel = 8; // 8 (u8), 16 (u16) or 32 (f32: HDR, 1.0 = full scale)
+    std::vector<uint8_t> u8;
+    std::vector<uint16_t> u16;
+    std::vector<float> f32;
+};
+
+// Decodes `path`. keepDepth = false: every file as 8 bits per channel (16-bit samples
+// rounded, HDR tone-mapped by stb's default gamma); true: 16-bit PNG as u16 and HDR as f32.
+// Alpha stays as stored (straight, never premultiplied).
+DecodedImage decodeImageFile(const std::filesystem::path& path, bool keepDepth = false);
+
+// Encodes 8-bit interleaved pixels (1..4 channels, row 0 = top) in the format the
+// extension names, atomically.
+void encodeImageFile(const std::filesystem::path& path, const uint8_t* pixels, int width, int height,
+                     int channels);
+
+// Writes `bytes` to a uniquely named temporary file in `path`'s directory (rename is atomic
+// only within one file system) and renames it over `path`; on failure the temporary is
+// removed and MetricsIoError names `path` and the problem.
+void writeFileAtomically(const std::filesystem::path& path, std::span<const uint8_t> bytes);
+
+} // namespace lfd::metrics
