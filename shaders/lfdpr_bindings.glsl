@@ -153,8 +153,7 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_shade.comp: the material whose textures are bound
 #define LFDPR_LOC_LARGE_BASE 10    // first LFDPR_SSBO_LARGE slot of the dispatch class
 #define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_shade.comp: the shading group dispatched
-#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_dispatch.comp, lfdpr_shade_list.comp,
-                                   // lfdpr_repair_dispatch.comp: groups in use
+#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_list.comp, lfdpr_repair_dispatch.comp: groups in use
 #define LFDPR_LOC_LARGE_CLASS 13   // lfdpr_points.comp: the dispatch class (its LFDPR_SSBO_LARGE_DISPATCH entry)
 
 // Shading (lfdpr_shade_list.comp, lfdpr_shade.comp): view pixels are shaded in tiles of

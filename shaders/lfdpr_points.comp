@@ -135,6 +135,26 @@ uint writeRecord(uint primitive, Sampled t)
     return record;
 }
 
+// Reserves `count` points; returns the first. The splat's indirect dispatch
+// (vis.splatGroups*, lfdSplatGroups of the stored points) is kept covering every point
+// reserved so far, as monotone maxima of (x, y), so no pass after point generation has to
+// size it; only a reservation that crosses a workgroup boundary of points updates it
+// (a few in a hundred), since every reservation of a frame contends for these words.
+// splatGroupsZ is 1 from the renderer's clear.
+uint reservePoints(uint count)
+{
+    uint first = atomicAdd(vis.pointCount, count);
+    uint capacity = u_lfd.counts.y;
+    uint before = (min(first, capacity) + uint(LFDPR_GROUP_SIZE) - 1u) / uint(LFDPR_GROUP_SIZE);
+    uint after = (min(first + count, capacity) + uint(LFDPR_GROUP_SIZE) - 1u) / uint(LFDPR_GROUP_SIZE);
+    if (after > before) {
+        uvec3 groups = lfdSplatGroups(min(first + count, capacity), u_lfd.counts.x);
+        atomicMax(vis.splatGroupsX, groups.x);
+        atomicMax(vis.splatGroupsY, groups.y);
+    }
+    return first;
+}
+
 void countShape(Sampled t)
 {
     if (t.s.coarsened)
@@ -181,7 +201,7 @@ void main()
     if (count == 0u)
         return;
     uint record = writeRecord(primitive, t);
-    uint first = atomicAdd(vis.pointCount, count);
+    uint first = reservePoints(count);
     uint capacity = u_lfd.counts.y;
     for (uint y = 0u; y < ey; ++y)
         for (uint x = 0u; x < ex; ++x)
@@ -232,7 +252,7 @@ void main()
     // Step 3: one thread reserves the range and writes the record.
     if (gl_LocalInvocationIndex == 0u && s_count > 0u) {
         s_record = writeRecord(queued.y, t);
-        s_first = atomicAdd(vis.pointCount, s_count);
+        s_first = reservePoints(s_count);
     }
     barrier();
     if (s_count == 0u)

@@ -1,5 +1,5 @@
 #version 450 core
-// LFDPR shading, step 3 of 3 (the visibility pipeline): each view pixel that a point won
+// LFDPR shading, step 2 of 2 (the visibility pipeline): each view pixel that a point won
 // in lfdpr_visibility.comp is shaded once, as mvr shades a fragment - the same material
 // function (material_shading.glsl), the point's triangle interpolated perspective-correctly
 // at the pixel centre, and every texture fetched with textureGrad at the pixel's exact

@@ -1,5 +1,5 @@
 #version 450 core
-// LFDPR shading, step 1 of 3 (the visibility pipeline): each shading group's list of tile
+// LFDPR shading, step 1 of 2 (the visibility pipeline): each shading group's list of tile
 // chunks to shade. lfdpr_visibility.comp marked, per group and tile chunk (one
 // LFDPR_SHADE_TILE-square tile position over up to LFDPR_VIEW_CHUNK views), the views in
 // which a point of the group wrote a pixel there (LFDPR_SSBO_CHUNK_MASKS); every marked
@@ -19,6 +19,7 @@
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"
 #include "lfdpr_shade_chunks.glsl"
+#include "lfdpr_work_shape.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -54,7 +55,16 @@ void main()
     uvec2 mask = uvec2(chunkMasks[word], chunkMasks[word + 1u]);
     if (mask == uvec2(0u))
         return;
+    // The entry, and the group's indirect dispatch kept covering every entry so far: one
+    // workgroup per entry, LFDPR_SHADE_DISPATCH_WIDTH per row (monotone maxima, so the
+    // order of the entries does not matter), times the view slices of a chunk
+    // (lfdpr_work_shape.glsl), set by the first entry. The renderer cleared it to (0, 1, 0),
+    // which dispatches nothing.
     uint slot = atomicAdd(groupDispatch[group].w, 1u);
+    if (slot == 0u)
+        groupDispatch[group].z = lfdShadeSlices(u_lfd.counts.x);
+    atomicMax(groupDispatch[group].x, min(slot + 1u, uint(LFDPR_SHADE_DISPATCH_WIDTH)));
+    atomicMax(groupDispatch[group].y, slot / uint(LFDPR_SHADE_DISPATCH_WIDTH) + 1u);
     uint base = (group * entries + slot) * uint(LFDPR_SHADE_ENTRY_WORDS);
     groupTiles[base] = chunk;
     groupTiles[base + 1u] = mask.x;

@@ -55,11 +55,10 @@ uvec2 lfdShadeSliceMask(uint slice)
 }
 
 // The splat's workgroups: LFDPR_GROUP_SIZE consecutive points times every slice, spread
-// over y when x would exceed the guaranteed 65535 (at least one, so a frame without points
-// dispatches one empty workgroup; the splat checks the count).
+// over y when x would exceed the guaranteed 65535 (none for no points). Both x and y grow
+// monotonically with `points`, which lets point generation keep them as atomic maxima.
 uvec3 lfdSplatGroups(uint points, uint viewCount)
 {
     uint groups = (points + uint(LFDPR_GROUP_SIZE) - 1u) / uint(LFDPR_GROUP_SIZE) * lfdSplatSlices(viewCount);
-    uint x = min(groups, 65535u);
-    return uvec3(max(x, 1u), x == 0u ? 1u : (groups + x - 1u) / x, 1u);
+    return uvec3(min(groups, 65535u), (groups + 65534u) / 65535u, 1u);
 }

@@ -425,14 +425,11 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
     }
     out.push_back({"lfdpr index pass", {{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"},
                    visibilityBlocks()});
-    out.push_back({"lfdpr shade dispatch", {{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}, {}, visibilityBlocks()});
     out.push_back({"lfdpr shade list", {{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {}, visibilityBlocks()});
     out.push_back({"lfdpr shade list (repair)", {{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {"LFDPR_REPAIR_LIST 1"},
                    visibilityBlocks()});
     out.push_back({"lfdpr compute points (alpha test)", {{GL_COMPUTE_SHADER, "lfdpr_points.comp"}},
                    {"LFDPR_ALPHA_TEST 1"}, visibilityBlocks()});
-    out.push_back({"lfdpr visibility dispatch", {{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}},
-                   {"LFDPR_VISIBILITY_PIPELINE 1"}, visibilityBlocks()});
     out.push_back({"lfdpr repair dispatch", {{GL_COMPUTE_SHADER, "lfdpr_repair_dispatch.comp"}}, {},
                    visibilityBlocks()});
     // The GPU work shape (lfdpr_work_shape.glsl) declares the same blocks.
@@ -442,7 +439,7 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
     out.push_back({"lfdpr visibility (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {gpu},
                    visibilityBlocks()});
     out.push_back({"lfdpr shade (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, {gpu}, visibilityBlocks()});
-    out.push_back({"lfdpr shade dispatch (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_shade_dispatch.comp"}}, {gpu},
+    out.push_back({"lfdpr shade list (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {gpu},
                    visibilityBlocks()});
     return out;
 }

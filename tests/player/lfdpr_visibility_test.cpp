@@ -579,11 +579,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
         {"lfdpr_shade_list.comp", "comp", {}},
         {"lfdpr_shade_list.comp", "comp", {"LFDPR_REPAIR_LIST 1"}},
-        {"lfdpr_shade_dispatch.comp", "comp", {}},
-        {"lfdpr_dispatch.comp", "comp", {"LFDPR_VISIBILITY_PIPELINE 1"}},
         {"lfdpr_repair_dispatch.comp", "comp", {}},
         // The GPU work shape (lfdpr_work_shape.glsl) as a GPU runs it: with 64-bit atomics.
-        {"lfdpr_dispatch.comp", "comp", {"LFDPR_VISIBILITY_PIPELINE 1", "LFDPR_WORK_GPU 1"}},
         {"lfdpr_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_CELL_SCALE 2"}},
         {"lfdpr_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
         {"lfdpr_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_ALPHA_TEST 1", "LFDPR_LARGE_PASS 1"}},
@@ -593,7 +590,6 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
         {"lfdpr_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFD_TEXTURE_MASK 0x0u"}},
         {"lfdpr_shade_list.comp", "comp", {"LFDPR_WORK_GPU 1"}},
-        {"lfdpr_shade_dispatch.comp", "comp", {"LFDPR_WORK_GPU 1"}},
         {"lfdpr_repair_dispatch.comp", "comp", {"LFDPR_WORK_GPU 1"}},
     };
     const std::filesystem::path dir = testOutputDir("shader_variants");

@@ -139,7 +139,9 @@ void LfdprComputePointGeneration::run(const GpuScene& scene) const
         glDispatchComputeIndirect(GLintptr(i) * GLintptr(k.largeDispatchBytes));
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    // For the splat: the points (storage), its indirect dispatch (command); for the
+    // counters' read-back copy (buffer update).
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     glUseProgram(0);
 }
 

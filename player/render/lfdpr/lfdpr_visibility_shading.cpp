@@ -68,7 +68,6 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, uint32_
     listProgram_ = build("lfdpr_shade_list.comp", {});
     if (!int64)
         listRepairProgram_ = build("lfdpr_shade_list.comp", {"LFDPR_REPAIR_LIST 1"});
-    dispatchProgram_ = build("lfdpr_shade_dispatch.comp", {});
     if (!int64) {
         repairDispatchProgram_ = build("lfdpr_repair_dispatch.comp", {});
         repair_ = gl::createBuffer(LfdprConstants::get().repairBytes);
@@ -134,34 +133,50 @@ size_t LfdprVisibilityShading::shadeWorkBytes() const {
 
 size_t LfdprVisibilityShading::repairCountOffset() { return offsetof(LfdprRepairGpu, indexPass) + 12; }
 
-void LfdprVisibilityShading::splat(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
-                                   unsigned counters)
+void LfdprVisibilityShading::beginFrame(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
+                                        ViewTargets& targets)
 {
-    const LfdprConstants& k = LfdprConstants::get();
-    // Step 1: the shading groups (the splat marks where each group's points land); clear
-    // the marks, and the view words: all ones = empty (a depth key beyond every depth).
+    // The shading groups (the splat marks where each group's points land), then every
+    // clear of the frame: the marks, the view words (all ones = empty: a depth key beyond
+    // every depth), the shading's dispatches and the views' background. No barrier: the
+    // caller puts one after its own clears.
     updateGroups(scene, texturedMaterials);
-    const GLuint zero = 0;
+    const GLuint zero = 0, ones = 0xFFFFFFFFu;
     glClearNamedBufferData(chunkMasks_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
-    const GLuint ones = 0xFFFFFFFFu;
     glClearNamedBufferData(depth_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
     if (index_)
         glClearNamedBufferData(index_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+    clearShadeDispatches();
+    glClearTexImage(targets.colorArray(), 0, GL_RGBA, GL_FLOAT, kBackground);
+}
+
+// The shading counters and each group's indirect dispatch: (0, 1, 0) workgroups, entry
+// count 0 (lfdpr_shade_list.comp keeps x and y as maxima and sets z with the first entry).
+void LfdprVisibilityShading::clearShadeDispatches() const
+{
+    const GLuint empty[4] = {0u, 1u, 0u, 0u};
+    glClearNamedBufferSubData(shadeWork_, GL_RGBA32UI, kDispatchOffset, GLsizeiptr(groupCount_) * 16,
+                              GL_RGBA_INTEGER, GL_UNSIGNED_INT, empty);
+    const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprShadeCountersGpu
+    glNamedBufferSubData(shadeWork_, 0, sizeof(counters), counters);
+}
+
+void LfdprVisibilityShading::splat(unsigned counters)
+{
+    const LfdprConstants& k = LfdprConstants::get();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-
-    // Step 2: splat (the 32-bit path's index pass runs only to repair, in shade()).
-    splatPass(splatProgram_, counters);
+    // The 32-bit path's index pass runs only to repair, in shade().
+    splatPass(splatProgram_, counters, offsetof(LfdprVisCountersGpu, splatGroupsX));
 }
 
-void LfdprVisibilityShading::splatPass(unsigned program, unsigned counters) const
+void LfdprVisibilityShading::splatPass(unsigned program, unsigned arguments, size_t offset) const
 {
     glUseProgram(program);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters);
-    glDispatchComputeIndirect(offsetof(LfdprVisCountersGpu, splatGroupsX));
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, arguments);
+    glDispatchComputeIndirect(GLintptr(offset));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glUseProgram(0);
@@ -204,15 +219,10 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
 {
     const LfdprConstants& k = LfdprConstants::get();
 
-    // Step 1: empty lists and the counters, then each group's list of tile chunks from the
-    // splat's marks (pass 2: the repair list's chunks when it held them all, else all again;
-    // lfdpr_repair_dispatch.comp sized both, the one not needed to zero workgroups).
-    const GLuint zero = 0;
-    glClearNamedBufferSubData(shadeWork_, GL_R32UI, 0, kDispatchOffset + GLsizeiptr(groupCount_) * 16,
-                              GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprShadeCountersGpu
-    glNamedBufferSubData(shadeWork_, 0, sizeof(counters), counters);
-    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    // Step 1: each group's list of tile chunks from the splat's marks, and with it the
+    // group's indirect dispatch (lfdpr_shade_list.comp). Pass 2 (the repair): emptied
+    // again, then the repair list's chunks when it held them all, else all again
+    // (lfdpr_repair_dispatch.comp sized both, the one not needed to zero workgroups).
     for (const unsigned list : {listProgram_.get(), listRepairProgram_.get()})
         if (list) // the repair list exists on the 32-bit path only
             glProgramUniform1ui(list, k.locShadeGroups, groupCount_);
@@ -222,21 +232,19 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
         glUseProgram(listProgram_);
         glDispatchCompute(width, divideUp(workgroups, width), 1); // lfdpr_shade_list.comp's (x, y) order
     } else {
+        // note: the barrier orders the first pass's shader writes to these words before the
+        // clear; a clear itself is ordered with the dispatches after it.
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        clearShadeDispatches();
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, repair_);
         glUseProgram(listRepairProgram_);
         glDispatchComputeIndirect(offsetof(LfdprRepairGpu, listRepair));
         glUseProgram(listProgram_);
         glDispatchComputeIndirect(offsetof(LfdprRepairGpu, listAll));
     }
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-
-    // Step 2: each group's indirect dispatch from its entry count.
-    glUseProgram(dispatchProgram_);
-    glProgramUniform1ui(dispatchProgram_, k.locShadeGroups, groupCount_);
-    glDispatchCompute(divideUp(groupCount_, 64), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
-    // Step 3: one dispatch per group over its tile chunks, its textures bound. Each pixel
+    // Step 2: one dispatch per group over its tile chunks, its textures bound. Each pixel
     // is shaded only by its winner's group, so no barrier is needed between them.
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, shadeWork_);
     const uint32_t shared = k.maxShadeGroups - 1;
@@ -254,7 +262,6 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
         ++dispatches_;
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
     glUseProgram(0);
 }
 
@@ -264,41 +271,30 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
 void LfdprVisibilityShading::repair(const GpuScene& scene)
 {
     const LfdprConstants& k = LfdprConstants::get();
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboRepair, repair_);
     glUseProgram(repairDispatchProgram_);
     glProgramUniform1ui(repairDispatchProgram_, k.locShadeGroups, groupCount_);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    glUseProgram(indexProgram_);
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, repair_);
-    glDispatchComputeIndirect(offsetof(LfdprRepairGpu, indexPass));
-    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    splatPass(indexProgram_, repair_, offsetof(LfdprRepairGpu, indexPass));
     listAndShade(scene, 2);
 }
 
 void LfdprVisibilityShading::shade(const GpuScene& scene, ViewTargets& targets)
 {
     const LfdprConstants& k = LfdprConstants::get();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
-    if (index_)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboShadeWork, shadeWork_);
     glBindImageTexture(k.imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glBindTextureUnit(k.unitViewDepth, depthTexels_);
     glBindTextureUnit(k.unitViewIndex, index_ ? indexTexels_.get() : 0u);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
-    // The background everywhere first (a memset), then the shading overwrites covered pixels.
-    glClearTexImage(targets.colorArray(), 0, GL_RGBA, GL_FLOAT, kBackground);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
-                    GL_TEXTURE_FETCH_BARRIER_BIT);
     dispatches_ = 0;
     listAndShade(scene, 0);
     if (!int64_)
         repair(scene);
-    // The EIA pass samples the array, read-back copies it.
+    // The EIA pass samples the array, read-back copies it; the renderer copies counts.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 } // namespace lfd::player

@@ -1,10 +1,11 @@
 // LFDPR visibility splatting and per-pixel shading (the visibility pipeline;
-// shaders/lfdpr_visibility.comp, lfdpr_shade_list.comp, lfdpr_shade_dispatch.comp,
-// lfdpr_shade.comp): the per-view depth and winner (triangle record) buffers for either atomics path,
-// the splat pass(es), which also mark per shading group the tile chunks (a tile position
-// over a run of views) and views its points wrote, and shading in three steps - list each
-// group's marked chunks, size each group's dispatch on the GPU, then one indirect dispatch
-// per group over its chunks only, with a program compiled for that group's textures.
+// shaders/lfdpr_visibility.comp, lfdpr_shade_list.comp, lfdpr_shade.comp,
+// lfdpr_repair_dispatch.comp): the per-view depth and winner (triangle record) buffers for
+// either atomics path, the splat pass(es), which also mark per shading group the tile
+// chunks (a tile position over a run of views) and views its points wrote, and shading in
+// two steps - list each group's marked chunks (which sizes the group's indirect dispatch
+// on the GPU), then one indirect dispatch per group over its chunks only, with a program
+// compiled for that group's textures.
 #pragma once
 
 #include "gl_handles.h"
@@ -45,13 +46,17 @@ public:
     // The shading work: per group a dispatch, a list of tile chunks and the splat's marks.
     size_t shadeWorkBytes() const;
 
-    // Clears the view buffers and splats the points into every view (one pass on either
-    // path; an indirect dispatch from `counters`, the LfdprVisCountersGpu block whose
-    // splat arguments lfdpr_dispatch.comp wrote), marking for each shading group the tile
-    // chunks and views its points wrote. Shading groups: 0 = every untextured material,
-    // then one per textured material the scene draws with (`texturedMaterials`, scene
-    // material indices). The caller has bound the scene, the LFDPR buffers and the constants.
-    void splat(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, unsigned counters);
+    // Every clear of a frame, before point generation: the splat's marks, the view words,
+    // the shading's dispatches and the views' background (targets). Shading groups: 0 =
+    // every untextured material, then one per textured material the scene draws with
+    // (`texturedMaterials`, scene material indices). No barrier: the caller puts one after
+    // all its clears.
+    void beginFrame(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, ViewTargets& targets);
+    // Splats the points into every view (one pass on either path; an indirect dispatch from
+    // `counters`, the LfdprVisCountersGpu block whose splat arguments point generation
+    // kept), marking for each shading group the tile chunks and views its points wrote. The
+    // caller has bound the scene, the LFDPR buffers and the constants.
+    void splat(unsigned counters);
     // Shades every visible pixel into targets and writes the background elsewhere, one
     // dispatch per group over the chunks splat() marked for it. On the 32-bit path, pixels
     // whose record lost a race to a nearer point are repaired - the index pass over every
@@ -73,7 +78,8 @@ private:
         uint32_t gpuMaterial; // u_shadeMaterial
         uint32_t textureMask; // LFD_TEXTURE_MASK of its program
     };
-    void splatPass(unsigned program, unsigned counters) const;
+    void splatPass(unsigned program, unsigned arguments, size_t offset) const;
+    void clearShadeDispatches() const;
     void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
     // pass 0: every marked chunk; pass 2: after a repair, the chunks of the repaired pixels
     // when the repair list held them all, else every marked chunk again (both lists are
@@ -86,7 +92,7 @@ private:
     std::vector<std::string> defines_; // every program's: atomics path, work shape
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
     gl::Program listProgram_, listRepairProgram_; // lfdpr_shade_list.comp: marks, repair list
-    gl::Program dispatchProgram_, repairDispatchProgram_;
+    gl::Program repairDispatchProgram_;
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_; // 64-bit path: depth_ holds the words
     gl::Texture depthTexels_, indexTexels_; // the same, read as buffer textures

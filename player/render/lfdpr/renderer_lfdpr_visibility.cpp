@@ -1,8 +1,8 @@
 // lfdpr, the visibility pipeline (LfdprOptions::Pipeline::Visibility, the default): owns
 // its buffers and runs, per frame,
 //   1. "point_generation": compute point generation (lfdpr_compute_points) into 8-byte
-//      points and 16-byte triangle records, then the splat's dispatch arguments from the
-//      point count, on the GPU (lfdpr_dispatch.comp);
+//      points and 16-byte triangle records; as it reserves points it keeps the splat's
+//      indirect dispatch covering them (GPU side, no pass of its own);
 //   2. "view_generation": visibility splatting of depth and the point's triangle record
 //      into every view (lfdpr_visibility_shading, camera-line coherence);
 //   3. "resolve": one shading per visible view pixel, as mvr shades a fragment.
@@ -68,10 +68,6 @@ public:
         pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
         points_ = gl::createBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
         counters_ = gl::createBuffer(k_.visCounterBytes, GL_DYNAMIC_STORAGE_BIT);
-        std::vector<std::string> dispatchDefines{"LFDPR_VISIBILITY_PIPELINE 1"};
-        if (gpuWork_)
-            dispatchDefines.emplace_back("LFDPR_WORK_GPU 1");
-        dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}}, dispatchDefines));
         frameUbo_ = gl::createBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
         lineUbo_ = gl::createBuffer(sizeof(LfdprCameraLineGpu), GL_DYNAMIC_STORAGE_BIT);
         dummy_ = gl::createBuffer(16);
@@ -127,21 +123,20 @@ public:
         const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options);
         glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
 
-        // Step 2: point generation, then the splat's dispatch from the count (GPU side);
-        // the counters go to a read-back slot.
+        // Step 2: every clear of the frame, behind one barrier; point generation, which also
+        // sizes the splat's dispatch (GPU side); the counters go to a read-back slot.
         const uint64_t tag = ++frameSerial_;
         submitted_.push_back({tag, pointCapacity_});
         timer.begin(stage::kPointGeneration);
         bindBuffers(scene);
-        const GLuint zero = 0;
+        const GLuint zero = 0, one = 1;
         glClearNamedBufferData(counters_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        glClearNamedBufferSubData(counters_, GL_R32UI, offsetof(LfdprVisCountersGpu, splatGroupsZ), sizeof(GLuint),
+                                  GL_RED_INTEGER, GL_UNSIGNED_INT, &one);
         pointGeneration_.clearQueues();
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        shading_.beginFrame(scene, texturedMaterials_, targets);
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         pointGeneration_.run(scene);
-        glUseProgram(dispatchProgram_);
-        glDispatchCompute(1, 1, 1);
-        glUseProgram(0);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
         readback_.begin(tag);
         readback_.copy(counters_, 0, 0, sizeof(LfdprVisCountersGpu));
         timer.end();
@@ -155,13 +150,12 @@ public:
         bindBuffers(scene);
         bindSceneTexels(scene);
         timer.begin(stage::kViewGeneration);
-        shading_.splat(scene, texturedMaterials_, counters_);
+        shading_.splat(counters_);
         timer.end();
         timer.begin(stage::kResolve);
         shading_.shade(scene, targets);
         timer.end();
         if (!shading_.int64()) {
-            glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
             readback_.copy(shading_.repairBuffer(), LfdprVisibilityShading::repairCountOffset(), kRepairsOffset,
                            sizeof(uint32_t));
         }
@@ -362,7 +356,6 @@ private:
     std::vector<uint32_t> largeBase_;
     std::vector<int32_t> texturedMaterials_;
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, draws_;
-    gl::Program dispatchProgram_; // lfdpr_dispatch.comp: the splat's arguments from the count
     gl::GpuReadback readback_{sizeof(CountsSlot)};
     struct Submitted {
         uint64_t tag;
