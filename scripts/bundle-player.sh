@@ -27,7 +27,14 @@ shift
 for pack in "$@"; do
   [ -f "$pack" ] || { echo "bundle-player: $pack: no such pack file" >&2; exit 2; }
 done
-[ -x build/player/lfd-play ] && [ -x build/player/lfd-bench ] || bash scripts/build.sh
+# The build to bundle: ./build (made if missing), or LFD_BUILD_DIR.
+build="${LFD_BUILD_DIR:-build}"
+if [ -z "${LFD_BUILD_DIR:-}" ]; then
+  [ -x build/player/lfd-play ] && [ -x build/player/lfd-bench ] || bash scripts/build.sh
+fi
+for tool in lfd-play lfd-bench; do
+  [ -x "$build/player/$tool" ] || { echo "bundle-player: $build/player/$tool is missing (build first)" >&2; exit 1; }
+done
 
 # Step 1: a fresh folder, written beside the target and moved into place at the end, so an
 # interrupted run never leaves a half bundle.
@@ -38,7 +45,7 @@ mkdir -p "$tmp/libexec" "$tmp/lib/glvnd" "$tmp/packs"
 
 # Step 2: the tools, stripped (their shaders are embedded).
 for tool in lfd-play lfd-bench; do
-  strip --strip-unneeded -o "$tmp/libexec/$tool" "build/player/$tool"
+  strip --strip-unneeded -o "$tmp/libexec/$tool" "$build/player/$tool"
 done
 
 # Step 3: their shared libraries, except glibc's own (the target's must be used) and the
@@ -46,7 +53,7 @@ done
 # have a driver but no loader).
 skip='^(linux-vdso|ld-linux|libc\.so|libm\.so|libdl\.so|libpthread\.so|librt\.so|libresolv\.so|libEGL|libGL|libOpenGL|libGLX|libGLdispatch)'
 for tool in lfd-play lfd-bench; do
-  ldd "build/player/$tool" | awk '/=> \//{print $1, $3}'
+  ldd "$build/player/$tool" | awk '/=> \//{print $1, $3}'
 done | sort -u | while read -r name path; do
   if [[ "$name" =~ $skip ]]; then continue; fi
   cp -L "$path" "$tmp/lib/$name"

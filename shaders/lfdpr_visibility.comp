@@ -205,7 +205,13 @@ void main()
                     uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewPixels.x), viewCount);
                     wrote = true;
 #if defined(LFDPR_INT64)
-                    atomicMin(viewWords[pixel], (uint64_t(key) << 32) | uint64_t(record));
+                    // A plain read first: a word already nearer (or as near with a lower
+                    // record) makes the atomic a no-op, so it is skipped - most of them where
+                    // depth complexity is high. A stale read is never nearer than the word
+                    // (words only decrease), so nothing is skipped that would have won.
+                    uint64_t word = (uint64_t(key) << 32) | uint64_t(record);
+                    if (word < viewWords[pixel])
+                        atomicMin(viewWords[pixel], word);
 #elif defined(LFDPR_INDEX_PASS)
                     if (viewDepth[pixel] == key)
                         atomicMin(viewIndex[pixel], record);
