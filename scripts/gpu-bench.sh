@@ -9,11 +9,13 @@
 # Usage: bash gpu-bench.sh [FRAMES (default 20)] [OUTDIR (default ./gpu-bench-out in a
 # bundle, out/gpu-bench in the tree)]. Per scene OUTDIR/<scene>/bench.{json,csv}; the table
 # in OUTDIR/table.md (printed at the end; needs python3, else lfd-bench's own tables are
-# printed). Set LFD_BENCH_RENDERERS to time other renderers.
+# printed). LFD_BENCH_RENDERERS times other renderers, LFD_BENCH_WARMUP sets the warm-up
+# frames (default 5).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 frames="${1:-20}"
 renderers="${LFD_BENCH_RENDERERS:-mvr,mvr-layered,lfdpr,lfdpr-paper}"
+warmup="${LFD_BENCH_WARMUP:-5}"
 
 if [ -x "$here/libexec/lfd-bench" ]; then
   # Bundle: prebuilt packs.
@@ -57,7 +59,7 @@ for pack in "${packs[@]}"; do
     name=$scene
     [ "$v" = 48 ] || name="$scene-${v}v"
     echo "gpu-bench: $name ($v views)"
-    "$bench" "$pack" --renderers "$renderers" --reference mvr --frames "$frames" --warmup 5 --views "$v" \
+    "$bench" "$pack" --renderers "$renderers" --reference mvr --frames "$frames" --warmup "$warmup" --views "$v" \
       --view-size 480x360 --out "$out/$name" --quiet > "$out/$name.txt"
     runs+=("$name")
   done
