@@ -83,7 +83,7 @@ public:
 
     std::vector<uint32_t> pointsPerTriangle() const override
     {
-        // A point's record names (draw, primitive); largeBase_ holds each draw's first
+        // A point's record names (draw, primitive); drawFirstTriangle_ holds each draw's first
         // drawn triangle.
         std::vector<uint32_t> counts(size_t(triangleCapacity_), 0);
         std::vector<glm::uvec2> points(size_t(info_.pointsStored));
@@ -93,9 +93,9 @@ public:
         if (!records.empty())
             glGetNamedBufferSubData(records_, 0, GLsizeiptr(records.size() * sizeof(records[0])), records.data());
         for (const glm::uvec2& point : points) {
-            if (point.x >= records.size() || records[point.x].x >= largeBase_.size())
+            if (point.x >= records.size() || records[point.x].x >= drawFirstTriangle_.size())
                 continue;
-            const uint64_t triangle = uint64_t(largeBase_[records[point.x].x]) + records[point.x].y;
+            const uint64_t triangle = uint64_t(drawFirstTriangle_[records[point.x].x]) + records[point.x].y;
             if (triangle < counts.size())
                 ++counts[size_t(triangle)];
         }
@@ -161,8 +161,8 @@ public:
         }
         readback_.end();
 
-        // Step 4: what is known without the GPU's counts.
-        info_.pointCapacity = pointCapacity_;
+        // Step 4: what is known without the GPU's counts (the counts of a frame, and the
+        // capacity it ran with, come with them: applyCounts).
         info_.triangleCapacity = uint32_t(triangleCapacity_);
         info_.pointBufferBytes = uint64_t(pointCapacity_) * k_.compactPointBytes;
         info_.triangleBufferBytes = triangleCapacity_ * k_.recordBytes + pointGeneration_.bufferBytes();
@@ -250,15 +250,15 @@ private:
         }
     }
 
-    // Per-scene tables: draws, the large-triangle list segments, records; the materials
-    // that need a shading pass of their own (textured, drawn).
+    // Per-scene tables: draws, records, point generation's workgroups; the materials that
+    // need a shading pass of their own (textured, drawn).
     void prepareScene(const GpuScene& scene)
     {
         if (scene.serial() == sceneSerial_)
             return;
         sceneSerial_ = scene.serial();
         std::vector<LfdprDrawGpu> draws;
-        largeBase_.clear();
+        drawFirstTriangle_.clear();
         texturedMaterials_.clear();
         uint64_t triangles = 0;
         const bool hasUv = (scene.cpu().vertices.mask() & kStreamUv) != 0;
@@ -273,7 +273,7 @@ private:
         for (const DrawItem& d : scene.draws()) {
             const uint32_t material = scene.gpuMaterialIndex(d.material);
             draws.push_back({d.node, material, d.firstIndex / 3, groups[material]});
-            largeBase_.push_back(uint32_t(triangles));
+            drawFirstTriangle_.push_back(uint32_t(triangles));
             triangles += d.indexCount / 3;
         }
         if (triangles > 0xFFFFFFFFull)
@@ -353,7 +353,7 @@ private:
     LfdprComputePointGeneration pointGeneration_;
     LfdprVisibilityShading shading_;
     uint64_t sceneSerial_ = 0; // GpuScene::serial() of the scene the tables are for
-    std::vector<uint32_t> largeBase_;
+    std::vector<uint32_t> drawFirstTriangle_;
     std::vector<int32_t> texturedMaterials_;
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, draws_;
     gl::GpuReadback readback_{sizeof(CountsSlot)};
