@@ -8,25 +8,6 @@
 namespace lfd::bake::gltf {
 namespace {
 
-// note: accessors without a bufferView are all zeros (optionally patched by sparse
-// values), so their count is not bounded by any buffer. A 200-byte file declaring 2^28
-// such POSITIONs made the importer allocate over 3 GiB; 2^20 elements (at most 16 MiB of
-// floats) is far beyond what a zero-filled stream plausibly holds in a real asset.
-constexpr size_t kMaxUnbackedCount = size_t(1) << 20;
-
-int componentSize(int componentType)
-{
-    switch (componentType) {
-    case TINYGLTF_COMPONENT_TYPE_BYTE:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
-    case TINYGLTF_COMPONENT_TYPE_SHORT:
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
-    default: return 0; // INT and DOUBLE are not glTF 2.0 accessor types
-    }
-}
-
 int typeComponents(int type)
 {
     switch (type) {
@@ -35,20 +16,6 @@ int typeComponents(int type)
     case TINYGLTF_TYPE_VEC3: return 3;
     case TINYGLTF_TYPE_VEC4: return 4;
     default: return 0; // matrices are never read by the importer
-    }
-}
-
-std::string typeName(int type)
-{
-    switch (type) {
-    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
-    case TINYGLTF_TYPE_VEC2: return "VEC2";
-    case TINYGLTF_TYPE_VEC3: return "VEC3";
-    case TINYGLTF_TYPE_VEC4: return "VEC4";
-    case TINYGLTF_TYPE_MAT2: return "MAT2";
-    case TINYGLTF_TYPE_MAT3: return "MAT3";
-    case TINYGLTF_TYPE_MAT4: return "MAT4";
-    default: return "type " + std::to_string(type);
     }
 }
 
@@ -203,14 +170,47 @@ void visitComponents(const tinygltf::Model& model, const tinygltf::Accessor& acc
     }
 }
 
-void checkCountBacked(const tinygltf::Accessor& accessor, const std::string& file, const std::string& what)
+} // namespace
+
+int componentSize(int componentType)
 {
-    if (accessor.bufferView < 0 && accessor.count > kMaxUnbackedCount)
-        fail(file, what + ": accessor without bufferView has an implausible count " +
-                       std::to_string(accessor.count) + " (at most " + std::to_string(kMaxUnbackedCount) + ")");
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_SHORT:
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return 4;
+    default: return 0; // INT and DOUBLE are not glTF 2.0 accessor types
+    }
 }
 
-} // namespace
+std::string typeName(int type)
+{
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR: return "SCALAR";
+    case TINYGLTF_TYPE_VEC2: return "VEC2";
+    case TINYGLTF_TYPE_VEC3: return "VEC3";
+    case TINYGLTF_TYPE_VEC4: return "VEC4";
+    case TINYGLTF_TYPE_MAT2: return "MAT2";
+    case TINYGLTF_TYPE_MAT3: return "MAT3";
+    case TINYGLTF_TYPE_MAT4: return "MAT4";
+    default: return "type " + std::to_string(type);
+    }
+}
+
+std::string componentName(int componentType)
+{
+    switch (componentType) {
+    case TINYGLTF_COMPONENT_TYPE_BYTE: return "BYTE";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return "UNSIGNED_BYTE";
+    case TINYGLTF_COMPONENT_TYPE_SHORT: return "SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return "UNSIGNED_SHORT";
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return "UNSIGNED_INT";
+    case TINYGLTF_COMPONENT_TYPE_FLOAT: return "FLOAT";
+    default: return "componentType " + std::to_string(componentType);
+    }
+}
 
 std::string firstLine(const std::string& text)
 {
@@ -241,7 +241,6 @@ FloatArray readFloatAccessor(const tinygltf::Model& model, int accessorIndex,
         fail(file, where + ": unexpected accessor type " + typeName(accessor.type));
     if (componentSize(accessor.componentType) == 0)
         fail(file, where + ": unsupported component type " + std::to_string(accessor.componentType));
-    checkCountBacked(accessor, file, where);
 
     FloatArray out;
     out.components = typeComponents(accessor.type);
@@ -267,7 +266,6 @@ std::vector<uint32_t> readIndexAccessor(const tinygltf::Model& model, int access
     if (!isIndexComponent(accessor.componentType))
         fail(file, where + ": index component type " + std::to_string(accessor.componentType) +
                        " is not unsigned byte/short/int");
-    checkCountBacked(accessor, file, where);
 
     std::vector<uint32_t> out(accessor.count, 0u);
     const int componentType = accessor.componentType;

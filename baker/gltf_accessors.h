@@ -24,6 +24,12 @@ namespace lfd::bake::gltf {
 // First line of a (possibly multi-line) message, trailing whitespace removed.
 std::string firstLine(const std::string& text);
 
+// Bytes of one component (1, 2 or 4; 0 for a componentType glTF 2.0 accessors do not use).
+int componentSize(int componentType);
+// glTF's names of accessor types and component types, for messages.
+std::string typeName(int type);
+std::string componentName(int componentType);
+
 // Accessor contents as floats, `components` values per element. Normalized integer
 // components follow the glTF 2.0 decoding rules (e.g. ubyte c -> c / 255); other
 // integer components are converted as is (KHR_mesh_quantization). Sparse accessors

@@ -1,12 +1,15 @@
-// glTF 2.0 import stage: tinygltf parses the file, this file turns the model into an
-// lfd::Scene - object-space triangle lists, the node hierarchy (parents first), rigid
-// node animation, metallic-roughness materials and the sources of the textures they use.
+// glTF 2.0 import stage: the file is loaded and checked by gltf_load (container, schema,
+// resources, semantics and data, each finding with its JSON path), then this file turns
+// the model into an lfd::Scene - object-space triangle lists, the node hierarchy (parents
+// first), rigid node animation, metallic-roughness materials and the sources of the
+// textures they use.
 //
-// Memory: tinygltf never decodes an image here. A custom image loader records only
-// where the encoded bytes live (external files are not even read past their signature);
-// bakeTexture decodes one texture at a time later.
+// Memory: no image is decoded here. External image files are not even read past their
+// signature; bakeTexture decodes one texture at a time later.
 #include "bake.h"
 #include "gltf_accessors.h"
+#include "gltf_load.h"
+#include "gltf_resources.h"
 #include "gltf_validation.h"
 
 #include <glm/gtc/quaternion.hpp>
@@ -23,6 +26,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <span>
 
 namespace lfd::bake {
 namespace {
@@ -32,13 +36,17 @@ using gltf::fail;
 
 // ---- Warnings ----------------------------------------------------------------------
 
+// Warnings are held until the import has finished, then reported (flush): every error
+// the import finds is reported first, so under --strict (where a reported warning refuses
+// the input) the first line is the file's real defect, not an earlier warning.
 class Warnings {
 public:
     Warnings(const Log& log, std::vector<std::string>& out) : log_(log), out_(out) {}
-    void add(const std::string& message)
+    void add(const std::string& message) { out_.push_back(message); }
+    void flush() const
     {
-        out_.push_back(message);
-        log_.warn(message);
+        for (const std::string& message : out_)
+            log_.warn(message);
     }
     // One warning per `key`, however often the situation occurs.
     void once(const std::string& key, const std::string& message)
@@ -57,182 +65,42 @@ std::string quoted(const std::string& name) { return "'" + name + "'"; }
 
 unsigned char uchar(char c) { return static_cast<unsigned char>(c); }
 
+// Objects are named by their JSON path (as the validation names them) and their name.
+std::string named(const std::string& path, const std::string& name)
+{
+    return name.empty() ? path : path + " " + quoted(name);
+}
+
 std::string meshLabel(const tinygltf::Model& model, size_t mesh)
 {
-    const std::string& name = model.meshes[mesh].name;
-    return "mesh " + std::to_string(mesh) + (name.empty() ? "" : " " + quoted(name));
+    return named("meshes[" + std::to_string(mesh) + "]", model.meshes[mesh].name);
+}
+
+std::string primitiveLabel(const tinygltf::Model& model, size_t mesh, size_t primitive)
+{
+    return "meshes[" + std::to_string(mesh) + "].primitives[" + std::to_string(primitive) + "]" +
+           (model.meshes[mesh].name.empty() ? "" : " (" + quoted(model.meshes[mesh].name) + ")");
 }
 
 std::string nodeLabel(const tinygltf::Model& model, size_t node)
 {
-    const std::string& name = model.nodes[node].name;
-    return "node " + std::to_string(node) + (name.empty() ? "" : " " + quoted(name));
+    return named("nodes[" + std::to_string(node) + "]", model.nodes[node].name);
 }
 
 std::string materialLabel(const tinygltf::Model& model, size_t material)
 {
-    const std::string& name = model.materials[material].name;
-    return "material " + (name.empty() ? std::to_string(material) : quoted(name));
+    return named("materials[" + std::to_string(material) + "]", model.materials[material].name);
 }
 
 // ---- Loading -----------------------------------------------------------------------
 
-// KHR_mesh_quantization only widens accessor component types, which the accessor reader
-// handles; KHR_materials_emissive_strength folds into emissiveFactor.
-const std::set<std::string> kSupportedExtensions = {"KHR_mesh_quantization",
-                                                    "KHR_materials_emissive_strength"};
-
-
-// Shared with tinygltf's callbacks through their user-data pointer.
-struct LoadCapture {
-    std::map<int, std::vector<uint8_t>> dataUriImages; // image index -> encoded bytes
-    bool sniffImages = true;      // hand tinygltf only the signature of image files
-    size_t sniffedFiles = 0;
-};
-
-// Image "loader" that decodes nothing. External images are found again from
-// Image::uri and bufferView images are sliced (bounds-checked) from their buffer later;
-// only data-URI bytes exist nowhere else, so those are kept.
-bool captureImage(tinygltf::Image* image, const int imageIndex, std::string*, std::string*, int, int,
-                  const unsigned char* bytes, int size, void* user)
-{
-    auto* capture = static_cast<LoadCapture*>(user);
-    if (image->bufferView < 0 && image->uri.empty() && bytes != nullptr && size > 0)
-        capture->dataUriImages[imageIndex].assign(bytes, bytes + size);
-    image->as_is = true;
-    return true;
-}
-
-// tinygltf reads every external image file whole before calling the image loader. For
-// files that start with a PNG/JPEG signature only the signature is returned, so a 16K
-// texture is not read at import time. A buffer (.bin) that happens to start with such a
-// signature fails tinygltf's size check; the importer then reloads without sniffing.
-bool readFileSniffingImages(std::vector<unsigned char>* out, std::string* err, const std::string& path,
-                            void* user)
-{
-    auto* capture = static_cast<LoadCapture*>(user);
-    if (capture->sniffImages) {
-        std::ifstream in(path, std::ios::binary);
-        std::array<unsigned char, 8> head{};
-        in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
-        const size_t n = size_t(in.gcount());
-        static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-        const bool isPng = n == 8 && std::memcmp(head.data(), png, 8) == 0;
-        const bool isJpeg = n >= 3 && head[0] == 0xFF && head[1] == 0xD8 && head[2] == 0xFF;
-        if (isPng || isJpeg) {
-            out->assign(head.begin(), head.begin() + std::ptrdiff_t(n));
-            ++capture->sniffedFiles;
-            return true;
-        }
-    }
-    return tinygltf::ReadWholeFile(out, err, path, nullptr);
-}
-
-bool hasGlbMagic(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    char magic[4] = {};
-    in.read(magic, 4);
-    return in.gcount() == 4 && std::memcmp(magic, "glTF", 4) == 0;
-}
-
-// extensionsRequired of the raw JSON, for files that tinygltf rejects before we see them:
-// a Draco-compressed file has accessors without bufferViews, which tinygltf reports as an
-// invalid bufferView.
-std::vector<std::string> requiredExtensionsOf(const nlohmann::json& document)
-{
-    std::vector<std::string> names;
-    if (document.is_object() && document.contains("extensionsRequired") &&
-        document["extensionsRequired"].is_array())
-        for (const nlohmann::json& name : document["extensionsRequired"])
-            if (name.is_string())
-                names.push_back(name.get<std::string>());
-    return names;
-}
-
-void failOnUnsupportedRequiredExtension(const nlohmann::json& document, const std::string& file)
-{
-    for (const std::string& name : requiredExtensionsOf(document))
-        if (!kSupportedExtensions.count(name))
-            fail(file, "requires unsupported extension " + name);
-}
-
-// Strict schema validation of the raw JSON before tinygltf (which silently drops or
-// defaults what it cannot read): errors refuse the file, warnings are reported.
-void validateSchema(const nlohmann::json& document, const std::string& file, Warnings& warnings)
-{
-    const std::vector<gltf::SchemaIssue> issues = gltf::validateGltfSchema(document);
-    size_t errors = 0;
-    const gltf::SchemaIssue* first = nullptr;
-    for (const gltf::SchemaIssue& issue : issues)
-        if (issue.severity == gltf::SchemaIssue::Severity::Error && errors++ == 0)
-            first = &issue;
-    if (first != nullptr) {
-        // An unsupported required extension explains the rest (e.g. Draco accessors).
-        failOnUnsupportedRequiredExtension(document, file);
-        fail(file, first->text() +
-                       (errors > 1 ? " (and " + std::to_string(errors - 1) + " more schema errors)" : ""));
-    }
-    for (const gltf::SchemaIssue& issue : issues)
-        warnings.add(issue.text());
-}
-
-tinygltf::Model loadModel(const fs::path& path, const std::string& file, LoadCapture& capture,
-                          Warnings& warnings)
-{
-    std::error_code ec;
-    if (!fs::exists(path, ec))
-        fail(file, "file not found");
-    if (fs::is_directory(path, ec))
-        fail(file, "is a directory, not a glTF file");
-    const bool binary = hasGlbMagic(path);
-    const std::optional<nlohmann::json> document = gltf::readGltfJson(path, binary, file);
-    if (document)
-        validateSchema(*document, file, warnings);
-
-    for (;;) {
-        tinygltf::TinyGLTF loader;
-        loader.SetImageLoader(&captureImage, &capture);
-        loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readFileSniffingImages,
-                               &tinygltf::WriteWholeFile, &capture});
-        tinygltf::Model model;
-        std::string err;
-        std::string warn;
-        const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path.string())
-                               : loader.LoadASCIIFromFile(&model, &err, &warn, path.string());
-        if (ok) {
-            // tinygltf only warns about image files it could not read; the importer
-            // checks the images it actually uses itself (and fails on missing ones).
-            size_t start = 0;
-            while (start < warn.size()) {
-                const size_t end = std::min(warn.find('\n', start), warn.size());
-                const std::string line = gltf::firstLine(warn.substr(start, end - start));
-                if (!line.empty())
-                    warnings.add("tinygltf: " + line);
-                start = end + 1;
-            }
-            return model;
-        }
-        if (capture.sniffImages && capture.sniffedFiles > 0) {
-            capture = LoadCapture{};
-            capture.sniffImages = false;
-            continue;
-        }
-        if (document)
-            failOnUnsupportedRequiredExtension(*document, file);
-        fail(file, !err.empty() ? err : !warn.empty() ? warn : "tinygltf could not load the file");
-    }
-}
-
 // ---- Extensions --------------------------------------------------------------------
 
-void checkExtensions(const tinygltf::Model& model, const std::string& file, Warnings& warnings)
+// The optional extensions the baker ignores (gltf_load refused unsupported required ones).
+void checkExtensions(const tinygltf::Model& model, Warnings& warnings)
 {
-    for (const std::string& name : model.extensionsRequired)
-        if (!kSupportedExtensions.count(name))
-            fail(file, "requires unsupported extension " + name);
     for (const std::string& name : model.extensionsUsed) {
-        if (kSupportedExtensions.count(name))
+        if (gltf::supportedExtensions().count(name))
             continue;
         if (name == "KHR_materials_pbrSpecularGlossiness")
             warnings.add("ignores optional extension " + name + " (uses the metallic-roughness data)");
@@ -411,21 +279,6 @@ Node convertNode(const tinygltf::Model& model, size_t source, const std::string&
 
 // ---- Materials and texture sources -----------------------------------------------
 
-std::string percentDecode(const std::string& uri)
-{
-    std::string out;
-    for (size_t i = 0; i < uri.size(); ++i) {
-        if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(uchar(uri[i + 1])) &&
-            std::isxdigit(uchar(uri[i + 2]))) {
-            out.push_back(char(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
-            i += 2;
-        } else {
-            out.push_back(uri[i]);
-        }
-    }
-    return out;
-}
-
 std::string mimeFromExtension(const fs::path& file, const std::string& fallback)
 {
     std::string ext = file.extension().string();
@@ -437,11 +290,23 @@ std::string mimeFromExtension(const fs::path& file, const std::string& fallback)
     return fallback;
 }
 
+// A data URI's image without "mimeType": named by its signature (validation has checked
+// that the URI's media type is image/png or image/jpeg).
+std::string mimeFromSignature(std::span<const uint8_t> bytes)
+{
+    if (bytes.size() >= 8 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G')
+        return "image/png";
+    if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff)
+        return "image/jpeg";
+    return {};
+}
+
 class TextureTable {
 public:
-    TextureTable(const tinygltf::Model& model, const fs::path& gltfPath, const std::string& file,
-                 const LoadCapture& capture, Warnings& warnings)
-        : model_(model), baseDir_(gltfPath.parent_path()), file_(file), capture_(capture), warnings_(warnings)
+    TextureTable(const gltf::LoadedGltf& loaded, const fs::path& gltfPath, const std::string& file,
+                 Warnings& warnings)
+        : model_(loaded.model), dataImages_(loaded.dataImages), baseDir_(gltfPath.parent_path()), file_(file),
+          warnings_(warnings)
     {
     }
 
@@ -487,18 +352,20 @@ private:
         TextureSource source;
         source.srgb = srgb;
         source.mimeType = image.mimeType;
-        const std::string label = "image " + std::to_string(imageIndex);
+        const std::string label = "images[" + std::to_string(imageIndex) + "]";
         if (image.bufferView >= 0) {
             const std::span<const uint8_t> bytes = gltf::bufferViewBytes(model_, image.bufferView, file_, label);
             source.encoded.assign(bytes.begin(), bytes.end());
+        } else if (auto it = dataImages_.find(imageIndex); it != dataImages_.end()) {
+            source.encoded = it->second; // copied: the image may also be used in the other colour space
+            if (source.mimeType.empty())
+                source.mimeType = mimeFromSignature(source.encoded);
         } else if (!image.uri.empty()) {
-            source.file = baseDir_ / percentDecode(image.uri);
+            source.file = baseDir_ / gltf::percentDecode(image.uri);
             std::error_code ec;
             if (!fs::is_regular_file(source.file, ec))
-                fail(file_, "image file " + source.file.string() + " (used by " + slot + ") not found");
+                fail(file_, label + ".uri: image file " + source.file.string() + " (used by " + slot + ") not found");
             source.mimeType = mimeFromExtension(source.file, image.mimeType);
-        } else if (auto it = capture_.dataUriImages.find(int(imageIndex)); it != capture_.dataUriImages.end()) {
-            source.encoded = it->second; // copied: the image may also be used in the other colour space
         } else {
             fail(file_, label + " (used by " + slot + ") has no data");
         }
@@ -511,9 +378,9 @@ private:
     }
 
     const tinygltf::Model& model_;
+    const std::map<size_t, std::vector<uint8_t>>& dataImages_;
     fs::path baseDir_;
     std::string file_;
-    const LoadCapture& capture_;
     Warnings& warnings_;
     std::map<std::pair<int, bool>, int32_t> entries_;
     std::vector<TextureSource> sources_;
@@ -616,8 +483,39 @@ std::vector<Vec> gather(const gltf::FloatArray& a, const std::vector<uint32_t>& 
     return out;
 }
 
+// Why accessor `a`'s bytes are not in the file, or "": a buffer without a uri is valid glTF
+// (its bytes are "provided by other means", e.g. by an extension the baker does not read),
+// but the baker has nothing to bake from it.
+std::string bytesNotInFile(const gltf::LoadedGltf& loaded, int a)
+{
+    const tinygltf::Model& model = loaded.model;
+    if (a < 0 || size_t(a) >= model.accessors.size())
+        return {};
+    const tinygltf::Accessor& acc = model.accessors[size_t(a)];
+    for (int v : {acc.bufferView, acc.sparse.isSparse ? acc.sparse.indices.bufferView : -1,
+                  acc.sparse.isSparse ? acc.sparse.values.bufferView : -1}) {
+        if (v < 0 || size_t(v) >= model.bufferViews.size())
+            continue;
+        const int b = model.bufferViews[size_t(v)].buffer;
+        if (b >= 0 && loaded.buffersWithoutData.count(size_t(b)))
+            return "accessors[" + std::to_string(a) + "] lies in buffers[" + std::to_string(b) +
+                   "], which has no uri: its bytes are not in the file";
+    }
+    return {};
+}
+
+// Whether the file holds accessor a's data (not: a buffer without a uri, or neither a
+// bufferView nor sparse data).
+bool hasData(const gltf::LoadedGltf& loaded, int a)
+{
+    if (a < 0 || size_t(a) >= loaded.model.accessors.size() || loaded.accessorsWithoutData.count(size_t(a)))
+        return false;
+    return bytesNotInFile(loaded, a).empty();
+}
+
 // Where a primitive's data comes from, and the names its errors and warnings use.
 struct PrimitiveSource {
+    const gltf::LoadedGltf& loaded;
     const tinygltf::Model& model;
     const tinygltf::Primitive& prim;
     const std::string& label;
@@ -638,8 +536,8 @@ gltf::FloatArray readPositions(const PrimitiveSource& src)
     const int positionAccessor = attributeAccessor(src.prim, "POSITION");
     if (positionAccessor < 0)
         fail(src.file, src.label + " has no POSITION attribute");
-    gltf::FloatArray positions =
-        gltf::readFloatAccessor(src.model, positionAccessor, {TINYGLTF_TYPE_VEC3}, src.file, src.label + " POSITION");
+    gltf::FloatArray positions = gltf::readFloatAccessor(src.model, positionAccessor, {TINYGLTF_TYPE_VEC3}, src.file,
+                                                         src.label + ".attributes.POSITION");
     for (size_t i = 0; i < positions.values.size(); ++i)
         if (!std::isfinite(positions.values[i]))
             fail(src.file, src.label + " POSITION " + std::to_string(i / 3) + " is not finite (NaN or infinity)");
@@ -652,7 +550,7 @@ std::vector<uint32_t> readIndices(const PrimitiveSource& src)
     const size_t vertexCount = src.vertexCount;
     std::vector<uint32_t> indices;
     if (src.prim.indices >= 0) {
-        indices = gltf::readIndexAccessor(src.model, src.prim.indices, src.file, src.label + " indices");
+        indices = gltf::readIndexAccessor(src.model, src.prim.indices, src.file, src.label + ".indices");
         for (size_t i = 0; i < indices.size(); ++i)
             if (indices[i] >= vertexCount)
                 fail(src.file, src.label + " index " + std::to_string(i) + " (value " + std::to_string(indices[i]) +
@@ -704,9 +602,10 @@ std::vector<uint32_t> selectVertices(bool hasNormals, size_t vertexCount, std::v
 // A per-vertex float attribute, which must have as many elements as POSITION.
 gltf::FloatArray readAttribute(const PrimitiveSource& src, int accessor, int type, const char* name)
 {
-    gltf::FloatArray a = gltf::readFloatAccessor(src.model, accessor, {type}, src.file, src.label + " " + name);
+    gltf::FloatArray a =
+        gltf::readFloatAccessor(src.model, accessor, {type}, src.file, src.label + ".attributes." + name);
     if (a.count != src.vertexCount)
-        fail(src.file, src.label + " " + name + " has " + std::to_string(a.count) + " elements but POSITION has " +
+        fail(src.file, src.label + ".attributes." + name + " has " + std::to_string(a.count) + " elements but POSITION has " +
                            std::to_string(src.vertexCount));
     return a;
 }
@@ -752,20 +651,17 @@ void readNormals(const PrimitiveSource& src, const std::vector<uint32_t>& vertex
 }
 
 // Step 6: uvs, when the scene stores them (zeros for primitives that have none).
-void readUvs(const PrimitiveSource& src, const std::vector<uint32_t>& vertexSource, const Material* material,
-             PrimitiveData& out, Warnings& warnings)
+void readUvs(const PrimitiveSource& src, const std::vector<uint32_t>& vertexSource, PrimitiveData& out)
 {
     const int uvAccessor = attributeAccessor(src.prim, "TEXCOORD_0");
-    const bool textured = material != nullptr && hasAnyTexture(*material);
     if (uvAccessor >= 0) {
         out.uvs = gather<glm::vec2>(readAttribute(src, uvAccessor, TINYGLTF_TYPE_VEC2, "TEXCOORD_0"), vertexSource);
         for (const glm::vec2& uv : out.uvs)
             if (!std::isfinite(uv.x) || !std::isfinite(uv.y))
                 fail(src.file, src.label + " TEXCOORD_0 has a non-finite value");
     } else {
+        // Without TEXCOORD_0 a textured material samples uv (0, 0); validation warned.
         out.uvs.assign(out.positions.size(), glm::vec2(0.0f));
-        if (textured)
-            warnings.add(src.label + " has a textured material but no TEXCOORD_0: uvs set to zero");
     }
 }
 
@@ -807,11 +703,21 @@ void warnIgnoredAttributes(const tinygltf::Primitive& prim, Warnings& warnings)
 }
 
 // One triangle primitive's streams, or nothing (with a warning) when it has no triangles.
-std::optional<PrimitiveData> readPrimitive(const tinygltf::Model& model, const tinygltf::Primitive& prim,
+std::optional<PrimitiveData> readPrimitive(const gltf::LoadedGltf& loaded, const tinygltf::Primitive& prim,
                                            const std::string& label, const Material* material, StreamNeeds needs,
                                            const std::string& file, Warnings& warnings)
 {
-    PrimitiveSource src{model, prim, label, file};
+    // A primitive whose geometry lies in a buffer without bytes is skipped, not refused: the
+    // rest of the file still bakes.
+    std::vector<std::pair<std::string, int>> streams{{".indices", prim.indices}};
+    for (const auto& [name, accessor] : prim.attributes)
+        streams.emplace_back(".attributes." + name, accessor);
+    for (const auto& [what, accessor] : streams)
+        if (const std::string why = bytesNotInFile(loaded, accessor); !why.empty()) {
+            warnings.add(label + what + ": " + why + ": primitive skipped");
+            return std::nullopt;
+        }
+    PrimitiveSource src{loaded, loaded.model, prim, label, file};
     const gltf::FloatArray positions = readPositions(src);
     src.vertexCount = positions.count;
     const std::vector<uint32_t> indices = readIndices(src);
@@ -828,7 +734,7 @@ std::optional<PrimitiveData> readPrimitive(const tinygltf::Model& model, const t
     out.triangles = std::move(triangles);
     readNormals(src, vertexSource, out, warnings);
     if (needs.uv)
-        readUvs(src, vertexSource, material, out, warnings);
+        readUvs(src, vertexSource, out);
     if (needs.tangent)
         readTangents(src, vertexSource, material, out, warnings);
     warnIgnoredAttributes(prim, warnings);
@@ -837,13 +743,14 @@ std::optional<PrimitiveData> readPrimitive(const tinygltf::Model& model, const t
 
 // ---- Animations --------------------------------------------------------------------
 
-std::optional<AnimationChannel> convertChannel(const tinygltf::Model& model, const tinygltf::Animation& anim,
+std::optional<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, const tinygltf::Animation& anim,
                                                const tinygltf::AnimationChannel& ch, const std::string& animLabel,
                                                size_t channelIndex,
                                                const NodeOrder& order, const std::string& file,
                                                Warnings& warnings, const Log& log)
 {
-    const std::string label = animLabel + " channel " + std::to_string(channelIndex);
+    const tinygltf::Model& model = loaded.model;
+    const std::string label = animLabel + ".channels[" + std::to_string(channelIndex) + "]";
     AnimationChannel out;
     if (ch.target_path == "translation")
         out.path = AnimationPath::Translation;
@@ -884,6 +791,15 @@ std::optional<AnimationChannel> convertChannel(const tinygltf::Model& model, con
     } else
         fail(file, label + " has unknown interpolation " + quoted(sampler.interpolation));
 
+    // An animation whose keys or values the file does not hold (a buffer without a uri, an
+    // accessor without a bufferView or sparse data: an extension would supply them) is left
+    // out rather than baked from zeros.
+    for (const auto& [accessor, what] : {std::pair{sampler.input, "input"}, std::pair{sampler.output, "output"}})
+        if (!hasData(loaded, accessor)) {
+            warnings.add(label + ": its sampler's " + what + " (accessors[" + std::to_string(accessor) +
+                         "]) has no data in the file: channel ignored");
+            return std::nullopt;
+        }
     // Key times: finite, strictly increasing, at least one.
     const gltf::FloatArray input =
         gltf::readFloatAccessor(model, sampler.input, {TINYGLTF_TYPE_SCALAR}, file, label + " input");
@@ -1035,16 +951,17 @@ void appendPrimitive(const PrimitiveData& data, int32_t material, const std::str
 }
 
 // Step 5 for one glTF mesh: one lfd::Mesh, its triangle primitives contiguous.
-void importMesh(const tinygltf::Model& model, size_t m, const std::vector<int32_t>& materialIndex,
+void importMesh(const gltf::LoadedGltf& loaded, size_t m, const std::vector<int32_t>& materialIndex,
                 StreamNeeds needs, const std::string& file, Warnings& warnings, Scene& scene)
 {
+    const tinygltf::Model& model = loaded.model;
     const tinygltf::Mesh& gmesh = model.meshes[m];
     Mesh mesh;
     mesh.name = gmesh.name.empty() ? "mesh " + std::to_string(m) : gmesh.name;
     mesh.firstPrimitive = uint32_t(scene.primitives.size());
     for (size_t p = 0; p < gmesh.primitives.size(); ++p) {
         const tinygltf::Primitive& prim = gmesh.primitives[p];
-        const std::string label = meshLabel(model, m) + " primitive " + std::to_string(p);
+        const std::string label = primitiveLabel(model, m, p);
         if (!checkTriangleMode(prim, label, file, warnings))
             continue;
         if (!prim.targets.empty())
@@ -1052,7 +969,7 @@ void importMesh(const tinygltf::Model& model, size_t m, const std::vector<int32_
                           meshLabel(model, m) + " has morph targets: ignored (base pose used)");
         const int32_t material = prim.material >= 0 ? materialIndex[size_t(prim.material)] : kNone;
         const std::optional<PrimitiveData> data =
-            readPrimitive(model, prim, label, material != kNone ? &scene.materials[size_t(material)] : nullptr,
+            readPrimitive(loaded, prim, label, material != kNone ? &scene.materials[size_t(material)] : nullptr,
                           needs, file, warnings);
         if (data)
             appendPrimitive(*data, material, file, scene);
@@ -1079,17 +996,18 @@ void importNodes(const tinygltf::Model& model, const NodeOrder& order, const std
 }
 
 // Step 7: rigid node animation (animations left without a channel are dropped).
-void importAnimations(const tinygltf::Model& model, const NodeOrder& order, const std::string& file,
+void importAnimations(const gltf::LoadedGltf& loaded, const NodeOrder& order, const std::string& file,
                       Warnings& warnings, const Log& log, Scene& scene)
 {
+    const tinygltf::Model& model = loaded.model;
     for (size_t a = 0; a < model.animations.size(); ++a) {
         const tinygltf::Animation& anim = model.animations[a];
         Animation out;
         out.name = anim.name.empty() ? "animation " + std::to_string(a) : anim.name;
-        const std::string label = "animation " + (anim.name.empty() ? std::to_string(a) : quoted(anim.name));
+        const std::string label = named("animations[" + std::to_string(a) + "]", anim.name);
         for (size_t c = 0; c < anim.channels.size(); ++c) {
             if (std::optional<AnimationChannel> channel =
-                    convertChannel(model, anim, anim.channels[c], label, c, order, file, warnings, log))
+                    convertChannel(loaded, anim, anim.channels[c], label, c, order, file, warnings, log))
                 out.channels.push_back(std::move(*channel));
         }
         if (!out.channels.empty())
@@ -1122,6 +1040,41 @@ void logImportSummary(const Scene& scene, const Log& log)
              " animation channels");
 }
 
+// Steps 1-8 of the import into result (warnings held in `warnings`).
+void importInto(const std::filesystem::path& path, const std::string& file, const Log& log, Warnings& warnings,
+                ImportedScene& result)
+{
+    Scene& scene = result.scene;
+    // Step 1: load and check the whole document (no image decoding); its warnings first.
+    std::vector<gltf::SchemaIssue> issues;
+    const gltf::LoadedGltf loaded = gltf::loadGltf(path, file, issues);
+    for (const gltf::SchemaIssue& issue : issues)
+        warnings.add(issue.text());
+    const tinygltf::Model& model = loaded.model;
+    checkExtensions(model, warnings);
+
+    const NodeOrder order = orderNodes(model, file);
+    const MeshSelection meshes = selectMeshes(model, order, file);
+
+    // Step 3: materials used by triangle primitives of those meshes, and their textures.
+    std::vector<int32_t> materialIndex = usedMaterials(model, meshes.meshSources, file);
+    TextureTable textures(loaded, path, file, warnings);
+    convertMaterials(model, materialIndex, textures, file, scene);
+
+    const StreamNeeds needs = streamNeeds(scene.materials);
+    // Step 5: geometry, one lfd::Mesh per instanced glTF mesh, primitives contiguous.
+    for (size_t m : meshes.meshSources)
+        importMesh(loaded, m, materialIndex, needs, file, warnings, scene);
+    if (scene.indices.empty())
+        fail(file, "contains no triangles to import");
+
+    importNodes(model, order, meshes.meshIndex, file, warnings, scene);
+    importAnimations(loaded, order, file, warnings, log, scene);
+    addTextures(textures, result);
+    scene.triangleStats.clear();
+    result.sourceTriangles = scene.triangleCount();
+}
+
 } // namespace
 
 ImportedScene importGltf(const std::filesystem::path& path, const Log& log)
@@ -1131,31 +1084,19 @@ ImportedScene importGltf(const std::filesystem::path& path, const Log& log)
     Scene& scene = result.scene;
     Warnings warnings(log, result.warnings);
 
-    // Step 1: parse (no image decoding) and check the extensions the file requires.
-    LoadCapture capture;
-    const tinygltf::Model model = loadModel(path, file, capture, warnings);
-    checkExtensions(model, file, warnings);
-
-    const NodeOrder order = orderNodes(model, file);
-    const MeshSelection meshes = selectMeshes(model, order, file);
-
-    // Step 3: materials used by triangle primitives of those meshes, and their textures.
-    std::vector<int32_t> materialIndex = usedMaterials(model, meshes.meshSources, file);
-    TextureTable textures(model, path, file, capture, warnings);
-    convertMaterials(model, materialIndex, textures, file, scene);
-
-    const StreamNeeds needs = streamNeeds(scene.materials);
-    // Step 5: geometry, one lfd::Mesh per instanced glTF mesh, primitives contiguous.
-    for (size_t m : meshes.meshSources)
-        importMesh(model, m, materialIndex, needs, file, warnings, scene);
-    if (scene.indices.empty())
-        fail(file, "contains no triangles to import");
-
-    importNodes(model, order, meshes.meshIndex, file, warnings, scene);
-    importAnimations(model, order, file, warnings, log, scene);
-    addTextures(textures, result);
-    scene.triangleStats.clear();
-    result.sourceTriangles = scene.triangleCount();
+    try {
+        importInto(path, file, log, warnings, result);
+    } catch (const BakeError&) {
+        // The warnings found before the error are reported with it - after it under
+        // --strict, where reporting a warning refuses the input, so the error stays the
+        // one named.
+        try {
+            warnings.flush();
+        } catch (const BakeError&) {
+        }
+        throw;
+    }
+    warnings.flush();
     logImportSummary(scene, log);
     return result;
 }

@@ -71,19 +71,6 @@ int componentCount(const std::string& type)
     return 0;
 }
 
-int componentBytes(int64_t componentType)
-{
-    switch (componentType) {
-    case 5120:
-    case 5121: return 1;
-    case 5122:
-    case 5123: return 2;
-    case 5125:
-    case 5126: return 4;
-    default: return 0;
-    }
-}
-
 // Attribute semantics of glTF 2.0 section 3.7.2.1 "Overview"; application-specific ones
 // start with an underscore.
 bool knownAttributeName(const std::string& name)
@@ -101,7 +88,7 @@ bool knownAttributeName(const std::string& name)
 
 class Validator {
 public:
-    explicit Validator(const json& root) : root_(root) {}
+    explicit Validator(const json& root) : root_(root) { findUsedAccessors(); }
 
     std::vector<SchemaIssue> run()
     {
@@ -124,9 +111,9 @@ public:
         forEach("samplers", kWarn, [this](const json& s, const std::string& p) { sampler(s, p); });
         forEach("images", kError, [this](const json& i, const std::string& p) { image(i, p); });
         forEach("animations", kError, [this](const json& a, const std::string& p) { animation(a, p); });
-        // Read by nobody: only their shape is checked.
-        forEach("cameras", kWarn, [this](const json& c, const std::string& p) { common(c, p); });
-        forEach("skins", kWarn, [this](const json& s, const std::string& p) { common(s, p); });
+        // Read by nobody: checked as warnings (the baker goes on without them).
+        forEach("cameras", kWarn, [this](const json& c, const std::string& p) { camera(c, p); });
+        forEach("skins", kWarn, [this](const json& s, const std::string& p) { skin(s, p); });
         common(root_, "");
         return std::move(issues_);
     }
@@ -326,6 +313,10 @@ private:
         const json* list = array(root_, key, "", s);
         if (list == nullptr)
             return;
+        // The schema's minItems 1: an empty top-level array should be left out. Nothing in
+        // it can be wrong, so the baker goes on.
+        if (list->empty())
+            report(kWarn, key, "empty array (the schema requires at least one element, or none at all): ignored");
         for (size_t i = 0; i < list->size(); ++i) {
             const std::string path = at(std::string(key), i);
             if (!(*list)[i].is_object())
@@ -392,12 +383,13 @@ private:
                     continue;
                 }
                 const std::string& name = v.get_ref<const std::string&>();
-                if (!seen.insert(name).second)
-                    report(kWarn, at(std::string(key), i), "\"" + name + "\" listed twice");
+                if (!seen.insert(name).second) // the schema's uniqueItems
+                    report(kError, at(std::string(key), i), "\"" + name + "\" listed twice");
                 if (std::strcmp(key, "extensionsUsed") == 0)
                     used.insert(name);
                 else if (!used.count(name))
-                    report(kWarn, at(std::string(key), i), "\"" + name + "\" is not in extensionsUsed");
+                    // Section 3.12: every required extension "MUST also be listed in extensionsUsed".
+                    report(kError, at(std::string(key), i), "\"" + name + "\" is not in extensionsUsed");
             }
         }
     }
@@ -405,6 +397,8 @@ private:
     void scene(const json& s, const std::string& path)
     {
         if (const json* nodes = array(s, "nodes", path, kError)) {
+            if (nodes->empty())
+                report(kWarn, at(path, "nodes"), "empty array (the schema requires at least one node, or no nodes property)");
             std::set<size_t> seen;
             for (size_t i = 0; i < nodes->size(); ++i)
                 if (auto n = index((*nodes)[i], at(at(path, "nodes"), i), "nodes", kError); n && !seen.insert(*n).second)
@@ -441,9 +435,10 @@ private:
                 report(kWarn, at(path, "rotation"),
                        "not a unit quaternion (length " + json(std::sqrt(len2)).dump() + "): normalised");
         }
-        // Section 3.5.2 "Transformations": matrix or TRS, not both.
+        // Section 3.5.2 "Transformations": "a matrix or any combination of TRS", not both.
+        // (A matrix that is not TRS: gltf_semantics.cpp.)
         if (matrix != nullptr && (rotation != nullptr || scale != nullptr || translation != nullptr))
-            report(kWarn, at(path, "matrix"), "given together with translation/rotation/scale: the matrix is used");
+            report(kError, at(path, "matrix"), "given together with translation/rotation/scale (a node has one or the other)");
         common(n, path);
     }
 
@@ -490,28 +485,65 @@ private:
         common(p, path);
     }
 
+    // The accessors a mesh or an animation reads: an enum value the baker cannot interpret
+    // in one of these refuses the file; in any other (which nothing reads) it is a warning,
+    // as glTF-Validator reports unknown enum values.
+    void findUsedAccessors()
+    {
+        auto add = [&](const json& v) {
+            if (v.is_number_integer() || v.is_number_unsigned())
+                usedAccessors_.insert(v.get<int64_t>());
+        };
+        auto list = [&](const char* key) -> const json& {
+            static const json empty = json::array();
+            const json* v = root_.is_object() ? member(root_, key) : nullptr;
+            return v != nullptr && v->is_array() ? *v : empty;
+        };
+        for (const json& m : list("meshes"))
+            if (const json* prims = m.is_object() ? member(m, "primitives") : nullptr; prims && prims->is_array())
+                for (const json& p : *prims) {
+                    if (!p.is_object())
+                        continue;
+                    for (const char* key : {"attributes", "indices"})
+                        if (const json* v = member(p, key))
+                            for (const json& a : v->is_object() ? *v : json::array({*v}))
+                                add(a);
+                    if (const json* targets = member(p, "targets"); targets && targets->is_array())
+                        for (const json& t : *targets)
+                            if (t.is_object())
+                                for (const auto& [name, a] : t.items())
+                                    add(a);
+                }
+        for (const json& anim : list("animations"))
+            if (const json* samplers = anim.is_object() ? member(anim, "samplers") : nullptr; samplers && samplers->is_array())
+                for (const json& smp : *samplers)
+                    for (const char* key : {"input", "output"})
+                        if (const json* v = smp.is_object() ? member(smp, key) : nullptr)
+                            add(*v);
+    }
+
     void accessor(const json& a, const std::string& path)
     {
         const bool hasView = indexMember(a, "bufferView", path, "bufferViews", kError).has_value();
         const std::optional<int64_t> offset = integer(a, "byteOffset", path, kError, false, 0);
+        const size_t index = size_t(std::stoul(path.substr(path.find('[') + 1)));
+        const Severity readable = usedAccessors_.count(int64_t(index)) ? kError : kWarn;
         const std::optional<int64_t> componentType =
-            enumInteger(a, "componentType", path, {5120, 5121, 5122, 5123, 5125, 5126}, kError, true);
+            enumInteger(a, "componentType", path, {5120, 5121, 5122, 5123, 5125, 5126}, readable, true);
         integer(a, "count", path, kError, true, 1);
         const std::optional<std::string> type = enumString(
-            a, "type", path, {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"}, kError, true, "");
+            a, "type", path, {"SCALAR", "VEC2", "VEC3", "VEC4", "MAT2", "MAT3", "MAT4"}, readable, true,
+            readable == kWarn ? ": nothing reads the accessor" : "");
         if (const json* normalized = boolean(a, "normalized", path, kError);
             normalized != nullptr && normalized->get<bool>() && componentType &&
             (*componentType == 5125 || *componentType == 5126))
             // Section 5.1.6 "accessor.normalized": MUST NOT be true for FLOAT or UNSIGNED_INT.
             report(kError, at(path, "normalized"), "must not be true for componentType " +
                                                         std::to_string(*componentType));
-        if (offset && *offset != 0 && !member(a, "bufferView"))
-            report(kWarn, at(path, "byteOffset"), "given without bufferView: ignored");
-        // Section 3.6.2.4 "Data Alignment": the offset is a multiple of the component size.
-        if (offset && componentType && *offset % componentBytes(*componentType) != 0)
-            report(kWarn, at(path, "byteOffset"), std::to_string(*offset) + " is not a multiple of the " +
-                                                      std::to_string(componentBytes(*componentType)) +
-                                                      "-byte component size: read unaligned");
+        // Section 5.1.2 "accessor.byteOffset": "MUST NOT be defined when bufferView is
+        // undefined". (Its alignment: gltf_semantics.cpp, with the buffer view's offset.)
+        if (offset && !member(a, "bufferView"))
+            report(kError, at(path, "byteOffset"), "given without bufferView");
         const size_t components = type ? size_t(componentCount(*type)) : 0;
         for (const char* bound : {"min", "max"})
             numbers(a, bound, path, components, kWarn);
@@ -547,24 +579,16 @@ private:
 
     void bufferView(const json& v, const std::string& path)
     {
-        const std::optional<size_t> buffer = indexMember(v, "buffer", path, "buffers", kError, true);
-        const std::optional<int64_t> offset = integer(v, "byteOffset", path, kError, false, 0);
-        const std::optional<int64_t> length = integer(v, "byteLength", path, kError, true, 1);
+        // (The view lying inside its buffer: gltf_semantics.cpp, an error where it is read.)
+        indexMember(v, "buffer", path, "buffers", kError, true);
+        integer(v, "byteOffset", path, kError, false, 0);
+        integer(v, "byteLength", path, kError, true, 1);
+        // Section 5.11.4 "bufferView.byteStride": 4 to 252, a multiple of 4.
         if (auto stride = integer(v, "byteStride", path, kError, false, 4, 252); stride && *stride % 4 != 0)
-            report(kWarn, at(path, "byteStride"), std::to_string(*stride) + " is not a multiple of 4: used as is");
-        enumInteger(v, "target", path, {34962, 34963}, kWarn);
-        // The view lies inside its buffer (section 5.11 "bufferView.byteLength").
-        if (buffer && length) {
-            const json& b = root_.at("buffers").at(*buffer);
-            const json* bufferLength = b.is_object() ? member(b, "byteLength") : nullptr;
-            if (bufferLength != nullptr && bufferLength->is_number() &&
-                double(offset.value_or(0)) + double(*length) > bufferLength->get<double>())
-                // A warning: reading it would fail (the accessor reads are bounds-checked),
-                // but a file may carry views nothing uses.
-                report(kWarn, path, "byteOffset " + std::to_string(offset.value_or(0)) + " + byteLength " +
-                                        std::to_string(*length) + " exceeds buffers[" + std::to_string(*buffer) +
-                                        "].byteLength " + describe(*bufferLength) + ": unusable");
-        }
+            report(kError, at(path, "byteStride"), std::to_string(*stride) + " is not a multiple of 4");
+        // Section 5.11.4: byteStride is for vertex data; an index buffer view has none.
+        if (enumInteger(v, "target", path, {34962, 34963}, kWarn) == 34963 && member(v, "byteStride") != nullptr)
+            report(kError, at(path, "byteStride"), "defined for a buffer view of index data (target 34963)");
         common(v, path);
     }
 
@@ -658,6 +682,56 @@ private:
         common(i, path);
     }
 
+    // Section 5.12 "camera" (unread by the baker: warnings).
+    void camera(const json& c, const std::string& path)
+    {
+        const std::optional<std::string> type =
+            enumString(c, "type", path, {"perspective", "orthographic"}, kWarn, true, ": camera ignored");
+        for (const char* kind : {"perspective", "orthographic"}) {
+            const json* p = object(c, kind, path, kWarn);
+            if (p == nullptr) {
+                if (type && *type == kind)
+                    report(kWarn, at(path, kind), "required for a camera of type " + *type + ", missing: camera ignored");
+                continue;
+            }
+            const std::string pp = at(path, kind);
+            if (!type || *type != kind)
+                report(kWarn, pp, std::string("given for a camera of another type: camera ignored"));
+            const json* znear = typed(*p, "znear", pp, kWarn, true, [](const json& v) { return v.is_number(); }, "a number");
+            const json* zfar = typed(*p, "zfar", pp, kWarn, std::strcmp(kind, "orthographic") == 0,
+                                     [](const json& v) { return v.is_number(); }, "a number");
+            if (znear && zfar && !(zfar->get<double>() > znear->get<double>()))
+                report(kWarn, pp, "zfar is not greater than znear: camera ignored");
+            if (std::strcmp(kind, "perspective") == 0) {
+                if (const json* yfov = typed(*p, "yfov", pp, kWarn, true, [](const json& v) { return v.is_number(); }, "a number");
+                    yfov && !(yfov->get<double>() > 0))
+                    report(kWarn, at(pp, "yfov"), "must be greater than 0: camera ignored");
+                if (znear && !(znear->get<double>() > 0))
+                    report(kWarn, at(pp, "znear"), "must be greater than 0: camera ignored");
+            } else {
+                for (const char* mag : {"xmag", "ymag"})
+                    if (const json* m = typed(*p, mag, pp, kWarn, true, [](const json& v) { return v.is_number(); }, "a number");
+                        m && m->get<double>() == 0)
+                        report(kWarn, at(pp, mag), "must not be zero: camera ignored");
+            }
+        }
+        common(c, path);
+    }
+
+    // Section 5.28 "skin" (skinning is not baked: warnings).
+    void skin(const json& s, const std::string& path)
+    {
+        indexMember(s, "inverseBindMatrices", path, "accessors", kWarn);
+        indexMember(s, "skeleton", path, "nodes", kWarn);
+        if (const json* joints = array(s, "joints", path, kWarn, true)) {
+            if (joints->empty())
+                report(kWarn, at(path, "joints"), "empty array (a skin has at least one joint)");
+            for (size_t i = 0; i < joints->size(); ++i)
+                index((*joints)[i], at(at(path, "joints"), i), "nodes", kWarn);
+        }
+        common(s, path);
+    }
+
     void animation(const json& a, const std::string& path)
     {
         size_t samplerCount = 0;
@@ -705,6 +779,7 @@ private:
 
     const json& root_;
     std::vector<SchemaIssue> issues_;
+    std::set<int64_t> usedAccessors_;
 };
 
 } // namespace

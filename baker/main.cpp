@@ -57,12 +57,12 @@ int bakeScene(const Options& o)
 {
     BakeReport report;
     Log log;
+    const std::string file = o.input.string();
     if (o.strict) {
         // --strict: the first warning (schema or otherwise) refuses the input.
-        const std::string file = o.input.string();
         log.warn = [file](const std::string& s) { throw BakeError(file + ": " + s + " (--strict)"); };
     } else {
-        log.warn = [](const std::string& s) { std::cerr << "warning: " << s << "\n"; };
+        log.warn = [file](const std::string& s) { std::cerr << "warning: " << file << ": " << s << "\n"; };
     }
     if (!o.quiet)
         log.info = [](const std::string& s) { std::cout << s << "\n" << std::flush; };

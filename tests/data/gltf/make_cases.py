@@ -48,8 +48,9 @@ class Gltf:
         if normalized:
             a["normalized"] = True
         if minmax:
-            a["min"] = [min(v[i] for v in values) for i in range(len(values[0]))]
-            a["max"] = [max(v[i] for v in values) for i in range(len(values[0]))]
+            rows = [v if isinstance(v, (list, tuple)) else [v] for v in values]
+            a["min"] = [min(v[i] for v in rows) for i in range(len(rows[0]))]
+            a["max"] = [max(v[i] for v in rows) for i in range(len(rows[0]))]
         self.doc["accessors"].append(a)
         return len(self.doc["accessors"]) - 1
 
@@ -63,8 +64,9 @@ class Gltf:
         fmt = {UBYTE: "B", USHORT: "H", UINT: "I"}[component]
         return self.accessor(fmt, idx, "SCALAR", component, ELEMENT_ARRAY_BUFFER)
 
-    def scalars(self, v):
-        return self.accessor("f", v, "SCALAR", FLOAT)
+    def times(self, v):
+        """Animation key times: glTF requires their min and max."""
+        return self.accessor("f", v, "SCALAR", FLOAT, minmax=True)
 
     def image(self, png):
         self.doc.setdefault("images", []).append(
@@ -144,7 +146,7 @@ def hierarchy():
                       {"name": "orphan", "translation": [9, 9, 9]}]
     g.doc["scenes"] = [{"nodes": [1]}]
     g.doc["scene"] = 0
-    t = g.scalars([0.0, 1.0])
+    t = g.times([0.0, 1.0])
     v = g.vec3([(0.0, 0.0, 5.0), (0.0, 0.0, 6.0)])
     g.doc["animations"] = [{"name": "move", "samplers": [{"input": t, "output": v, "interpolation": "STEP"}],
                             "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}},
@@ -224,7 +226,7 @@ def cubic_spline():
     g = Gltf()
     g.doc["meshes"] = [{"primitives": [{"attributes": unit_triangle(g)}]}]
     g.single_node_scene()
-    t = g.scalars([0.0, 2.0])
+    t = g.times([0.0, 2.0])
     v = g.vec3([(9.0, 9.0, 9.0), (1.0, 2.0, 3.0), (-9.0, -9.0, -9.0),
                 (7.0, 7.0, 7.0), (4.0, 5.0, 6.0), (-7.0, -7.0, -7.0)])
     r = g.accessor("ffff", [(0.0, 0.0, 0.0, 2.0), (0.0, 0.0, 2.0, 0.0)], "VEC4", FLOAT)
@@ -240,7 +242,7 @@ def bad_key_times():
     g = Gltf()
     g.doc["meshes"] = [{"primitives": [{"attributes": unit_triangle(g)}]}]
     g.single_node_scene()
-    t = g.scalars([0.0, 1.0, 1.0])
+    t = g.times([0.0, 1.0, 1.0])
     v = g.vec3([(0.0, 0.0, 0.0)] * 3)
     g.doc["animations"] = [{"samplers": [{"input": t, "output": v}],
                             "channels": [{"sampler": 0, "target": {"node": 0, "path": "translation"}}]}]
@@ -311,7 +313,7 @@ def interleaved_sparse():
 
 
 def schema_warnings():
-    # Schema violations a sensible bake survives (README "Strict validation"): a metallic
+    # Schema violations a sensible bake survives (README "Validation"): a metallic
     # factor above 1 (clamped), a node name that is a number (ignored). lfd-bake warns;
     # lfd-bake --strict refuses the file.
     g = Gltf()

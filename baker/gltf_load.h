@@ -1,0 +1,46 @@
+// Loading a glTF file for the import stage (internal to the baker): the baker checks the
+// whole document itself, in this order, before anything is converted - the container
+// (gltf_container.h), the JSON, the schema of every property the baker reads
+// (gltf_validation.h), the buffers and images the URIs name (gltf_resources.h), then the
+// document's semantics and data (gltf_semantics.h). tinygltf only parses JSON that has
+// passed, with every buffer's bytes handed to it from memory, so its own messages never
+// reach the user. Every finding names the file and a JSON path (README "Validation").
+#pragma once
+
+#include "gltf_validation.h"
+
+#include <tiny_gltf.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace lfd::bake::gltf {
+
+struct LoadedGltf {
+    tinygltf::Model model;
+    // Images given by data URIs, decoded (image index -> encoded bytes): tinygltf holds
+    // none of them.
+    std::map<size_t, std::vector<uint8_t>> dataImages;
+    // Buffers whose bytes the file does not hold (no uri: "provided by other means"). The
+    // importer skips a primitive that needs them, with a warning naming what needed them.
+    std::set<size_t> buffersWithoutData;
+    // Accessors without a bufferView and without sparse data: zeros, "unless an extension
+    // overrides them" (section 3.6.2.3), so what they stand for is not in the file.
+    std::set<size_t> accessorsWithoutData;
+};
+
+// The extensions the baker honours when a file requires them: KHR_mesh_quantization
+// (wider accessor component types, which the accessor reader handles) and
+// KHR_materials_emissive_strength (folded into emissiveFactor).
+const std::set<std::string>& supportedExtensions();
+
+// Loads `path`. When any check finds an error, throws BakeError naming `file` and the first
+// error in check order (with the number of others); otherwise returns the model and appends
+// every warning found to `warnings`.
+LoadedGltf loadGltf(const std::filesystem::path& path, const std::string& file, std::vector<SchemaIssue>& warnings);
+
+} // namespace lfd::bake::gltf
