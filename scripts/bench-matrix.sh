@@ -20,23 +20,8 @@ warmup="${2:-1}"
 bash scripts/setup.sh
 [ -x build/player/lfd-bench ] || bash scripts/build.sh
 out=out/bench-matrix
-mkdir -p "$out/packs"
-./build/samples/lfd-make-samples "$out/samples" --scene all --quiet
-./build/samples/lfd-make-samples "$out/samples" --scene dense --quiet
-packs=()
-for s in car gallery room dense; do
-  ./build/baker/lfd-bake "$out/samples/$s/$s.gltf" -o "$out/packs/$s.lfdpack" --quiet
-  packs+=("$out/packs/$s.lfdpack")
-done
-if [ -d ../shared/scenes ]; then
-  for dir in ../shared/scenes/*/; do
-    name=$(basename "$dir")
-    gltf=$(ls "$dir"*.gltf "$dir"*.glb 2>/dev/null | head -n 1 || true)
-    [ -n "$gltf" ] || continue
-    ./build/baker/lfd-bake "$gltf" -o "$out/packs/$name.lfdpack" --quiet
-    packs+=("$out/packs/$name.lfdpack")
-  done
-fi
+baked=$(bash scripts/bake-bench-scenes.sh "$out") # a failed bake stops here (set -e)
+mapfile -t packs <<<"$baked"
 # shellcheck disable=SC2086
 ./build/player/lfd-bench "${packs[@]}" --renderers mvr,lfdpr --ss 1,2v,2s --aa none,view-spatial \
   --frames "$frames" --warmup "$warmup" --out "$out/run" ${LFD_BENCH_FLAGS:-} || status=$?

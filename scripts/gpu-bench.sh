@@ -29,23 +29,8 @@ else
   [ -x build/player/lfd-bench ] || bash scripts/build.sh
   bench=build/player/lfd-bench
   out="${2:-out/gpu-bench}"
-  mkdir -p "$out/packs"
-  ./build/samples/lfd-make-samples "$out/samples" --scene all --quiet
-  ./build/samples/lfd-make-samples "$out/samples" --scene dense --quiet
-  packs=()
-  for s in car gallery room dense; do
-    ./build/baker/lfd-bake "$out/samples/$s/$s.gltf" -o "$out/packs/$s.lfdpack" --quiet
-    packs+=("$out/packs/$s.lfdpack")
-  done
-  if [ -d ../shared/scenes ]; then
-    for dir in ../shared/scenes/*/; do
-      name=$(basename "$dir")
-      gltf=$(ls "$dir"*.gltf 2>/dev/null | head -n 1 || true)
-      [ -n "$gltf" ] || continue
-      ./build/baker/lfd-bake "$gltf" -o "$out/packs/$name.lfdpack" --quiet
-      packs+=("$out/packs/$name.lfdpack")
-    done
-  fi
+  baked=$(bash scripts/bake-bench-scenes.sh "$out") # a failed bake stops here (set -e)
+  mapfile -t packs <<<"$baked"
 fi
 mkdir -p "$out"
 

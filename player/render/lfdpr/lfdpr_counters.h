@@ -6,9 +6,39 @@
 
 #include "lfdpr_bindings_gpu.h"
 
+#include <cstdint>
+#include <deque>
+
 namespace lfd::player {
 
 using lfdpr_bindings::LfdprCountersGpu;
 using lfdpr_bindings::LfdprVisCountersGpu;
+
+// The point capacity each submitted frame ran with, kept until its counters come back
+// (frames later): a count is judged against the capacity of its own frame, not the one
+// the buffer has grown to since.
+class LfdprFrameCapacities {
+public:
+    void submitted(uint64_t tag, uint32_t capacity) { frames_.push_back({tag, capacity}); }
+    // The capacity frame `tag` ran with (`fallback` if it was never submitted); forgets it
+    // and every older frame (their counters come back in order).
+    uint32_t counted(uint64_t tag, uint32_t fallback)
+    {
+        uint32_t capacity = fallback;
+        while (!frames_.empty() && frames_.front().tag <= tag) {
+            if (frames_.front().tag == tag)
+                capacity = frames_.front().capacity;
+            frames_.pop_front();
+        }
+        return capacity;
+    }
+
+private:
+    struct Frame {
+        uint64_t tag;
+        uint32_t capacity;
+    };
+    std::deque<Frame> frames_; // frames whose counters have not come back
+};
 
 } // namespace lfd::player

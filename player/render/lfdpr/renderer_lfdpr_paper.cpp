@@ -24,7 +24,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <deque>
 #include <stdexcept>
 #include <vector>
 
@@ -112,7 +111,7 @@ public:
 
         // Step 4: the counters to a read-back slot (read frames later: stats, growth).
         const uint64_t tag = ++frameSerial_;
-        submitted_.push_back({tag, pointCapacity_});
+        capacities_.submitted(tag, pointCapacity_);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         readback_.begin(tag);
         readback_.copy(counters_, 0, 0, sizeof(LfdprCountersGpu));
@@ -216,12 +215,7 @@ private:
     {
         LfdprCountersGpu c;
         std::memcpy(&c, bytes, sizeof(c));
-        uint32_t capacity = pointCapacity_;
-        while (!submitted_.empty() && submitted_.front().tag <= tag) {
-            if (submitted_.front().tag == tag)
-                capacity = submitted_.front().capacity;
-            submitted_.pop_front();
-        }
+        const uint32_t capacity = capacities_.counted(tag, pointCapacity_);
         lastCountedTag_ = tag;
         info_.points = c.pointCount;
         info_.pointCapacity = capacity;
@@ -245,11 +239,7 @@ private:
     LfdprViewGeneration views_;
     gl::Buffer points_, counters_, frameUbo_, records_, sampling_, viewInverse_;
     gl::GpuReadback readback_{sizeof(LfdprCountersGpu)};
-    struct Submitted {
-        uint64_t tag;
-        uint32_t capacity; // the point capacity the frame ran with
-    };
-    std::deque<Submitted> submitted_; // frames whose counts have not come back
+    LfdprFrameCapacities capacities_;
     uint64_t frameSerial_ = 0, lastCountedTag_ = 0;
     uint32_t pointCapacity_ = 0, nextCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t recordCapacity_ = 0, trianglesCoarsened_ = 0;

@@ -35,7 +35,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
-#include <deque>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -126,7 +125,7 @@ public:
         // Step 2: every clear of the frame, behind one barrier; point generation, which also
         // sizes the splat's dispatch (GPU side); the counters go to a read-back slot.
         const uint64_t tag = ++frameSerial_;
-        submitted_.push_back({tag, pointCapacity_});
+        capacities_.submitted(tag, pointCapacity_);
         timer.begin(stage::kPointGeneration);
         bindBuffers(scene);
         const GLuint zero = 0, one = 1;
@@ -221,12 +220,7 @@ private:
     {
         CountsSlot slot;
         std::memcpy(&slot, bytes, sizeof(slot));
-        uint32_t capacity = pointCapacity_;
-        while (!submitted_.empty() && submitted_.front().tag <= tag) {
-            if (submitted_.front().tag == tag)
-                capacity = submitted_.front().capacity;
-            submitted_.pop_front();
-        }
+        const uint32_t capacity = capacities_.counted(tag, pointCapacity_);
         const LfdprVisCountersGpu& c = slot.counters;
         lastCountedTag_ = tag;
         info_.points = c.pointCount;
@@ -357,11 +351,7 @@ private:
     std::vector<int32_t> texturedMaterials_;
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, draws_;
     gl::GpuReadback readback_{sizeof(CountsSlot)};
-    struct Submitted {
-        uint64_t tag;
-        uint32_t capacity; // the point capacity the frame ran with
-    };
-    std::deque<Submitted> submitted_; // frames whose counts have not come back
+    LfdprFrameCapacities capacities_;
     uint64_t frameSerial_ = 0, lastCountedTag_ = 0;
     std::array<gl::Texture, 9> texels_; // buffer textures over the buffers above (bindSceneTexels)
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
