@@ -92,8 +92,6 @@ std::string materialLabel(const tinygltf::Model& model, size_t material)
     return named("materials[" + std::to_string(material) + "]", model.materials[material].name);
 }
 
-// ---- Loading -----------------------------------------------------------------------
-
 // ---- Extensions --------------------------------------------------------------------
 
 // The optional extensions the baker ignores (gltf_load refused unsupported required ones).
@@ -483,39 +481,18 @@ std::vector<Vec> gather(const gltf::FloatArray& a, const std::vector<uint32_t>& 
     return out;
 }
 
-// Why accessor `a`'s bytes are not in the file, or "": a buffer without a uri is valid glTF
-// (its bytes are "provided by other means", e.g. by an extension the baker does not read),
-// but the baker has nothing to bake from it.
-std::string bytesNotInFile(const gltf::LoadedGltf& loaded, int a)
-{
-    const tinygltf::Model& model = loaded.model;
-    if (a < 0 || size_t(a) >= model.accessors.size())
-        return {};
-    const tinygltf::Accessor& acc = model.accessors[size_t(a)];
-    for (int v : {acc.bufferView, acc.sparse.isSparse ? acc.sparse.indices.bufferView : -1,
-                  acc.sparse.isSparse ? acc.sparse.values.bufferView : -1}) {
-        if (v < 0 || size_t(v) >= model.bufferViews.size())
-            continue;
-        const int b = model.bufferViews[size_t(v)].buffer;
-        if (b >= 0 && loaded.buffersWithoutData.count(size_t(b)))
-            return "accessors[" + std::to_string(a) + "] lies in buffers[" + std::to_string(b) +
-                   "], which has no uri: its bytes are not in the file";
-    }
-    return {};
-}
-
-// Whether the file holds accessor a's data (not: a buffer without a uri, or neither a
-// bufferView nor sparse data).
+// Whether the file holds accessor a's data (not: a buffer without a uri - valid glTF, its
+// bytes "provided by other means", e.g. by an extension the baker does not read - or
+// neither a bufferView nor sparse data).
 bool hasData(const gltf::LoadedGltf& loaded, int a)
 {
     if (a < 0 || size_t(a) >= loaded.model.accessors.size() || loaded.accessorsWithoutData.count(size_t(a)))
         return false;
-    return bytesNotInFile(loaded, a).empty();
+    return gltf::bytesNotInFile(loaded.model, loaded.buffersWithoutData, a).empty();
 }
 
 // Where a primitive's data comes from, and the names its errors and warnings use.
 struct PrimitiveSource {
-    const gltf::LoadedGltf& loaded;
     const tinygltf::Model& model;
     const tinygltf::Primitive& prim;
     const std::string& label;
@@ -712,12 +689,14 @@ std::optional<PrimitiveData> readPrimitive(const gltf::LoadedGltf& loaded, const
     std::vector<std::pair<std::string, int>> streams{{".indices", prim.indices}};
     for (const auto& [name, accessor] : prim.attributes)
         streams.emplace_back(".attributes." + name, accessor);
-    for (const auto& [what, accessor] : streams)
-        if (const std::string why = bytesNotInFile(loaded, accessor); !why.empty()) {
+    for (const auto& [what, accessor] : streams) {
+        const std::string why = gltf::bytesNotInFile(loaded.model, loaded.buffersWithoutData, accessor);
+        if (!why.empty()) {
             warnings.add(label + what + ": " + why + ": primitive skipped");
             return std::nullopt;
         }
-    PrimitiveSource src{loaded, loaded.model, prim, label, file};
+    }
+    PrimitiveSource src{loaded.model, prim, label, file};
     const gltf::FloatArray positions = readPositions(src);
     src.vertexCount = positions.count;
     const std::vector<uint32_t> indices = readIndices(src);

@@ -397,4 +397,21 @@ ResolvedResources resolveResources(const json& document, const GltfContainer& co
     return Resolver(document, container, baseDir, issues).run();
 }
 
+std::string bytesNotInFile(const tinygltf::Model& model, const std::set<size_t>& withoutData, int a)
+{
+    if (a < 0 || size_t(a) >= model.accessors.size())
+        return {};
+    const tinygltf::Accessor& acc = model.accessors[size_t(a)];
+    for (int v : {acc.bufferView, acc.sparse.isSparse ? acc.sparse.indices.bufferView : -1,
+                  acc.sparse.isSparse ? acc.sparse.values.bufferView : -1}) {
+        if (v < 0 || size_t(v) >= model.bufferViews.size())
+            continue;
+        const int b = model.bufferViews[size_t(v)].buffer;
+        if (b >= 0 && withoutData.count(size_t(b)))
+            return "accessors[" + std::to_string(a) + "] lies in buffers[" + std::to_string(b) +
+                   "], which has no uri: its bytes are not in the file";
+    }
+    return {};
+}
+
 } // namespace lfd::bake::gltf

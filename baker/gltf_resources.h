@@ -10,6 +10,7 @@
 #include "gltf_validation.h"
 
 #include <nlohmann/json_fwd.hpp>
+#include <tiny_gltf.h>
 
 #include <cstdint>
 #include <filesystem>
@@ -57,6 +58,11 @@ struct ResolvedResources {
 // nothing reads, a warning. A buffer without a uri is recorded in withoutData. Images are
 // checked when a material uses them (TextureTable); here only their data URIs are decoded
 // (errors for malformed ones a material uses).
+// Why accessor `a` of `model` has no bytes in the file - its bufferView or sparse data lies
+// in a buffer of `withoutData` - as "accessors[a] lies in buffers[b], which has no uri: its
+// bytes are not in the file"; "" when its bytes are there (or `a` is no accessor).
+std::string bytesNotInFile(const tinygltf::Model& model, const std::set<size_t>& withoutData, int a);
+
 ResolvedResources resolveResources(const nlohmann::json& document, const GltfContainer& container,
                                    const std::filesystem::path& baseDir, std::vector<SchemaIssue>& issues);
 

@@ -4,6 +4,7 @@
 
 #include "bake.h"
 #include "gltf_accessors.h"
+#include "gltf_resources.h"
 
 #include <nlohmann/json.hpp>
 
@@ -114,20 +115,8 @@ public:
         const json* accessors = member(doc_, "accessors");
         for (size_t a = 0; accessors && a < accessors->size(); ++a)
             originalView_.push_back((*accessors)[a].is_object() && (*accessors)[a].contains("bufferView"));
-        for (const tinygltf::Mesh& mesh : m_.meshes)
-            for (const tinygltf::Primitive& p : mesh.primitives) {
-                used_.insert(p.indices);
-                for (const auto& [name, a] : p.attributes)
-                    used_.insert(a);
-                for (const auto& target : p.targets)
-                    for (const auto& [name, a] : target)
-                        used_.insert(a);
-            }
-        for (const tinygltf::Animation& anim : m_.animations)
-            for (const tinygltf::AnimationSampler& sampler : anim.samplers) {
-                used_.insert(sampler.input);
-                used_.insert(sampler.output);
-            }
+        for (int64_t a : accessorsReadByMeshesAndAnimations(doc_))
+            used_.insert(int(a));
     }
 
     // Storage before its users, and the node forest before the scenes that list roots of
@@ -218,17 +207,11 @@ private:
     // no data check then).
     bool hasData(int a) const
     {
-        const tinygltf::Accessor& acc = m_.accessors[size_t(a)];
-        auto inFile = [&](int v) {
-            return v < 0 || size_t(v) >= m_.bufferViews.size() ||
-                   !withoutData_.count(size_t(m_.bufferViews[size_t(v)].buffer));
-        };
         // Section 3.6.2.3: without a bufferView an accessor is zeros "unless sparse or an
         // extension" overrides them; without sparse data, what it holds is up to an extension.
-        if (!hadBufferView(a) && !acc.sparse.isSparse)
+        if (!hadBufferView(a) && !m_.accessors[size_t(a)].sparse.isSparse)
             return false;
-        return (!hadBufferView(a) || inFile(acc.bufferView)) &&
-               (!acc.sparse.isSparse || (inFile(acc.sparse.indices.bufferView) && inFile(acc.sparse.values.bufferView)));
+        return bytesNotInFile(m_, withoutData_, a).empty();
     }
 
     // The accessor's float values (normalized integers decoded, sparse applied), or nullopt

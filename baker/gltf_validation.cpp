@@ -3,8 +3,6 @@
 // Reference"); section numbers are cited where a rule is not a plain JSON-schema type.
 #include "gltf_validation.h"
 
-#include "gltf_accessors.h"
-
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -12,9 +10,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <initializer_list>
-#include <iterator>
+#include <optional>
 #include <set>
 
 namespace lfd::bake::gltf {
@@ -88,7 +85,10 @@ bool knownAttributeName(const std::string& name)
 
 class Validator {
 public:
-    explicit Validator(const json& root) : root_(root) { findUsedAccessors(); }
+    // An enum value the baker cannot interpret in an accessor a mesh or an animation reads
+    // refuses the file; in any other (which nothing reads) it is a warning, as glTF-Validator
+    // reports unknown enum values.
+    explicit Validator(const json& root) : root_(root), usedAccessors_(accessorsReadByMeshesAndAnimations(root)) {}
 
     std::vector<SchemaIssue> run()
     {
@@ -485,43 +485,6 @@ private:
         common(p, path);
     }
 
-    // The accessors a mesh or an animation reads: an enum value the baker cannot interpret
-    // in one of these refuses the file; in any other (which nothing reads) it is a warning,
-    // as glTF-Validator reports unknown enum values.
-    void findUsedAccessors()
-    {
-        auto add = [&](const json& v) {
-            if (v.is_number_integer() || v.is_number_unsigned())
-                usedAccessors_.insert(v.get<int64_t>());
-        };
-        auto list = [&](const char* key) -> const json& {
-            static const json empty = json::array();
-            const json* v = root_.is_object() ? member(root_, key) : nullptr;
-            return v != nullptr && v->is_array() ? *v : empty;
-        };
-        for (const json& m : list("meshes"))
-            if (const json* prims = m.is_object() ? member(m, "primitives") : nullptr; prims && prims->is_array())
-                for (const json& p : *prims) {
-                    if (!p.is_object())
-                        continue;
-                    for (const char* key : {"attributes", "indices"})
-                        if (const json* v = member(p, key))
-                            for (const json& a : v->is_object() ? *v : json::array({*v}))
-                                add(a);
-                    if (const json* targets = member(p, "targets"); targets && targets->is_array())
-                        for (const json& t : *targets)
-                            if (t.is_object())
-                                for (const auto& [name, a] : t.items())
-                                    add(a);
-                }
-        for (const json& anim : list("animations"))
-            if (const json* samplers = anim.is_object() ? member(anim, "samplers") : nullptr; samplers && samplers->is_array())
-                for (const json& smp : *samplers)
-                    for (const char* key : {"input", "output"})
-                        if (const json* v = smp.is_object() ? member(smp, key) : nullptr)
-                            add(*v);
-    }
-
     void accessor(const json& a, const std::string& path)
     {
         const bool hasView = indexMember(a, "bufferView", path, "bufferViews", kError).has_value();
@@ -779,43 +742,57 @@ private:
 
     const json& root_;
     std::vector<SchemaIssue> issues_;
-    std::set<int64_t> usedAccessors_;
+    const std::set<int64_t> usedAccessors_;
 };
 
 } // namespace
+
+std::set<int64_t> accessorsReadByMeshesAndAnimations(const nlohmann::json& document)
+{
+    std::set<int64_t> used;
+    auto add = [&](const json& v) {
+        if (v.is_number_integer() || v.is_number_unsigned())
+            used.insert(v.get<int64_t>());
+    };
+    auto member = [](const json& o, const char* key) -> const json* {
+        if (!o.is_object())
+            return nullptr;
+        const auto it = o.find(key);
+        return it == o.end() ? nullptr : &*it;
+    };
+    auto list = [&](const char* key) -> const json& {
+        static const json empty = json::array();
+        const json* v = member(document, key);
+        return v != nullptr && v->is_array() ? *v : empty;
+    };
+    for (const json& m : list("meshes"))
+        if (const json* prims = member(m, "primitives"); prims && prims->is_array())
+            for (const json& p : *prims) {
+                if (!p.is_object())
+                    continue;
+                for (const char* key : {"attributes", "indices"})
+                    if (const json* v = member(p, key))
+                        for (const json& a : v->is_object() ? *v : json::array({*v}))
+                            add(a);
+                if (const json* targets = member(p, "targets"); targets && targets->is_array())
+                    for (const json& t : *targets)
+                        if (t.is_object())
+                            for (const auto& [name, a] : t.items())
+                                add(a);
+            }
+    for (const json& anim : list("animations"))
+        if (const json* samplers = member(anim, "samplers"); samplers && samplers->is_array())
+            for (const json& smp : *samplers)
+                for (const char* key : {"input", "output"})
+                    if (const json* v = member(smp, key))
+                        add(*v);
+    return used;
+}
 
 std::vector<SchemaIssue> validateGltfSchema(const nlohmann::json& document)
 {
     return Validator(document).run();
 }
 
-std::optional<nlohmann::json> readGltfJson(const std::filesystem::path& path, bool binary, const std::string& file)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::string text;
-    if (binary) {
-        // Section 4.4 "Binary glTF Layout": 12-byte header (magic, version 2, length),
-        // then chunk 0 = (uint32 chunkLength, uint32 chunkType "JSON", chunkData).
-        uint32_t header[5] = {};
-        in.read(reinterpret_cast<char*>(header), sizeof header);
-        if (in.gcount() != std::streamsize(sizeof header) || header[1] != 2 || header[4] != 0x4E4F534Au)
-            return std::nullopt;
-        std::error_code ec;
-        const uintmax_t size = std::filesystem::file_size(path, ec);
-        if (ec || header[3] > size - sizeof header)
-            return std::nullopt; // chunk longer than the file: tinygltf names the container error
-        text.resize(header[3]);
-        in.read(text.data(), std::streamsize(text.size()));
-        if (in.gcount() != std::streamsize(text.size()))
-            return std::nullopt;
-    } else {
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    try {
-        return nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-        fail(file, std::string("not valid JSON: ") + e.what());
-    }
-}
 
 } // namespace lfd::bake::gltf

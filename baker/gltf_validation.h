@@ -19,8 +19,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include <filesystem>
-#include <optional>
+#include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -38,10 +38,8 @@ struct SchemaIssue {
 // Every violation in `document` (the glTF JSON), in document order.
 std::vector<SchemaIssue> validateGltfSchema(const nlohmann::json& document);
 
-// The glTF JSON of a .gltf file or of a .glb's JSON chunk (glTF 2.0 section 4.4 "Binary
-// glTF Layout"). Returns nullopt when a .glb container is malformed (tinygltf then reports
-// the container error); throws BakeError naming `file` when the JSON does not parse.
-std::optional<nlohmann::json> readGltfJson(const std::filesystem::path& path, bool binary,
-                                           const std::string& file);
+// The accessors (by index) that a mesh (attributes, indices, morph targets) or an animation
+// sampler reads: a defect in one of them refuses the file, in any other it is a warning.
+std::set<int64_t> accessorsReadByMeshesAndAnimations(const nlohmann::json& document);
 
 } // namespace lfd::bake::gltf

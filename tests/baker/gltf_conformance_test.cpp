@@ -3,14 +3,12 @@
 // SHOULD), and the valid files a lenient loader used to refuse. Each file is written here:
 // a unit triangle with unit normals and indices, broken in one place.
 #include "bake.h"
-#include "gltf_bytes.h"
+#include "gltf_test_files.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cstring>
-#include <fstream>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -111,28 +109,9 @@ std::vector<uint8_t> triangleGlb(std::vector<uint8_t> bin = triangleBytes())
     return glb({jsonChunk(doc), {kBin, bin, 0}});
 }
 
-class GltfConformance : public ::testing::Test {
+class GltfConformance : public lfd::test::GltfCaseFiles {
 protected:
-    void SetUp() override
-    {
-        dir_ = fs::temp_directory_path() / ("lfd_gltf_conformance_test_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    fs::path write(const json& doc)
-    {
-        const fs::path path = dir_ / ("case" + std::to_string(++files_) + ".gltf");
-        std::ofstream(path) << doc.dump();
-        return path;
-    }
-    fs::path writeBytes(const std::vector<uint8_t>& bytes, const char* extension)
-    {
-        const fs::path path = dir_ / ("case" + std::to_string(++files_) + extension);
-        std::ofstream(path, std::ios::binary)
-            .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-        return path;
-    }
+    GltfConformance() : GltfCaseFiles("lfd_gltf_conformance_test") {}
 
     static ImportedScene import(const fs::path& path) { return lfd::bake::importGltf(path, lfd::bake::Log{}); }
 
@@ -166,9 +145,6 @@ protected:
                               }();
         return r;
     }
-
-    fs::path dir_;
-    int files_ = 0;
 };
 
 // ---- Defects in the data the baker reads: one file per class ----------------------

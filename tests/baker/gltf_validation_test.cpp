@@ -3,15 +3,13 @@
 // broken file through importGltf and checks the outcome: refused with one line naming the
 // file and the JSON path, or baked with a warning naming the JSON path.
 #include "bake.h"
-#include "gltf_bytes.h"
+#include "gltf_test_files.h"
 #include "gltf_validation.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <cstring>
-#include <fstream>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -69,29 +67,14 @@ json validScene()
     };
 }
 
-class GltfValidation : public ::testing::Test {
+class GltfValidation : public lfd::test::GltfCaseFiles {
 protected:
-    void SetUp() override
-    {
-        dir_ = fs::temp_directory_path() / ("lfd_gltf_validation_test_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    fs::path write(const json& doc)
-    {
-        const fs::path path = dir_ / ("case" + std::to_string(++files_) + ".gltf");
-        std::ofstream(path) << doc.dump();
-        return path;
-    }
+    GltfValidation() : GltfCaseFiles("lfd_gltf_validation_test") {}
 
     lfd::bake::ImportedScene import(const fs::path& path)
     {
         return lfd::bake::importGltf(path, lfd::bake::Log{});
     }
-
-    fs::path dir_;
-    int files_ = 0;
 };
 
 struct Mutation {
@@ -315,8 +298,7 @@ TEST_F(GltfValidation, BinaryGltfJsonChunkIsValidated)
     std::vector<uint8_t> glb;
     append<uint32_t>(glb, {0x46546C67u, 2u, uint32_t(12 + 8 + text.size()), uint32_t(text.size()), 0x4E4F534Au});
     glb.insert(glb.end(), text.begin(), text.end());
-    const fs::path path = dir_ / "scene.glb";
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(glb.data()), std::streamsize(glb.size()));
+    const fs::path path = writeBytes(glb, ".glb");
     try {
         import(path);
         ADD_FAILURE() << "accepted";

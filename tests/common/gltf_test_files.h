@@ -1,9 +1,16 @@
-// Writing glTF test files byte by byte: little-endian values appended to a buffer, and
-// base64 for data URIs. Shared by the glTF validation and conformance tests.
+// Writing glTF test files: little-endian values appended to a buffer, base64 for data
+// URIs, and a fixture that writes each case to a file of its own in a temporary folder.
+// Shared by the glTF validation and conformance tests.
 #pragma once
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -36,5 +43,37 @@ void append(std::vector<uint8_t>& bin, std::initializer_list<T> values)
         bin.insert(bin.end(), bytes, bytes + sizeof(T));
     }
 }
+
+// A test whose cases are files: write() and writeBytes() give each its own name
+// ("case<N>.gltf") in a folder that lives as long as the test.
+class GltfCaseFiles : public ::testing::Test {
+protected:
+    explicit GltfCaseFiles(const std::string& folder)
+        : dir_(std::filesystem::temp_directory_path() / (folder + "_" + std::to_string(::getpid())))
+    {
+        std::filesystem::create_directories(dir_);
+    }
+    ~GltfCaseFiles() override { std::filesystem::remove_all(dir_); }
+
+    std::filesystem::path write(const nlohmann::json& doc)
+    {
+        const std::filesystem::path path = next(".gltf");
+        std::ofstream(path) << doc.dump();
+        return path;
+    }
+    std::filesystem::path writeBytes(const std::vector<uint8_t>& bytes, const char* extension)
+    {
+        const std::filesystem::path path = next(extension);
+        std::ofstream(path, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        return path;
+    }
+
+    std::filesystem::path dir_;
+
+private:
+    std::filesystem::path next(const char* extension) { return dir_ / ("case" + std::to_string(++files_) + extension); }
+    int files_ = 0;
+};
 
 } // namespace lfd::test
