@@ -16,6 +16,7 @@
 #include "bake.h"
 #include "mip_chain.h"
 #include "parallel.h"
+#include "texture_compression.h"
 
 #include "lfd/pack_layout.h"
 
@@ -69,6 +70,7 @@ struct RunResult {
     double tessellationSeconds = 0.0, tessellationCores = 0.0;
     double statisticsSeconds = 0.0, statisticsCores = 0.0;
     double mipSeconds = 0.0, mipCores = 0.0;
+    double compressSeconds = 0.0, compressCores = 0.0; // the chain to BC1 (colour's format)
     uint64_t level0Pixels = 0;
     uint64_t peakRssBytes = 0;
     uint64_t outputHash = 0; // of every byte the stages produced
@@ -82,7 +84,8 @@ std::string toLine(const RunResult& r)
     std::ostringstream line;
     line << std::setprecision(17) << kRunTag << " " << r.trianglesIn << " " << r.trianglesOut << " "
          << r.tessellationSeconds << " " << r.tessellationCores << " " << r.statisticsSeconds << " "
-         << r.statisticsCores << " " << r.mipSeconds << " " << r.mipCores << " " << r.level0Pixels << " "
+         << r.statisticsCores << " " << r.mipSeconds << " " << r.mipCores << " " << r.compressSeconds << " "
+         << r.compressCores << " " << r.level0Pixels << " "
          << r.peakRssBytes << " " << r.outputHash;
     return line.str();
 }
@@ -92,7 +95,8 @@ bool fromLine(const std::string& text, RunResult& r)
     std::istringstream line(text);
     std::string tag;
     line >> tag >> r.trianglesIn >> r.trianglesOut >> r.tessellationSeconds >> r.tessellationCores >>
-        r.statisticsSeconds >> r.statisticsCores >> r.mipSeconds >> r.mipCores >> r.level0Pixels >>
+        r.statisticsSeconds >> r.statisticsCores >> r.mipSeconds >> r.mipCores >> r.compressSeconds >>
+        r.compressCores >> r.level0Pixels >>
         r.peakRssBytes >> r.outputHash;
     return tag == kRunTag && !line.fail();
 }
@@ -205,7 +209,7 @@ struct Fastest {
 RunResult runOnce(const BenchOptions& options, unsigned threads)
 {
     RunResult r;
-    Fastest tessellation, statistics, mips;
+    Fastest tessellation, statistics, mips, compression;
     double bound = 0.0;
     Scene scene;
     for (unsigned k = 0; k < options.repeat; ++k) {
@@ -235,6 +239,24 @@ RunResult runOnce(const BenchOptions& options, unsigned threads)
         mipTimer.stop(seconds, cores);
         mips.add(seconds, cores);
     }
+    // Block compression of the finished chain, as the bake does for a colour texture.
+    Texture chain;
+    chain.width = chain.height = options.textureSize;
+    chain.srgb = true;
+    chain.mips = levels;
+    chain.texels = std::move(texels);
+    std::vector<uint8_t> blocks;
+    for (unsigned k = 0; k < options.repeat; ++k) {
+        double seconds = 0.0, cores = 0.0;
+        ThreadBudget budget(threads);
+        const StageTimer compressTimer;
+        blocks = compressChain(chain, TextureFormat::Bc1, kUseColour, budget);
+        compressTimer.stop(seconds, cores);
+        compression.add(seconds, cores);
+    }
+    texels = std::move(chain.texels);
+    r.compressSeconds = compression.seconds;
+    r.compressCores = compression.cores;
     r.level0Pixels = uint64_t(options.textureSize) * options.textureSize;
     r.tessellationSeconds = tessellation.seconds;
     r.tessellationCores = tessellation.cores;
@@ -250,6 +272,7 @@ RunResult runOnce(const BenchOptions& options, unsigned threads)
     hash = hashOf(scene.indices, hash);
     hash = hashOf(scene.triangleStats, hash);
     hash = hashOf(texels, hash);
+    hash = hashOf(blocks, hash);
     r.outputHash = hash;
 
     rusage usage{};
@@ -344,7 +367,10 @@ int runBench(const BenchOptions& options, std::ostream& out)
             << r.statisticsCores << " cores); mips " << std::setprecision(1) << double(r.level0Pixels) / 1e6
             << " MP in " << std::setprecision(4) << r.mipSeconds << " s = " << std::setprecision(1)
             << perSecond(double(r.level0Pixels) / 1e6, r.mipSeconds) << " MP/s (" << std::setprecision(2)
-            << r.mipCores << " cores); peak memory " << std::setprecision(1)
+            << r.mipCores << " cores); BC1 compression " << std::setprecision(1) << double(r.level0Pixels) / 1e6
+            << " MP in " << std::setprecision(4) << r.compressSeconds << " s = " << std::setprecision(1)
+            << perSecond(double(r.level0Pixels) / 1e6, r.compressSeconds) << " MP/s (" << std::setprecision(2)
+            << r.compressCores << " cores); peak memory " << std::setprecision(1)
             << double(r.peakRssBytes) / double(1 << 20) << " MiB\n"
             << std::flush;
         runs.push_back(r);
@@ -356,7 +382,8 @@ int runBench(const BenchOptions& options, std::ostream& out)
         const RunResult& b = runs[i];
         out << std::setprecision(2) << "speed-up " << options.threads[i] << " vs " << options.threads.front()
             << " threads: tessellation " << a.tessellationSeconds / b.tessellationSeconds << "x, statistics "
-            << a.statisticsSeconds / b.statisticsSeconds << "x, mips " << a.mipSeconds / b.mipSeconds << "x\n";
+            << a.statisticsSeconds / b.statisticsSeconds << "x, mips " << a.mipSeconds / b.mipSeconds
+            << "x, compression " << a.compressSeconds / b.compressSeconds << "x\n";
         identical = identical && b.outputHash == a.outputHash;
     }
     out << "identical output for every thread count: " << (identical ? "yes" : "NO") << "\n";

@@ -1,6 +1,9 @@
 // Formatting of the bake report and the --inspect summary.
 #include "bake_report.h"
 
+#include "lfd/pack_layout.h"
+
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -28,7 +31,7 @@ void printSections(std::ostream& out, const PackInfo& info)
     out << "  sections (format v" << info.formatVersion << ", " << bytes(info.fileSize) << "):\n";
     for (const PackSectionInfo& s : info.sections)
         out << "    " << s.tag << "  v" << s.version << "  " << std::setw(10) << s.count << " items  "
-            << std::setw(10) << bytes(s.size) << "\n";
+            << std::setw(10) << bytes(s.size) << (s.encoding == pack::kEncodingZstd ? "  zstd" : "") << "\n";
 }
 
 } // namespace
@@ -62,6 +65,9 @@ void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const
             << t.source.y;
         if (t.stored != t.source)
             out << " reduced to " << t.stored.x << "x" << t.stored.y;
+        out << ", " << textureFormatName(t.format) << " " << bytes(t.bytes);
+        if (std::isfinite(t.psnr))
+            out << ", PSNR " << std::setprecision(1) << t.psnr << " dB";
         out << "\n";
     }
     printSections(out, r.pack);
@@ -99,8 +105,8 @@ void printInspectReport(std::ostream& out, const std::filesystem::path& pack, co
         << scene.bounds.min.z << ") max (" << scene.bounds.max.x << ", " << scene.bounds.max.y << ", "
         << scene.bounds.max.z << ") radius " << scene.bounds.radius << "\n";
     for (const Texture& t : scene.textures)
-        out << "  texture " << t.name << ": " << t.width << "x" << t.height << ", " << t.mips.size() << " levels"
-            << (t.srgb ? ", sRGB" : "") << "\n";
+        out << "  texture " << t.name << ": " << t.width << "x" << t.height << " " << textureFormatName(t.format)
+            << ", " << t.mips.size() << " levels" << (t.srgb ? ", sRGB" : "") << "\n";
     printSections(out, info);
 }
 

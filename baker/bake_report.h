@@ -16,6 +16,11 @@ struct TextureReport {
     glm::uvec2 source{0};
     glm::uvec2 stored{0};
     bool srgb = false;
+    // Filled once the texture is baked: stored format, bytes of its chain as the GPU
+    // takes it, and level 0's PSNR against the RGBA8 level (infinite when uncompressed).
+    TextureFormat format = TextureFormat::Rgba8;
+    uint64_t bytes = 0;
+    double psnr = 0.0;
 };
 
 struct BakeReport {

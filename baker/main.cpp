@@ -4,12 +4,14 @@
 #include "bake_report.h"
 #include "mip_chain.h"
 #include "parallel.h"
+#include "texture_compression.h"
 #include "texture_prefetch.h"
 #include "lfd/pack.h"
 
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <map>
 #include <cstdio>
 #include <iostream>
 #include <new>
@@ -32,6 +34,7 @@ struct Options {
     uint32_t maxTextureSize = 16384;
     double textureDetail = 2.0;
     bool keepFullTextures = false;
+    TextureCompression textureCompression = TextureCompression::Bc;
     bool quiet = false;
     bool strict = false;
     unsigned threads = 0; // 0: one per hardware thread
@@ -126,11 +129,22 @@ int bakeScene(const Options& o)
     std::vector<uint64_t> textureBytes;
     for (const Texture& t : scene.textures)
         textureBytes.push_back(mip::chainBytes(mip::chainLayout(t.width, t.height)));
+    // Decoded, mipmapped and block-compressed ahead of the writer (texture_compression.h).
+    const std::vector<uint32_t> uses = textureUses(scene);
     TexturePrefetcher prefetcher(
         [&](uint32_t index) {
             const Texture& meta = scene.textures[index];
-            return bakeTexture(imported.textureSources[index],
-                               TextureBakeOptions{std::max(meta.width, meta.height), 0, &threads});
+            Texture baked = bakeTexture(imported.textureSources[index],
+                                        TextureBakeOptions{std::max(meta.width, meta.height), 0, &threads});
+            const TextureFormat format = o.textureCompression == TextureCompression::None
+                                             ? TextureFormat::Rgba8
+                                             : chooseTextureFormat(uses[index], opaqueAlpha(baked));
+            const CompressedTextureReport compressed = compressTexture(baked, format, uses[index], threads);
+            TextureReport& line = report.textures[index];
+            line.format = compressed.format;
+            line.bytes = compressed.bytes;
+            line.psnr = compressed.psnr;
+            return baked;
         },
         textureBytes, threads, kTextureMemoryLimit);
     size_t done = 0;
@@ -139,7 +153,8 @@ int bakeScene(const Options& o)
         Texture baked = prefetcher.take(index);
         baked.name = meta.name;
         log.info("textures: " + std::to_string(++done) + "/" + std::to_string(scene.textures.size()) + " " +
-                 meta.name + " " + std::to_string(baked.width) + "x" + std::to_string(baked.height));
+                 meta.name + " " + std::to_string(baked.width) + "x" + std::to_string(baked.height) + " " +
+                 textureFormatName(baked.format));
         return baked;
     };
     writePack(o.output, scene, produce);
@@ -181,6 +196,12 @@ int main(int argc, char** argv)
                    "keep textures this many times finer than the finest view pixel (default 2: room for 2x supersampling)")
         ->check(CLI::Range(0.1, 64.0));
     app.add_flag("--keep-full-textures", o.keepFullTextures, "never drop mip levels the views cannot resolve");
+    app.add_option("--texture-compression", o.textureCompression,
+                   "bc: block-compress every texture by what its materials read (BC1/BC3 colour, BC5 normals, BC4 "
+                   "single channels); none: RGBA8 (zstd-compressed in the pack) (default bc)")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, TextureCompression>{{"none", TextureCompression::None}, {"bc", TextureCompression::Bc}},
+            CLI::ignore_case));
     app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
     app.add_flag("--strict", o.strict, "treat every warning (e.g. a glTF schema violation the baker can work around) as an error");
     app.add_option("--threads", o.threads,
@@ -188,7 +209,7 @@ int main(int argc, char** argv)
                    "thread; 1: serial); the pack is the same bytes for any count")
         ->check(CLI::Range(0u, 1024u));
     app.add_flag("--bench", o.bench,
-                 "measure tessellation, triangle statistics and mip chains with 1 and 2 threads (and --threads N "
+                 "measure tessellation, triangle statistics, mip chains and BC1 compression with 1 and 2 threads (and --threads N "
                  "if above 2) on a generated scene; no input or output");
     app.add_option("--bench-triangles", o.benchOptions.triangles, "--bench scene size (default 1048576 triangles)")
         ->check(CLI::Range(size_t(16), size_t(1) << 26));

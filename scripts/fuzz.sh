@@ -43,7 +43,7 @@ for key, mime in (("buffers", "application/octet-stream"), ("images", "image/png
 json.dump(doc, open(dst, "w"), separators=(",", ":"))
 EOF
 done
-cp tests/data/golden_v1.lfdpack "$seeds/pack/"
+cp tests/data/golden_v1.lfdpack tests/data/golden_v2.lfdpack "$seeds/pack/"
 cp tests/data/gltf/*.gltf "$seeds/gltf/"
 [ -d tests/data/fuzz/gltf ] && cp tests/data/fuzz/gltf/* "$seeds/gltf/"
 [ -d tests/data/fuzz/pack ] && cp tests/data/fuzz/pack/* "$seeds/pack/"

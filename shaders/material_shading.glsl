@@ -59,6 +59,9 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
             t = normalize(t);
             vec3 b = cross(n, t) * (p.tangent.w < 0.0 ? -1.0 : 1.0);
             vec3 tn = LFD_SAMPLE(t_normal, p.uv).xyz * 2.0 - 1.0;
+            // A two-channel (BC5) normal map stores x and y of the unit normal.
+            if ((m.flags & LFD_MATERIAL_NORMAL_TWO_CHANNEL) != 0u)
+                tn.z = sqrt(max(1.0 - dot(tn.xy, tn.xy), 0.0));
             tn.xy *= m.params.z;
             n = normalize(mat3(t, b, n) * tn);
         }

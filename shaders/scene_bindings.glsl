@@ -33,13 +33,15 @@
 #define LFD_LOC_VIEW 2
 #define LFD_LOC_STREAMS 3
 
-// MaterialGpu.flags: which textures the material has, and double-sidedness.
+// MaterialGpu.flags: which textures the material has, double-sidedness, and whether the
+// normal texture holds x and y only (BC5; the shader rebuilds z = sqrt(1 - x^2 - y^2)).
 #define LFD_MATERIAL_BASE_COLOR_TEXTURE 1
 #define LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE 2
 #define LFD_MATERIAL_NORMAL_TEXTURE 4
 #define LFD_MATERIAL_OCCLUSION_TEXTURE 8
 #define LFD_MATERIAL_EMISSIVE_TEXTURE 16
 #define LFD_MATERIAL_DOUBLE_SIDED 32
+#define LFD_MATERIAL_NORMAL_TWO_CHANNEL 64
 
 // MaterialGpu.alphaMode (= lfd::AlphaMode).
 #define LFD_ALPHA_OPAQUE 0

@@ -4,6 +4,8 @@
 // checked here before they drive a copy; the remaining rules are validateScene's.
 #include "pack_internal.h"
 
+#include "lfd/pack_mapped.h"
+
 #include <cstring>
 
 namespace lfd::pack {
@@ -12,12 +14,13 @@ namespace {
 
 class Decoder {
 public:
-    Decoder(const uint8_t* data, const SectionTable& table, const std::string& name, bool withTexels)
-        : data_(data), table_(table), name_(name), withTexels_(withTexels)
+    Decoder(const uint8_t* data, const SectionTable& table, const std::string& name, TexelMode texels,
+            std::vector<StoredTexture>* stored)
+        : data_(data), table_(table), name_(name), texelMode_(texels), stored_(stored)
     {
         const SectionEntry& strings = section(kTagStrings);
-        strings_ = data_ + strings.offset;
-        stringBytes_ = strings.size;
+        strings_ = at(strings);
+        stringBytes_ = strings.count;
     }
 
     Scene run()
@@ -41,6 +44,8 @@ private:
     [[noreturn]] void fail(const std::string& problem) const { pack::fail(name_, problem); }
 
     const SectionEntry& section(uint32_t tag) const { return *table_.find(tag); } // required: present
+    // A section's content (inflated when stored with zstd): count * stride bytes.
+    const uint8_t* at(const SectionEntry& e) const { return table_.payload(data_, e); }
 
     template <typename T>
     std::vector<T> array(uint32_t tag) const
@@ -50,8 +55,8 @@ private:
         if (!e)
             return out;
         out.resize(size_t(e->count));
-        if (e->size != 0)
-            std::memcpy(out.data(), data_ + e->offset, size_t(e->size));
+        if (e->count != 0)
+            std::memcpy(out.data(), at(*e), size_t(e->count) * sizeof(T));
         return out;
     }
 
@@ -59,7 +64,7 @@ private:
     Record record(const SectionEntry& e, uint64_t i) const
     {
         Record r;
-        std::memcpy(&r, data_ + e.offset + i * sizeof(Record), sizeof r);
+        std::memcpy(&r, at(e) + i * sizeof(Record), sizeof r);
         return r;
     }
 
@@ -176,27 +181,19 @@ private:
         const SectionEntry& mips = section(kTagMipLevels);
         const SectionEntry& texels = section(kTagTexels);
         textures.resize(size_t(e.count));
+        if (stored_)
+            stored_->assign(size_t(e.count), StoredTexture{});
         uint64_t nextMip = 0;
         uint64_t nextTexel = 0;
         for (uint64_t i = 0; i < e.count; ++i) {
             const auto r = record<TextureRecord>(e, i);
             const std::string where = "texture " + std::to_string(i);
             Texture& t = textures[i];
-            t.name = string(r.name, where);
-            if (r.width == 0 || r.height == 0 || r.width > kMaxTextureDimension || r.height > kMaxTextureDimension)
-                fail(where + ": size " + std::to_string(r.width) + "x" + std::to_string(r.height) + " is outside 1.." +
-                     std::to_string(kMaxTextureDimension));
-            t.width = r.width;
-            t.height = r.height;
-            t.sourceWidth = r.sourceWidth;
-            t.sourceHeight = r.sourceHeight;
-            if (r.flags & ~kTextureSrgb)
-                fail(where + ": unknown flags " + std::to_string(r.flags));
-            t.srgb = (r.flags & kTextureSrgb) != 0;
-            reserved(uint64_t(r.reserved0) | r.reserved1, where);
+            decodeTextureRecord(r, where, t);
 
             // Mip chain: the full chain, stored as the next run of MIPS records.
-            const std::vector<MipLevel> chain = mipChain(r.width, r.height);
+            const bool zstd = (r.flags & kTextureZstdLevels) != 0;
+            const std::vector<MipLevel> chain = textureMipChain(r.width, r.height, t.format);
             if (r.mipCount != chain.size())
                 fail(where + ": " + std::to_string(r.mipCount) + " mip levels, a " + std::to_string(r.width) + "x" +
                      std::to_string(r.height) + " texture has " + std::to_string(chain.size()));
@@ -204,34 +201,99 @@ private:
                 fail(where + ": mip levels [" + std::to_string(r.firstMip) + ", +" + std::to_string(r.mipCount) +
                      ") do not follow the previous texture's within the " + std::to_string(mips.count) +
                      " mip records");
+            std::vector<std::pair<uint64_t, uint64_t>> levels; // stored (offset, size) relative to the texture
+            uint64_t storedOffset = 0;
             for (uint32_t l = 0; l < chain.size(); ++l) {
                 const auto m = record<MipRecord>(mips, nextMip + l);
-                const MipLevel& want = chain[l];
-                if (m.width != want.width || m.height != want.height || m.offset != want.offset ||
-                    m.size != want.size)
-                    fail(where + ": mip level " + std::to_string(l) + " is " + std::to_string(m.width) + "x" +
-                         std::to_string(m.height) + " at +" + std::to_string(m.offset) + " size " +
-                         std::to_string(m.size) + ", expected " + std::to_string(want.width) + "x" +
-                         std::to_string(want.height) + " at +" + std::to_string(want.offset) + " size " +
-                         std::to_string(want.size));
+                checkStoredLevel(m, chain[l], storedOffset, zstd, where + ": mip level " + std::to_string(l));
+                levels.emplace_back(m.offset, m.size);
+                storedOffset += m.size;
             }
             nextMip += chain.size();
             t.mips = chain;
 
-            // Texels: the next run of TEXL, exactly the chain's size.
-            const uint64_t bytes = mipChainBytes(r.width, r.height);
-            if (r.texelOffset != nextTexel || r.texelSize != bytes || texels.size - nextTexel < bytes)
+            // Texels: the next run of TEXL, exactly the stored chain's size.
+            if (r.texelOffset != nextTexel || r.texelSize != storedOffset || texels.size - nextTexel < storedOffset)
                 fail(where + ": texels [" + std::to_string(r.texelOffset) + ", +" + std::to_string(r.texelSize) +
-                     ") are not the next " + std::to_string(bytes) + " bytes of the " + std::to_string(texels.size) +
-                     "-byte texel section");
-            if (withTexels_)
-                t.texels.assign(data_ + texels.offset + nextTexel, data_ + texels.offset + nextTexel + bytes);
-            nextTexel += bytes;
+                     ") are not the next " + std::to_string(storedOffset) + " bytes of the " +
+                     std::to_string(texels.size) + "-byte texel section");
+            const uint8_t* base = data_ + texels.offset + nextTexel;
+            readTexels(t, base, levels, zstd, where);
+            if (stored_) {
+                StoredTexture& s = (*stored_)[size_t(i)];
+                s.zstd = zstd;
+                for (const auto& [offset, size] : levels)
+                    s.levels.emplace_back(nextTexel + offset, size);
+            }
+            nextTexel += storedOffset;
         }
         if (nextMip != mips.count)
             fail("textures use " + std::to_string(nextMip) + " of " + std::to_string(mips.count) + " mip records");
         if (nextTexel != texels.size)
             fail("textures use " + std::to_string(nextTexel) + " of " + std::to_string(texels.size) + " texel bytes");
+    }
+
+    void decodeTextureRecord(const TextureRecord& r, const std::string& where, Texture& t)
+    {
+        t.name = string(r.name, where);
+        if (r.width == 0 || r.height == 0 || r.width > kMaxTextureDimension || r.height > kMaxTextureDimension)
+            fail(where + ": size " + std::to_string(r.width) + "x" + std::to_string(r.height) + " is outside 1.." +
+                 std::to_string(kMaxTextureDimension));
+        t.width = r.width;
+        t.height = r.height;
+        t.sourceWidth = r.sourceWidth;
+        t.sourceHeight = r.sourceHeight;
+        const bool version1 = table_.info.formatVersion == 1;
+        const uint32_t knownFlags = version1 ? kTextureSrgb : kTextureSrgb | kTextureZstdLevels;
+        if (r.flags & ~knownFlags)
+            fail(where + ": unknown flags " + std::to_string(r.flags));
+        t.srgb = (r.flags & kTextureSrgb) != 0;
+        if (version1)
+            reserved(r.format, where);
+        if (r.format >= kTextureFormatCount)
+            fail(where + ": unknown format " + std::to_string(r.format));
+        t.format = TextureFormat(r.format);
+        if ((r.flags & kTextureZstdLevels) && t.format != TextureFormat::Rgba8)
+            fail(where + ": zstd levels are only allowed for RGBA8 textures, this one is " +
+                 textureFormatName(t.format));
+        reserved(r.reserved1, where);
+    }
+
+    // Raw levels are exactly the decoded layout; zstd levels are back to back, non-empty,
+    // and may not claim to expand beyond kZstdMaxRatio (checked again when inflated).
+    void checkStoredLevel(const MipRecord& m, const MipLevel& want, uint64_t storedOffset, bool zstd,
+                          const std::string& where) const
+    {
+        const bool sizeOk = zstd ? m.size > 0 && want.size <= maxInflatedBytes(m.size) : m.size == want.size;
+        if (m.width == want.width && m.height == want.height && m.offset == storedOffset && sizeOk)
+            return;
+        fail(where + " is " + std::to_string(m.width) + "x" + std::to_string(m.height) + " at +" +
+             std::to_string(m.offset) + " size " + std::to_string(m.size) + ", expected " +
+             std::to_string(want.width) + "x" + std::to_string(want.height) + " at +" + std::to_string(storedOffset) +
+             (zstd ? " (zstd, for " : " size ") + std::to_string(want.size) + (zstd ? " bytes)" : ""));
+    }
+
+    void readTexels(Texture& t, const uint8_t* base, const std::vector<std::pair<uint64_t, uint64_t>>& levels,
+                    bool zstd, const std::string& where) const
+    {
+        if (texelMode_ == TexelMode::Skip || (!zstd && texelMode_ == TexelMode::Verify))
+            return; // raw texels are covered by the TEXL checksum
+        const uint64_t total = t.mips.back().offset + t.mips.back().size;
+        if (texelMode_ == TexelMode::Copy)
+            t.texels.resize(size_t(total));
+        for (size_t l = 0; l < levels.size(); ++l) {
+            const auto [offset, size] = levels[l];
+            if (!zstd) {
+                std::memcpy(t.texels.data() + t.mips[l].offset, base + offset, size_t(size));
+                continue;
+            }
+            LevelInflater level({base + offset, size_t(size)}, t.mips[l].size, name_,
+                                where + " mip level " + std::to_string(l));
+            if (texelMode_ == TexelMode::Copy)
+                level.read(t.texels.data() + t.mips[l].offset, size_t(t.mips[l].size));
+            else
+                level.skipAll();
+        }
     }
 
     void decodeNodes(std::vector<Node>& nodes)
@@ -288,8 +350,8 @@ private:
                 out.times.resize(size_t(ch.keyCount));
                 out.values.resize(size_t(ch.keyCount));
                 if (ch.keyCount != 0) {
-                    std::memcpy(out.times.data(), data_ + times.offset + nextKey * 4, size_t(ch.keyCount * 4));
-                    std::memcpy(out.values.data(), data_ + values.offset + nextKey * 16, size_t(ch.keyCount * 16));
+                    std::memcpy(out.times.data(), at(times) + nextKey * 4, size_t(ch.keyCount * 4));
+                    std::memcpy(out.values.data(), at(values) + nextKey * 16, size_t(ch.keyCount * 16));
                 }
                 nextKey += ch.keyCount;
             }
@@ -305,7 +367,8 @@ private:
     const uint8_t* data_;
     const SectionTable& table_;
     const std::string& name_;
-    bool withTexels_;
+    TexelMode texelMode_;
+    std::vector<StoredTexture>* stored_;
     const uint8_t* strings_ = nullptr;
     uint64_t stringBytes_ = 0;
     uint64_t stringTotal_ = 0;
@@ -313,10 +376,11 @@ private:
 
 } // namespace
 
-Scene decodeScene(const uint8_t* data, const SectionTable& table, const std::string& name, bool withTexels)
+Scene decodeScene(const uint8_t* data, const SectionTable& table, const std::string& name, TexelMode texels,
+                  std::vector<StoredTexture>* stored)
 {
-    Scene scene = Decoder(data, table, name, withTexels).run();
-    validateScene(scene, name, withTexels ? TexelPolicy::Required : TexelPolicy::MetadataOnly);
+    Scene scene = Decoder(data, table, name, texels, stored).run();
+    validateScene(scene, name, texels == TexelMode::Copy ? TexelPolicy::Required : TexelPolicy::MetadataOnly);
     return scene;
 }
 

@@ -88,7 +88,8 @@ void syncDirectory(const std::filesystem::path& dir)
 
 namespace lfd {
 
-void writePack(const std::filesystem::path& path, const Scene& scene, const TextureProducer& produce)
+void writePack(const std::filesystem::path& path, const Scene& scene, const TextureProducer& produce,
+               const PackWriteOptions& options)
 {
     const std::string name = path.string();
     pack::TempFile temp(path.string() + ".tmp." + std::to_string(::getpid()));
@@ -97,7 +98,7 @@ void writePack(const std::filesystem::path& path, const Scene& scene, const Text
         pack::fail(name, "cannot create temporary file '" + temp.path().string() + "': " + std::strerror(errno));
 
     pack::FileSink sink(file, name);
-    pack::emitPack(sink, scene, produce, name);
+    pack::emitPack(sink, scene, produce, options, name);
     if (!temp.flushAndClose())
         pack::fail(name, std::string("cannot flush to disk: ") + std::strerror(errno));
 

@@ -15,11 +15,20 @@ namespace lfd::pack {
 // stays one line whatever a file name or a nested exception contained.
 [[noreturn]] void fail(const std::string& name, const std::string& problem);
 
-// Full mip chain of a width x height RGBA8 texture: level l is
-// max(1, width >> l) x max(1, height >> l), levels back to back from offset 0.
+// Mip levels of a full chain: floor(log2(max(width, height))) + 1.
 uint32_t fullMipCount(uint32_t width, uint32_t height);
-std::vector<MipLevel> mipChain(uint32_t width, uint32_t height);
-uint64_t mipChainBytes(uint32_t width, uint32_t height);
+
+// Section payloads stored with zstd (format 2). compressSection returns the frame, or
+// nothing when the data should stay raw (it would not shrink, or would expand past
+// kZstdMaxRatio). inflate checks that the frame holds exactly `expectedSize` bytes.
+std::vector<uint8_t> compressSection(const void* data, size_t size);
+// A texture level's frame, even when it does not shrink (a texture's levels are all zstd
+// or all raw); empty only when it would expand past kZstdMaxRatio.
+std::vector<uint8_t> compressLevel(const void* data, size_t size);
+std::vector<uint8_t> inflate(const uint8_t* frame, size_t frameSize, uint64_t expectedSize,
+                             const std::string& name, const std::string& what);
+// The largest content a zstd payload of `storedSize` bytes may declare.
+uint64_t maxInflatedBytes(uint64_t storedSize);
 
 // What validateScene expects of Texture::texels / Texture::mips.
 enum class TexelPolicy {
@@ -37,10 +46,18 @@ void validateScene(const Scene& scene, const std::string& name, TexelPolicy texe
 struct SectionTable {
     PackInfo info;
     std::vector<SectionEntry> entries; // file order
+    // Decompressed payloads of the zstd sections (inflateSections), in entry order.
+    std::vector<std::pair<uint32_t, std::vector<uint8_t>>> inflated;
 
     // The known section with this tag, or nullptr when absent (optional streams).
     const SectionEntry* find(uint32_t tag) const;
+    // The section's content: the stored bytes of a raw section, the inflated bytes of a
+    // zstd one (count * stride bytes either way).
+    const uint8_t* payload(const uint8_t* file, const SectionEntry& entry) const;
 };
+
+// Decompresses every zstd section of a structurally valid table into table.inflated.
+void inflateSections(const uint8_t* data, SectionTable& table, const std::string& name);
 
 // Where the writer's bytes go: a memory buffer or a temporary file. Writes are
 // sequential except for the final seek back to the header and table.
@@ -53,7 +70,8 @@ public:
 
 // Validates `scene` and writes the whole pack to `sink`, which starts empty. Throws
 // PackError naming `name`.
-void emitPack(Sink& sink, const Scene& scene, const TextureProducer& produce, const std::string& name);
+void emitPack(Sink& sink, const Scene& scene, const TextureProducer& produce, const PackWriteOptions& options,
+              const std::string& name);
 
 // deferredChecksumTag: a section whose payload checksum is not checked here because the
 // caller verifies it while reading the payload (the mapped reader's texels, which are
@@ -61,10 +79,25 @@ void emitPack(Sink& sink, const Scene& scene, const TextureProducer& produce, co
 SectionTable validateStructure(const uint8_t* data, size_t size, const std::string& name,
                                uint32_t deferredChecksumTag = 0);
 
-// Builds the Scene from structurally valid sections, checking the cross-section ranges
-// (strings, channel/key runs, mip chains, texel runs) before any allocation they drive,
-// then runs validateScene. Without texels, Texture::texels stay empty (verifyPack).
-Scene decodeScene(const uint8_t* data, const SectionTable& table, const std::string& name,
-                  bool withTexels);
+// What the decoder does with the texels.
+enum class TexelMode {
+    Copy,   // Texture::texels hold every level as the GPU takes it (zstd levels inflated)
+    Verify, // texels left empty, but every zstd level is inflated and checked (verifyPack)
+    Skip,   // texels left empty and not looked at (the mapped reader streams them later)
+};
+
+// Where a texture's levels lie in TEXL as stored (format 2: zstd levels differ in size
+// from the decoded levels of Texture::mips).
+struct StoredTexture {
+    bool zstd = false;
+    std::vector<std::pair<uint64_t, uint64_t>> levels; // (offset in TEXL, stored bytes)
+};
+
+// Builds the Scene from structurally valid (and inflated) sections, checking the
+// cross-section ranges (strings, channel/key runs, mip chains, texel runs) before any
+// allocation they drive, then runs validateScene. `stored`, if given, receives each
+// texture's stored level ranges.
+Scene decodeScene(const uint8_t* data, const SectionTable& table, const std::string& name, TexelMode texels,
+                  std::vector<StoredTexture>* stored = nullptr);
 
 } // namespace lfd::pack

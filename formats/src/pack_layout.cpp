@@ -43,29 +43,6 @@ uint32_t fullMipCount(uint32_t width, uint32_t height)
     return uint32_t(std::bit_width(largest));
 }
 
-std::vector<MipLevel> mipChain(uint32_t width, uint32_t height)
-{
-    std::vector<MipLevel> levels(fullMipCount(width, height));
-    uint64_t offset = 0;
-    for (uint32_t l = 0; l < levels.size(); ++l) {
-        MipLevel& level = levels[l];
-        level.width = std::max(1u, width >> l);
-        level.height = std::max(1u, height >> l);
-        level.offset = offset;
-        level.size = uint64_t(level.width) * level.height * 4;
-        offset += level.size;
-    }
-    return levels;
-}
-
-uint64_t mipChainBytes(uint32_t width, uint32_t height)
-{
-    uint64_t total = 0;
-    for (uint32_t l = 0, n = fullMipCount(width, height); l < n; ++l)
-        total += uint64_t(std::max(1u, width >> l)) * std::max(1u, height >> l) * 4;
-    return total;
-}
-
 void resealPack(std::vector<uint8_t>& bytes)
 {
     if (bytes.size() < sizeof(FileHeader))

@@ -69,9 +69,20 @@ MappedPack::MappedPack(const std::filesystem::path& path) : name_(path.string())
 
     try {
         pack::SectionTable table = pack::validateStructure(data_, size_t(size_), name_, pack::kTagTexels);
-        scene_ = pack::decodeScene(data_, table, name_, false);
-        for (const pack::SectionEntry& e : table.entries)
-            sections_.emplace_back(e.tag, std::span<const uint8_t>(data_ + e.offset, size_t(e.size)));
+        std::vector<pack::StoredTexture> stored;
+        scene_ = pack::decodeScene(data_, table, name_, pack::TexelMode::Skip, &stored);
+        for (const pack::SectionEntry& e : table.entries) {
+            const uint8_t* payload = table.payload(data_, e);
+            if (payload) // zstd sections by their inflated content (kept in inflated_)
+                sections_.emplace_back(e.tag, std::span<const uint8_t>(
+                                                  payload, size_t(e.encoding == pack::kEncodingZstd ? e.count * e.stride
+                                                                                                    : e.size)));
+        }
+        inflated_ = std::move(table.inflated);
+        for (const pack::StoredTexture& t : stored) {
+            levelsZstd_.push_back(t.zstd);
+            storedLevels_.push_back(t.levels);
+        }
         const pack::SectionEntry& texl = *table.find(pack::kTagTexels);
         texlOffset_ = texl.offset;
         texlSize_ = texl.size;
@@ -84,11 +95,6 @@ MappedPack::MappedPack(const std::filesystem::path& path) : name_(path.string())
     }
     // decodeScene checked that the textures' chains are consecutive and cover TEXL.
     textures_ = scene_.textures;
-    uint64_t start = 0;
-    for (const Texture& t : textures_) {
-        textureTexelStart_.push_back(start);
-        start += pack::mipChainBytes(t.width, t.height);
-    }
     if (!hash_->state || XXH3_64bits_reset(hash_->state.get()) != XXH_OK)
         pack::fail(name_, "cannot allocate the checksum state");
     // Validation touched every non-texel page; streaming reads them again window by window.
@@ -111,14 +117,13 @@ std::span<const uint8_t> MappedPack::section(uint32_t tag) const
 
 uint64_t MappedPack::mipTexelOffset(uint32_t texture, uint32_t level) const
 {
-    const Texture& t = textures_.at(texture);
-    return textureTexelStart_[texture] + t.mips.at(level).offset;
+    return storedLevels_.at(texture).at(level).first;
 }
 
 std::span<const uint8_t> MappedPack::mipBytes(uint32_t texture, uint32_t level) const
 {
-    const uint64_t offset = mipTexelOffset(texture, level);
-    return {data_ + texlOffset_ + offset, size_t(textures_[texture].mips[level].size)};
+    const auto [offset, size] = storedLevels_.at(texture).at(level);
+    return {data_ + texlOffset_ + offset, size_t(size)};
 }
 
 void MappedPack::hashRange(uint64_t offset, uint64_t size)

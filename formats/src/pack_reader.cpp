@@ -42,7 +42,7 @@ Scene readPackFromMemory(const uint8_t* data, size_t size, const std::string& na
     if (!data)
         data = &kEmpty; // size is 0 then; keeps pointer arithmetic defined
     const pack::SectionTable table = pack::validateStructure(data, size, name);
-    return pack::decodeScene(data, table, name, true);
+    return pack::decodeScene(data, table, name, pack::TexelMode::Copy);
 }
 
 Scene readPack(const std::filesystem::path& path, PackInfo* info)
@@ -52,7 +52,7 @@ Scene readPack(const std::filesystem::path& path, PackInfo* info)
     static const uint8_t kEmpty = 0;
     const uint8_t* data = bytes.empty() ? &kEmpty : bytes.data();
     pack::SectionTable table = pack::validateStructure(data, bytes.size(), name);
-    Scene scene = pack::decodeScene(data, table, name, true);
+    Scene scene = pack::decodeScene(data, table, name, pack::TexelMode::Copy);
     if (info)
         *info = std::move(table.info);
     return scene;
@@ -65,7 +65,7 @@ PackInfo verifyPack(const std::filesystem::path& path)
     static const uint8_t kEmpty = 0;
     const uint8_t* data = bytes.empty() ? &kEmpty : bytes.data();
     pack::SectionTable table = pack::validateStructure(data, bytes.size(), name);
-    pack::decodeScene(data, table, name, false); // every rule, without copying texels
+    pack::decodeScene(data, table, name, pack::TexelMode::Verify); // every rule and zstd level, no texel copy
     return std::move(table.info);
 }
 

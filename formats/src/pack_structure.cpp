@@ -86,9 +86,9 @@ private:
         if (size_ >= offsetof(FileHeader, formatVersion) + 4) {
             uint32_t version;
             std::memcpy(&version, data_ + offsetof(FileHeader, formatVersion), 4);
-            if (version != kFormatVersion)
+            if (version < kOldestFormatVersion || version > kFormatVersion)
                 fail("unsupported format version " + std::to_string(version) + " (this reader supports " +
-                     std::to_string(kFormatVersion) + ")");
+                     std::to_string(kOldestFormatVersion) + " to " + std::to_string(kFormatVersion) + ")");
         }
         if (size_ < sizeof(FileHeader))
             fail("truncated: file has " + std::to_string(size_) + " bytes, the header needs " +
@@ -140,8 +140,10 @@ private:
             if (e.offset < tableEnd_)
                 fail(quoted(e.tag) + " at byte " + std::to_string(e.offset) +
                      " overlaps the header and section table (which end at byte " + std::to_string(tableEnd_) + ")");
-            if (e.reserved != 0)
+            if (header_.formatVersion == 1 && e.encoding != 0)
                 fail(quoted(e.tag) + " has a non-zero reserved field");
+            if (e.encoding > kEncodingZstd)
+                fail(quoted(e.tag) + " has unknown encoding " + std::to_string(e.encoding));
             byOffset.push_back(&e);
         }
         // Empty sections sort first among equal offsets: one may share its offset with the
@@ -182,7 +184,7 @@ private:
         table_.info.fileSize = size_;
         for (const SectionEntry& e : table_.entries) {
             table_.info.sections.push_back(
-                PackSectionInfo{tagName(e.tag), e.version, e.offset, e.size, e.checksum, e.count});
+                PackSectionInfo{tagName(e.tag), e.version, e.offset, e.size, e.checksum, e.count, e.encoding});
             const KnownSection* known = knownSection(e.tag);
             if (!known)
                 continue; // forward compatibility: unknown sections are skipped
@@ -193,7 +195,9 @@ private:
             if (e.stride != known->stride)
                 fail(quoted(e.tag) + " has element size " + std::to_string(e.stride) + ", expected " +
                      std::to_string(known->stride));
-            if (e.count != e.size / known->stride || e.size % known->stride != 0)
+            if (e.encoding == kEncodingZstd)
+                checkZstdSection(e, *known);
+            else if (e.count != e.size / known->stride || e.size % known->stride != 0)
                 fail(quoted(e.tag) + " count " + std::to_string(e.count) + " is inconsistent with its " +
                      std::to_string(e.size) + " bytes");
             if (known->single && e.count != 1)
@@ -202,6 +206,18 @@ private:
         for (const KnownSection& k : kKnownSections)
             if (k.required && !table_.find(k.tag))
                 fail("missing required " + quoted(k.tag));
+    }
+
+    // A zstd section's count is checked against what its stored bytes may expand to
+    // (kZstdMaxRatio), so inflating it allocates no more than that; the frame itself is
+    // checked to hold exactly count * stride bytes when it is inflated.
+    void checkZstdSection(const SectionEntry& e, const KnownSection& known) const
+    {
+        if (e.tag == kTagTexels)
+            fail(quoted(e.tag) + " cannot be zstd-compressed as a whole (its levels carry their own encoding)");
+        if (e.count > maxInflatedBytes(e.size) / known.stride)
+            fail(quoted(e.tag) + " count " + std::to_string(e.count) + " is more than its " + std::to_string(e.size) +
+                 " compressed bytes may hold");
     }
 
     static std::string endString(const SectionEntry& e)
@@ -231,10 +247,32 @@ const SectionEntry* SectionTable::find(uint32_t tag) const
     return nullptr;
 }
 
+const uint8_t* SectionTable::payload(const uint8_t* file, const SectionEntry& entry) const
+{
+    if (entry.encoding != kEncodingZstd)
+        return file + entry.offset;
+    for (const auto& [tag, bytes] : inflated)
+        if (tag == entry.tag)
+            return bytes.data();
+    return nullptr; // unknown zstd sections are not inflated
+}
+
+void inflateSections(const uint8_t* data, SectionTable& table, const std::string& name)
+{
+    for (const SectionEntry& e : table.entries) {
+        if (e.encoding != kEncodingZstd || !knownSection(e.tag))
+            continue;
+        table.inflated.emplace_back(e.tag, inflate(data + e.offset, size_t(e.size), e.count * e.stride, name,
+                                                   "section '" + tagName(e.tag) + "'"));
+    }
+}
+
 SectionTable validateStructure(const uint8_t* data, size_t size, const std::string& name,
                                uint32_t deferredChecksumTag)
 {
-    return StructureChecker(data, size, name, deferredChecksumTag).run();
+    SectionTable table = StructureChecker(data, size, name, deferredChecksumTag).run();
+    inflateSections(data, table, name);
+    return table;
 }
 
 } // namespace lfd::pack

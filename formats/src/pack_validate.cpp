@@ -172,13 +172,18 @@ private:
                 fail(where + "size " + std::to_string(tex.width) + "x" + std::to_string(tex.height) +
                      " is outside 1.." + std::to_string(kMaxTextureDimension));
             const bool mipsOptional = texels_ == TexelPolicy::MetadataOnly && tex.mips.empty();
-            if (!mipsOptional && !sameLevels(tex.mips, mipChain(tex.width, tex.height)))
+            if (uint32_t(tex.format) >= kTextureFormatCount)
+                fail(where + "unknown format " + std::to_string(uint32_t(tex.format)));
+            const std::vector<MipLevel> chain = textureMipChain(tex.width, tex.height, tex.format);
+            if (!mipsOptional && !sameLevels(tex.mips, chain))
                 fail(where + "mip levels are not the full chain of a " + std::to_string(tex.width) + "x" +
-                     std::to_string(tex.height) + " RGBA8 texture (" + std::to_string(tex.mips.size()) +
-                     " levels given, " + std::to_string(fullMipCount(tex.width, tex.height)) + " expected)");
-            if (texels_ == TexelPolicy::Required && tex.texels.size() != mipChainBytes(tex.width, tex.height))
+                     std::to_string(tex.height) + " " + textureFormatName(tex.format) + " texture (" +
+                     std::to_string(tex.mips.size()) + " levels given, " + std::to_string(chain.size()) +
+                     " expected)");
+            const uint64_t bytes = textureChainBytes(tex.width, tex.height, tex.format);
+            if (texels_ == TexelPolicy::Required && tex.texels.size() != bytes)
                 fail(where + "has " + std::to_string(tex.texels.size()) + " texel bytes, its mip chain needs " +
-                     std::to_string(mipChainBytes(tex.width, tex.height)));
+                     std::to_string(bytes));
         }
     }
 

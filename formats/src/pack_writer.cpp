@@ -111,28 +111,77 @@ Texture produceTexture(const Scene& scene, const TextureProducer& produce, uint3
                        " but the scene says " + std::to_string(meta.width) + "x" + std::to_string(meta.height));
     if (produced.srgb != meta.srgb)
         fail(name, where + "produced sRGB flag differs from the scene's");
-    const std::vector<MipLevel> chain = mipChain(produced.width, produced.height);
+    if (uint32_t(produced.format) >= kTextureFormatCount)
+        fail(name, where + "produced an unknown texture format");
+    const std::vector<MipLevel> chain = textureMipChain(produced.width, produced.height, produced.format);
     bool same = produced.mips.size() == chain.size();
     for (size_t l = 0; same && l < chain.size(); ++l)
         same = produced.mips[l].width == chain[l].width && produced.mips[l].height == chain[l].height &&
                produced.mips[l].offset == chain[l].offset && produced.mips[l].size == chain[l].size;
     if (!same)
         fail(name, where + "produced mip levels that are not the full chain");
-    if (produced.texels.size() != mipChainBytes(produced.width, produced.height))
+    const uint64_t bytes = textureChainBytes(produced.width, produced.height, produced.format);
+    if (produced.texels.size() != bytes)
         fail(name, where + "produced " + std::to_string(produced.texels.size()) + " texel bytes, expected " +
-                       std::to_string(mipChainBytes(produced.width, produced.height)));
+                       std::to_string(bytes));
     return produced;
 }
 
+// One texture as TEXL stores it: the format and encoding the producer's texels had, and
+// each level's stored size. Filled while TEXL is written, read by the TEXD and MIPS
+// emitters that follow it.
+struct WrittenTexture {
+    TextureFormat format = TextureFormat::Rgba8;
+    bool zstd = false;
+    std::vector<uint64_t> levelBytes;
+};
+using WrittenTextures = std::vector<WrittenTexture>;
+
+// Writes one texture's levels: RGBA8 ones as zstd frames when compressing (the whole
+// texture raw if any level would expand past what a reader accepts, or if zstd saves
+// under 5%), the rest as they are.
+WrittenTexture writeTexture(const Texture& t, bool compress, SectionStream& out)
+{
+    WrittenTexture stored{t.format, false, {}};
+    std::vector<std::vector<uint8_t>> frames;
+    if (compress && t.format == TextureFormat::Rgba8) {
+        uint64_t frameBytes = 0;
+        for (const MipLevel& level : t.mips) {
+            frames.push_back(compressLevel(t.texels.data() + level.offset, size_t(level.size)));
+            frameBytes += frames.back().size();
+            if (frames.back().empty()) {
+                frames.clear();
+                break;
+            }
+        }
+        // Under 5% saved (noise-like texels): not worth inflating while streaming.
+        if (frameBytes * 20 > uint64_t(t.texels.size()) * 19)
+            frames.clear();
+    }
+    stored.zstd = !frames.empty();
+    for (size_t l = 0; l < t.mips.size(); ++l) {
+        if (stored.zstd) {
+            out.write(frames[l].data(), frames[l].size());
+            stored.levelBytes.push_back(frames[l].size());
+        } else {
+            out.write(t.texels.data() + t.mips[l].offset, size_t(t.mips[l].size));
+            stored.levelBytes.push_back(t.mips[l].size);
+        }
+    }
+    return stored;
+}
+
 struct PlannedSection {
-    SectionEntry entry{}; // checksum filled in after emitting
-    std::function<void(SectionStream&)> emit;
+    SectionEntry entry{}; // size, encoding and checksum filled in while emitting
+    // Writes the payload; may set entry.encoding (zstd) and, for TEXL, entry.count.
+    std::function<void(SectionStream&, SectionEntry&)> emit;
 };
 
 class PackPlanner {
 public:
-    PackPlanner(const Scene& scene, const TextureProducer& produce, const std::string& name)
-        : scene_(scene), produce_(produce), name_(name), strings_(name)
+    PackPlanner(const Scene& scene, const TextureProducer& produce, const PackWriteOptions& options,
+                const std::string& name)
+        : scene_(scene), produce_(produce), options_(options), name_(name), strings_(name)
     {
     }
 
@@ -143,8 +192,9 @@ public:
         std::vector<uint8_t> bounds = encodeBounds();
         std::vector<uint8_t> meshes = encodeMeshes();
         std::vector<uint8_t> materials = encodeMaterials();
-        std::vector<uint8_t> mips;
-        std::vector<uint8_t> textures = encodeTextures(mips);
+        std::vector<StringRef> textureNames;
+        for (const Texture& t : scene_.textures)
+            textureNames.push_back(strings_.add(t.name));
         std::vector<uint8_t> nodes = encodeNodes();
         std::vector<uint8_t> channels;
         std::vector<uint8_t> animations = encodeAnimations(channels);
@@ -163,25 +213,26 @@ public:
         addBytes(kTagPrimitives, sizeof(PrimitiveRecord), std::move(primitives));
         addBytes(kTagMeshes, sizeof(MeshRecord), std::move(meshes));
         addBytes(kTagMaterials, sizeof(MaterialRecord), std::move(materials));
-        addBytes(kTagTextures, sizeof(TextureRecord), std::move(textures));
-        addBytes(kTagMipLevels, sizeof(MipRecord), std::move(mips));
         addBytes(kTagNodes, sizeof(NodeRecord), std::move(nodes));
         addBytes(kTagAnimations, sizeof(AnimationRecord), std::move(animations));
         addBytes(kTagChannels, sizeof(ChannelRecord), std::move(channels));
         addKeys();
-        addTexels(); // last: the large streamed section
+        // The large streamed section, then the texture and mip records: their formats and
+        // stored sizes are known once the producer has made each texture.
+        auto stored = std::make_shared<WrittenTextures>();
+        addTexels(stored);
+        addTextureRecords(stored, std::move(textureNames));
         return std::move(sections_);
     }
 
 private:
-    void add(uint32_t tag, uint32_t stride, uint64_t count, std::function<void(SectionStream&)> emit)
+    void add(uint32_t tag, uint32_t stride, uint64_t count, std::function<void(SectionStream&, SectionEntry&)> emit)
     {
         PlannedSection s;
         s.entry.tag = tag;
         s.entry.version = kSectionVersion;
         s.entry.stride = stride;
         s.entry.count = count;
-        s.entry.size = count * stride;
         s.emit = std::move(emit);
         sections_.push_back(std::move(s));
     }
@@ -189,7 +240,35 @@ private:
     void addBytes(uint32_t tag, uint32_t stride, std::vector<uint8_t> bytes)
     {
         const uint64_t count = bytes.size() / stride;
-        add(tag, stride, count, [bytes = std::move(bytes)](SectionStream& out) { out.write(bytes.data(), bytes.size()); });
+        add(tag, stride, count, [bytes = std::move(bytes)](SectionStream& out, SectionEntry&) {
+            out.write(bytes.data(), bytes.size());
+        });
+    }
+
+    // Geometry and key streams: zstd when it makes them smaller (and the option is on).
+    void addCompressible(uint32_t tag, uint32_t stride, uint64_t count,
+                         std::function<void(std::vector<uint8_t>&)> gather, const void* contiguous)
+    {
+        add(tag, stride, count,
+            [compress = options_.compress, stride, count, gather = std::move(gather),
+             contiguous](SectionStream& out, SectionEntry& entry) {
+                if (count == 0)
+                    return;
+                std::vector<uint8_t> gathered;
+                const void* data = contiguous;
+                if (!data) {
+                    gather(gathered);
+                    data = gathered.data();
+                }
+                const size_t bytes = size_t(count * stride);
+                const std::vector<uint8_t> frame = compress ? compressSection(data, bytes) : std::vector<uint8_t>{};
+                if (frame.empty()) {
+                    out.write(data, bytes);
+                    return;
+                }
+                entry.encoding = kEncodingZstd;
+                out.write(frame.data(), frame.size());
+            });
     }
 
     template <typename T>
@@ -197,8 +276,7 @@ private:
     {
         if (values.empty() && !required)
             return; // optional vertex streams are absent when unused
-        add(tag, sizeof(T), values.size(),
-            [&values](SectionStream& out) { out.write(values.data(), values.size() * sizeof(T)); });
+        addCompressible(tag, sizeof(T), values.size(), {}, values.data());
     }
 
     std::vector<uint8_t> encodeSettings()
@@ -271,35 +349,6 @@ private:
         return recordBytes(records);
     }
 
-    // Descriptors and mip levels come from the metadata alone, so the texel section's size
-    // is known before any texture is produced.
-    std::vector<uint8_t> encodeTextures(std::vector<uint8_t>& mipBytes)
-    {
-        std::vector<TextureRecord> records;
-        std::vector<MipRecord> mips;
-        uint64_t texelOffset = 0;
-        for (const Texture& t : scene_.textures) {
-            TextureRecord r{};
-            r.name = strings_.add(t.name);
-            r.width = t.width;
-            r.height = t.height;
-            r.sourceWidth = t.sourceWidth;
-            r.sourceHeight = t.sourceHeight;
-            r.flags = t.srgb ? kTextureSrgb : 0;
-            r.mipCount = fullMipCount(t.width, t.height);
-            r.firstMip = uint32_t(mips.size());
-            r.texelOffset = texelOffset;
-            r.texelSize = mipChainBytes(t.width, t.height);
-            for (const MipLevel& level : mipChain(t.width, t.height))
-                mips.push_back(MipRecord{level.width, level.height, level.offset, level.size});
-            texelOffset += r.texelSize;
-            records.push_back(r);
-        }
-        texelBytes_ = texelOffset;
-        mipBytes = recordBytes(mips);
-        return recordBytes(records);
-    }
-
     std::vector<uint8_t> encodeNodes()
     {
         std::vector<NodeRecord> records;
@@ -347,76 +396,127 @@ private:
     void addKeys()
     {
         const auto& animations = scene_.animations;
-        add(kTagKeyTimes, sizeof(float), keyCount_, [&animations](SectionStream& out) {
+        addCompressible(kTagKeyTimes, sizeof(float), keyCount_, [&animations](std::vector<uint8_t>& out) {
             for (const Animation& a : animations)
                 for (const AnimationChannel& c : a.channels)
-                    out.write(c.times.data(), c.times.size() * sizeof(float));
-        });
-        add(kTagKeyValues, sizeof(glm::vec4), keyCount_, [&animations](SectionStream& out) {
+                    append(out, c.times.data(), c.times.size() * sizeof(float));
+        }, nullptr);
+        addCompressible(kTagKeyValues, sizeof(glm::vec4), keyCount_, [&animations](std::vector<uint8_t>& out) {
             for (const Animation& a : animations)
                 for (const AnimationChannel& c : a.channels)
-                    out.write(c.values.data(), c.values.size() * sizeof(glm::vec4));
-        });
+                    append(out, c.values.data(), c.values.size() * sizeof(glm::vec4));
+        }, nullptr);
     }
 
-    void addTexels()
+    static void append(std::vector<uint8_t>& out, const void* data, size_t size)
+    {
+        const auto* p = static_cast<const uint8_t*>(data);
+        out.insert(out.end(), p, p + size);
+    }
+
+    void addTexels(std::shared_ptr<WrittenTextures> stored)
     {
         // The emitters outlive the planner: capture what they need, never `this`.
-        add(kTagTexels, 1, texelBytes_, [&scene = scene_, &produce = produce_, &name = name_](SectionStream& out) {
-            for (uint32_t i = 0; i < scene.textures.size(); ++i) {
-                if (!produce) {
-                    const std::vector<uint8_t>& texels = scene.textures[i].texels;
-                    out.write(texels.data(), texels.size());
-                    continue;
+        add(kTagTexels, 1, 0,
+            [&scene = scene_, &produce = produce_, &name = name_, compress = options_.compress,
+             stored](SectionStream& out, SectionEntry& entry) {
+                for (uint32_t i = 0; i < scene.textures.size(); ++i) {
+                    if (!produce) {
+                        stored->push_back(writeTexture(scene.textures[i], compress, out));
+                        continue;
+                    }
+                    // Only one produced texture is alive at a time: it dies at the end of
+                    // this iteration, right after its texels are written.
+                    const Texture produced = produceTexture(scene, produce, i, name);
+                    stored->push_back(writeTexture(produced, compress, out));
                 }
-                // Only one produced texture is alive at a time: it dies at the end of this
-                // iteration, right after its texels are written.
-                const Texture produced = produceTexture(scene, produce, i, name);
-                out.write(produced.texels.data(), produced.texels.size());
+                entry.count = out.written();
+            });
+    }
+
+    void addTextureRecords(std::shared_ptr<WrittenTextures> stored, std::vector<StringRef> names)
+    {
+        const auto& textures = scene_.textures;
+        add(kTagTextures, sizeof(TextureRecord), textures.size(),
+            [&textures, stored, names = std::move(names)](SectionStream& out, SectionEntry&) {
+                uint64_t texelOffset = 0;
+                uint32_t firstMip = 0;
+                for (size_t i = 0; i < textures.size(); ++i) {
+                    const Texture& t = textures[i];
+                    const WrittenTexture& s = (*stored)[i];
+                    TextureRecord r{};
+                    r.name = names[i];
+                    r.width = t.width;
+                    r.height = t.height;
+                    r.sourceWidth = t.sourceWidth;
+                    r.sourceHeight = t.sourceHeight;
+                    r.flags = (t.srgb ? kTextureSrgb : 0) | (s.zstd ? kTextureZstdLevels : 0);
+                    r.mipCount = uint32_t(s.levelBytes.size());
+                    r.firstMip = firstMip;
+                    r.format = uint32_t(s.format);
+                    r.texelOffset = texelOffset;
+                    for (uint64_t bytes : s.levelBytes)
+                        r.texelSize += bytes;
+                    texelOffset += r.texelSize;
+                    firstMip += r.mipCount;
+                    out.write(&r, sizeof r);
+                }
+            });
+        uint64_t mipCount = 0;
+        for (const Texture& t : textures)
+            mipCount += fullMipCount(t.width, t.height);
+        add(kTagMipLevels, sizeof(MipRecord), mipCount, [&textures, stored](SectionStream& out, SectionEntry&) {
+            for (size_t i = 0; i < textures.size(); ++i) {
+                const WrittenTexture& s = (*stored)[i];
+                const std::vector<MipLevel> chain = textureMipChain(textures[i].width, textures[i].height, s.format);
+                uint64_t offset = 0;
+                for (size_t l = 0; l < chain.size(); ++l) {
+                    const MipRecord r{chain[l].width, chain[l].height, offset, s.levelBytes[l]};
+                    out.write(&r, sizeof r);
+                    offset += s.levelBytes[l];
+                }
             }
         });
     }
 
     const Scene& scene_;
     const TextureProducer& produce_;
+    const PackWriteOptions& options_;
     const std::string& name_;
     StringTable strings_;
     std::vector<PlannedSection> sections_;
-    uint64_t texelBytes_ = 0;
     uint64_t keyCount_ = 0;
 };
 
 } // namespace
 
-void emitPack(Sink& sink, const Scene& scene, const TextureProducer& produce, const std::string& name)
+void emitPack(Sink& sink, const Scene& scene, const TextureProducer& produce, const PackWriteOptions& options,
+              const std::string& name)
 {
     validateScene(scene, name, produce ? TexelPolicy::MetadataOnly : TexelPolicy::Required);
-    std::vector<PlannedSection> sections = PackPlanner(scene, produce, name).plan();
+    std::vector<PlannedSection> sections = PackPlanner(scene, produce, options, name).plan();
 
-    // Lay out: header, table, then each payload at the next aligned offset.
-    const uint64_t tableBytes = sections.size() * sizeof(SectionEntry);
-    uint64_t cursor = sizeof(FileHeader) + tableBytes;
-    for (PlannedSection& s : sections) {
-        s.entry.offset = alignUp(cursor);
-        cursor = s.entry.offset + s.entry.size;
-    }
-    const uint64_t fileSize = cursor;
-
-    // Header and table are placeholders until the checksums are known.
+    // Header and table are placeholders until the sizes and checksums are known; each
+    // payload goes at the next aligned offset, its size is what it wrote.
     static const uint8_t kZeros[kAlignment] = {};
+    const uint64_t tableBytes = sections.size() * sizeof(SectionEntry);
     std::vector<uint8_t> placeholder(sizeof(FileHeader) + tableBytes, 0);
     sink.write(placeholder.data(), placeholder.size());
     uint64_t position = placeholder.size();
     for (PlannedSection& s : sections) {
+        s.entry.offset = alignUp(position);
         sink.write(kZeros, size_t(s.entry.offset - position));
         SectionStream out(sink);
-        s.emit(out);
-        if (out.written() != s.entry.size)
+        s.emit(out, s.entry);
+        s.entry.size = out.written();
+        if (s.entry.encoding == kEncodingRaw && s.entry.size != s.entry.count * s.entry.stride)
             fail(name, "internal error: section '" + tagName(s.entry.tag) + "' wrote " + std::to_string(out.written()) +
-                           " bytes, planned " + std::to_string(s.entry.size));
+                           " bytes for " + std::to_string(s.entry.count) + " elements of " +
+                           std::to_string(s.entry.stride));
         s.entry.checksum = out.digest();
         position = s.entry.offset + s.entry.size;
     }
+    const uint64_t fileSize = position;
 
     std::vector<SectionEntry> table;
     for (const PlannedSection& s : sections)
@@ -439,11 +539,12 @@ void emitPack(Sink& sink, const Scene& scene, const TextureProducer& produce, co
 
 namespace lfd {
 
-std::vector<uint8_t> writePackToMemory(const Scene& scene, const TextureProducer& produce)
+std::vector<uint8_t> writePackToMemory(const Scene& scene, const TextureProducer& produce,
+                                       const PackWriteOptions& options)
 {
     std::vector<uint8_t> bytes;
     pack::MemorySink sink(bytes);
-    pack::emitPack(sink, scene, produce, "<memory>");
+    pack::emitPack(sink, scene, produce, options, "<memory>");
     return bytes;
 }
 

@@ -1,6 +1,7 @@
 #include "gpu_scene.h"
 
 #include "gl_context.h"
+#include "gpu_texture_format.h"
 #include "scene_bindings.h"
 
 #include "lfd/scene_animation.h"
@@ -36,15 +37,49 @@ gl::Buffer makeBuffer(const void* data, size_t bytes, GLbitfield flags, size_t& 
     return gl::createBuffer(bytes, flags, data);
 }
 
-bindings::MaterialGpu toGpu(const Material& m)
+bindings::MaterialGpu toGpu(const Material& m, const std::vector<Texture>& textures)
 {
     bindings::MaterialGpu g{};
     g.baseColorFactor = m.baseColorFactor;
     g.emissiveCutoff = glm::vec4(m.emissiveFactor, m.alphaCutoff);
     g.params = glm::vec4(m.metallicFactor, m.roughnessFactor, m.normalScale, m.occlusionStrength);
-    g.flags = materialTextureFlags(m) | (m.doubleSided ? bindings::kMaterialDoubleSided : 0u);
+    const bool twoChannelNormals = m.normalTexture >= 0 && size_t(m.normalTexture) < textures.size() &&
+                                   textures[size_t(m.normalTexture)].format == TextureFormat::Bc5;
+    g.flags = materialTextureFlags(m) | (m.doubleSided ? bindings::kMaterialDoubleSided : 0u) |
+              (twoChannelNormals ? bindings::kMaterialNormalTwoChannel : 0u);
     g.alphaMode = uint32_t(m.alphaMode);
     return g;
+}
+
+// One pack texture as a GL texture holding pack levels [layout.firstPackLevel, ..): the
+// format's storage and swizzle (gpu_texture_format.h), trilinear filtering and glTF's
+// default REPEAT wrap. Without `streamed` every level is uploaded now; streamed, nothing
+// is resident yet and the base level is the coarsest: the streamer lowers it as finer
+// levels arrive, so sampling never reads a level that has not been uploaded.
+gl::Texture createGlTexture(const Texture& tex, const GpuTextureLayout& layout, bool streamed, size_t& gpuBytes)
+{
+    gl::Texture name = gl::createTexture(GL_TEXTURE_2D);
+    const GLsizei levels = GLsizei(layout.levels);
+    const uint32_t first = layout.firstPackLevel;
+    const GlTextureFormat format = glTextureFormat(tex.format, tex.srgb);
+    glTextureStorage2D(name, levels, format.internalFormat, GLsizei(tex.mips[first].width),
+                       GLsizei(tex.mips[first].height));
+    glTextureParameteriv(name, GL_TEXTURE_SWIZZLE_RGBA, format.swizzle);
+    for (GLsizei level = 0; level < levels; ++level) {
+        const MipLevel& mip = tex.mips[size_t(level) + first];
+        const uint32_t units = (mip.height + rowsPerUnit(tex.format) - 1) / rowsPerUnit(tex.format);
+        if (!streamed)
+            uploadLevelRows(name, level, tex.format, format, mip.width, mip.height, 0, units,
+                            tex.texels.data() + mip.offset);
+        gpuBytes += mip.size;
+    }
+    glTextureParameteri(name, GL_TEXTURE_BASE_LEVEL, streamed ? levels - 1 : 0);
+    glTextureParameteri(name, GL_TEXTURE_MAX_LEVEL, levels - 1);
+    glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    return name;
 }
 
 } // namespace
@@ -109,27 +144,7 @@ GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options)
         // Top levels the plan leaves out: GL level l holds pack level first + l.
         const uint32_t first = t < plan->droppedLevels.size() ? plan->droppedLevels[t] : 0u;
         const GpuTextureLayout layout{first, uint32_t(tex.mips.size()) - first};
-        gl::Texture name = gl::createTexture(GL_TEXTURE_2D);
-        const GLsizei levels = GLsizei(layout.levels);
-        glTextureStorage2D(name, levels, tex.srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8,
-                           GLsizei(tex.mips[first].width), GLsizei(tex.mips[first].height));
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        for (GLsizei level = 0; level < levels; ++level) {
-            const MipLevel& mip = tex.mips[size_t(level) + first];
-            if (!options.streamed)
-                glTextureSubImage2D(name, level, 0, 0, GLsizei(mip.width), GLsizei(mip.height), GL_RGBA,
-                                    GL_UNSIGNED_BYTE, tex.texels.data() + mip.offset);
-            gpuBytes_ += mip.size;
-        }
-        // Streamed: nothing is resident yet; the streamer lowers the base level as finer
-        // levels arrive, so sampling never reads a level that has not been uploaded.
-        glTextureParameteri(name, GL_TEXTURE_BASE_LEVEL, options.streamed ? levels - 1 : 0);
-        glTextureParameteri(name, GL_TEXTURE_MAX_LEVEL, levels - 1);
-        glTextureParameteri(name, GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
-        glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        textures_.push_back(std::move(name));
+        textures_.push_back(createGlTexture(tex, layout, options.streamed, gpuBytes_));
         layouts_.push_back(layout);
         // The texels live on the GPU now; keep the metadata only.
         std::vector<uint8_t>().swap(tex.texels);
@@ -140,8 +155,8 @@ GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options)
     std::vector<bindings::MaterialGpu> materials;
     materials.reserve(scene_.materials.size() + 1);
     for (const Material& m : scene_.materials)
-        materials.push_back(toGpu(m));
-    materials.push_back(toGpu(Material{}));
+        materials.push_back(toGpu(m, scene_.textures));
+    materials.push_back(toGpu(Material{}, scene_.textures));
     materialSsbo_ = makeBuffer(materials.data(), materials.size() * sizeof(materials[0]), 0, gpuBytes_);
     statsSsbo_ = makeBuffer(options.streamed ? nullptr : scene_.triangleStats.data(),
                             scene_.triangleStats.size() * sizeof(TriangleStats), streamedFlags, gpuBytes_);

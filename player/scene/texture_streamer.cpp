@@ -1,5 +1,6 @@
 #include "texture_streamer.h"
 
+#include "gpu_texture_format.h"
 #include "scene_bindings.h"
 
 #include "lfd/pack_layout.h"
@@ -38,11 +39,11 @@ TextureStreamer::TextureStreamer(GpuScene& scene, std::shared_ptr<MappedPack> pa
             const uint32_t packLevel = layout.firstPackLevel + l;
             const MipLevel& mip = textures[t].mips[packLevel];
             levels.push_back(Job{pack_->mipBytes(uint32_t(t), packLevel), 0, t, l, mip.width, mip.height,
-                                 pack_->mipTexelOffset(uint32_t(t), packLevel)});
+                                 pack_->mipTexelOffset(uint32_t(t), packLevel), mip.size});
         }
     }
     std::stable_sort(levels.begin(), levels.end(), [](const Job& a, const Job& b) {
-        return a.bytes.size() != b.bytes.size() ? a.bytes.size() < b.bytes.size() : a.texture < b.texture;
+        return a.texelBytes != b.texelBytes ? a.texelBytes < b.texelBytes : a.texture < b.texture;
     });
     firstFinerJob_ = jobs_.size();
     jobs_.insert(jobs_.end(), levels.begin(), levels.end());
@@ -58,11 +59,67 @@ TextureStreamer::TextureStreamer(GpuScene& scene, std::shared_ptr<MappedPack> pa
         firstFinerJob_ = j + 1;
     }
     for (const Job& job : jobs_)
-        total_ += job.bytes.size();
+        total_ += job.texture == SIZE_MAX ? job.bytes.size() : job.texelBytes;
     if (textures.empty()) {
         pack_->finishTexelVerification(); // TEXL is empty: its checksum is still checked
         verified_ = true;
     }
+}
+
+void TextureStreamer::uploadGeometryChunk(Job& job)
+{
+    // GL copies the client bytes before glNamedBufferSubData returns (GL 4.5 section
+    // 6.2), so the chunk's pages can be dropped right after the call.
+    const uint64_t n = std::min<uint64_t>(chunkBytes_, job.bytes.size() - doneInJob_);
+    const uint8_t* src = job.bytes.data() + doneInJob_;
+    glNamedBufferSubData(job.buffer, GLintptr(doneInJob_), GLsizeiptr(n), src);
+    pack_->releasePages(src, size_t(n));
+    doneInJob_ += n;
+    uploaded_ += n;
+}
+
+bool TextureStreamer::uploadTextureChunk(Job& job)
+{
+    // Whole row units per chunk (texel rows, or rows of 4x4 blocks), at least one: a
+    // 65536-wide RGBA8 level has 256 KiB rows.
+    const Texture& texture = pack_->textures()[job.texture];
+    const TextureFormat format = texture.format;
+    const GlTextureFormat gl = glTextureFormat(format, texture.srgb);
+    const uint64_t unitBytes = unitRowBytes(format, job.width);
+    const uint64_t unitCount = (job.height + rowsPerUnit(format) - 1) / rowsPerUnit(format);
+    const uint64_t units = std::clamp<uint64_t>(chunkBytes_ / unitBytes, 1, unitCount - doneInJob_);
+    const uint64_t offset = doneInJob_ * unitBytes;
+    const unsigned name = scene_.texture(int32_t(job.texture));
+    if (pack_->levelsZstd(uint32_t(job.texture))) {
+        if (!inflater_)
+            inflater_ = std::make_unique<LevelInflater>(job.bytes, job.texelBytes, pack_->name(),
+                                                        "texture " + std::to_string(job.texture) + " level " +
+                                                            std::to_string(job.glLevel));
+        staging_.resize(size_t(units * unitBytes));
+        inflater_->read(staging_.data(), staging_.size());
+        uploadLevelRows(name, GLint(job.glLevel), format, gl, job.width, job.height, uint32_t(doneInJob_),
+                        uint32_t(units), staging_.data());
+    } else {
+        const uint8_t* src = job.bytes.data() + offset;
+        uploadLevelRows(name, GLint(job.glLevel), format, gl, job.width, job.height, uint32_t(doneInJob_),
+                        uint32_t(units), src);
+        pack_->noteTexelsRead(job.texelOffset + offset, units * unitBytes);
+        pack_->releasePages(src, size_t(units * unitBytes));
+    }
+    doneInJob_ += units;
+    uploaded_ += units * unitBytes;
+    if (doneInJob_ < unitCount)
+        return false;
+    if (inflater_) {
+        // The whole frame has been read (LevelInflater checked it ends with the level).
+        pack_->noteTexelsRead(job.texelOffset, job.bytes.size());
+        pack_->releasePages(job.bytes.data(), job.bytes.size());
+        inflater_.reset();
+    }
+    // Levels arrive finest-last per texture, so this one is the finest resident.
+    resident_[job.texture] += 1;
+    glTextureParameteri(name, GL_TEXTURE_BASE_LEVEL, GLint(job.glLevel));
+    return true;
 }
 
 void TextureStreamer::uploadChunk()
@@ -70,35 +127,10 @@ void TextureStreamer::uploadChunk()
     Job& job = jobs_[next_];
     bool jobDone = false;
     if (job.texture == SIZE_MAX) {
-        // GL copies the client bytes before glNamedBufferSubData returns (GL 4.5 section
-        // 6.2), so the chunk's pages can be dropped right after the call.
-        const uint64_t n = std::min<uint64_t>(chunkBytes_, job.bytes.size() - doneInJob_);
-        const uint8_t* src = job.bytes.data() + doneInJob_;
-        glNamedBufferSubData(job.buffer, GLintptr(doneInJob_), GLsizeiptr(n), src);
-        pack_->releasePages(src, size_t(n));
-        doneInJob_ += n;
-        uploaded_ += n;
+        uploadGeometryChunk(job);
         jobDone = doneInJob_ == job.bytes.size();
     } else {
-        // Whole rows per chunk (at least one: a 65536-wide level has 256 KiB rows).
-        const uint64_t rowBytes = uint64_t(job.width) * 4;
-        const uint64_t rows = std::clamp<uint64_t>(chunkBytes_ / rowBytes, 1, job.height - doneInJob_);
-        const uint64_t offset = doneInJob_ * rowBytes;
-        const uint8_t* src = job.bytes.data() + offset;
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
-        glTextureSubImage2D(scene_.texture(int32_t(job.texture)), GLint(job.glLevel), 0, GLint(doneInJob_),
-                            GLsizei(job.width), GLsizei(rows), GL_RGBA, GL_UNSIGNED_BYTE, src);
-        pack_->noteTexelsRead(job.texelOffset + offset, rows * rowBytes);
-        pack_->releasePages(src, size_t(rows * rowBytes));
-        doneInJob_ += rows;
-        uploaded_ += rows * rowBytes;
-        jobDone = doneInJob_ == job.height;
-        if (jobDone) {
-            // Levels arrive finest-last per texture, so this one is the finest resident.
-            resident_[job.texture] += 1;
-            glTextureParameteri(scene_.texture(int32_t(job.texture)), GL_TEXTURE_BASE_LEVEL, GLint(job.glLevel));
-        }
+        jobDone = uploadTextureChunk(job);
     }
     if (jobDone) {
         ++next_;

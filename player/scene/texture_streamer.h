@@ -7,6 +7,9 @@
 // the geometry and the coarsest levels are in and sharpens as finer levels arrive.
 // The texel checksum is computed on the way (MappedPack::noteTexelsRead) and compared
 // when the last level is resident: a corrupt pack throws lfd::PackError then.
+// Block-compressed levels upload as stored, in whole rows of 4x4 blocks; zstd-stored
+// RGBA8 levels are inflated a chunk at a time (lfd::LevelInflater) into one staging
+// buffer of at most `chunkBytes`.
 #pragma once
 
 #include "gpu_scene.h"
@@ -46,20 +49,25 @@ public:
 
 private:
     struct Job {
-        std::span<const uint8_t> bytes;
+        std::span<const uint8_t> bytes; // as stored in the pack (a zstd frame for zstd levels)
         unsigned buffer = 0;       // geometry: destination buffer
         size_t texture = SIZE_MAX; // texture: index, GL level, size, offset in TEXL
         uint32_t glLevel = 0, width = 0, height = 0;
         uint64_t texelOffset = 0;
+        uint64_t texelBytes = 0; // the level as the GPU takes it
     };
     void uploadChunk();
+    void uploadGeometryChunk(Job& job);
+    bool uploadTextureChunk(Job& job); // true when the level is complete
 
     GpuScene& scene_;
     std::shared_ptr<MappedPack> pack_;
     size_t chunkBytes_;
     std::vector<Job> jobs_;
     size_t next_ = 0, firstFinerJob_ = 0;
-    uint64_t doneInJob_ = 0; // bytes (geometry) or rows (texture) of jobs_[next_]
+    uint64_t doneInJob_ = 0; // bytes (geometry) or row units (texture) of jobs_[next_]
+    std::unique_ptr<LevelInflater> inflater_; // the zstd level being streamed
+    std::vector<uint8_t> staging_;
     uint64_t uploaded_ = 0, total_ = 0;
     std::vector<uint32_t> resident_;
     bool verified_ = false;

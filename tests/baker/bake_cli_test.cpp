@@ -1,6 +1,8 @@
 // End-to-end tests of the lfd-bake command line: bake the project's samples (and the
 // third-party scenes when ../shared/scenes exists), verify with --inspect, check the
 // tessellation bound on the written pack, and check bad inputs fail cleanly.
+#include "texture_compression.h"
+
 #include "lfd/pack.h"
 
 #include "skip_or_fail.h"
@@ -13,6 +15,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -193,6 +196,47 @@ TEST_F(BakeCli, InspectRejectsCorruptPack)
     const RunResult t = run(kBake + " --inspect " + quoted(pack));
     EXPECT_NE(t.exitCode, 0);
     EXPECT_EQ(lineCount(t.out), 1u) << t.out;
+}
+
+// The gallery's materials read colour, a normal map and roughness-metallic: the default
+// bake block-compresses each by its use and reports format, bytes and PSNR; `none`
+// keeps RGBA8 (zstd levels), several times the texel bytes.
+TEST_F(BakeCli, TexturesAreBlockCompressedByUseUnlessAskedNotTo)
+{
+    const fs::path bc = dir_ / "gallery_bc.lfdpack", none = dir_ / "gallery_none.lfdpack";
+    const RunResult r = run(kBake + " " + quoted(dir_ / "samples/gallery/gallery.gltf") + " -o " + quoted(bc));
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_TRUE(std::regex_search(r.out, std::regex(R"(\(sRGB\): \d+x\d+[^\n]*, BC1 [0-9.]+ [KM]iB, PSNR [0-9.]+ dB)")))
+        << r.out;
+    EXPECT_NE(r.out.find(", BC5 "), std::string::npos) << r.out;
+    const RunResult n = run(kBake + " " + quoted(dir_ / "samples/gallery/gallery.gltf") + " -o " + quoted(none) +
+                            " --texture-compression none --quiet");
+    ASSERT_EQ(n.exitCode, 0) << n.out;
+
+    const lfd::Scene blocks = lfd::readPack(bc), rgba8 = lfd::readPack(none);
+    ASSERT_EQ(blocks.textures.size(), rgba8.textures.size());
+    const std::vector<uint32_t> uses = lfd::bake::textureUses(blocks);
+    uint64_t blockBytes = 0, rgbaBytes = 0;
+    for (size_t t = 0; t < blocks.textures.size(); ++t) {
+        EXPECT_EQ(rgba8.textures[t].format, lfd::TextureFormat::Rgba8);
+        EXPECT_EQ(blocks.textures[t].format, lfd::bake::chooseTextureFormat(uses[t], true)) << "texture " << t;
+        EXPECT_NE(blocks.textures[t].format, lfd::TextureFormat::Rgba8);
+        blockBytes += blocks.textures[t].texels.size();
+        rgbaBytes += rgba8.textures[t].texels.size();
+    }
+    EXPECT_LE(blockBytes * 4, rgbaBytes);
+    // (The files: the samples' procedural textures are so regular that zstd shrinks the
+    // RGBA8 levels below the blocks; real textures do not, see README "Texture compression".)
+
+    const RunResult inspect = run(kBake + " --inspect " + quoted(bc));
+    EXPECT_EQ(inspect.exitCode, 0) << inspect.out;
+    EXPECT_NE(inspect.out.find(" BC5, "), std::string::npos) << inspect.out;
+    EXPECT_NE(inspect.out.find("zstd"), std::string::npos) << "geometry sections are zstd-compressed: " << inspect.out;
+
+    const RunResult bad = run(kBake + " " + quoted(dir_ / "samples/gallery/gallery.gltf") + " -o " +
+                              quoted(dir_ / "x.lfdpack") + " --texture-compression bc7");
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.out.find("--texture-compression"), std::string::npos) << bad.out;
 }
 
 TEST_F(BakeCli, BadArgumentsAreRejected)

@@ -1,10 +1,14 @@
-// Format stability: tests/data/golden_v1.lfdpack was written from goldenScene() below.
-// The reader must keep reading it, and today's writer must reproduce it byte for byte.
-// An intentional format change is a new format version (golden_v2), not a regenerated v1.
+// Format stability: tests/data/golden_v<N>.lfdpack were written from goldenScene() (v1)
+// and goldenSceneV2() (v2) below. The reader must keep reading both, and today's writer
+// must reproduce the current version's file byte for byte. An intentional format change
+// is a new format version (golden_v3), not a regenerated v2; v1 is frozen (no writer of
+// it is left).
 //
-// Regenerate (only when goldenScene() itself changes):
+// Regenerate v2 (only when goldenSceneV2() itself changes):
 //   LFD_REGENERATE_GOLDEN=1 ./lfd_formats_tests --gtest_filter='PackGolden.*'
 #include "pack_test_scenes.h"
+
+#include "lfd/pack_mapped.h"
 
 #include <xxhash.h>
 
@@ -17,7 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kGoldenPath = fs::path(LFD_TEST_DATA) / "golden_v1.lfdpack";
+const fs::path kGoldenV1Path = fs::path(LFD_TEST_DATA) / "golden_v1.lfdpack";
+const fs::path kGoldenV2Path = fs::path(LFD_TEST_DATA) / "golden_v2.lfdpack";
 
 // Fixed forever: every section of version 1, tiny textures so the file stays small.
 Scene goldenScene()
@@ -76,9 +81,38 @@ Scene goldenScene()
     return s;
 }
 
-std::vector<uint8_t> goldenBytes()
+// Fixed forever: version 1's scene plus what version 2 added - a zstd-compressed
+// geometry stream (a grid of extra vertices compresses, the four quad vertices alone
+// would not), zstd RGBA8 levels, and one texture of every block format.
+Scene goldenSceneV2()
 {
-    std::ifstream in(kGoldenPath, std::ios::binary);
+    Scene s = goldenScene();
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 16; ++x) {
+            s.vertices.positions.push_back({x / 15.0f, y / 15.0f, 0.0f});
+            s.vertices.normals.push_back({0, 0, 1});
+            s.vertices.tangents.push_back({1, 0, 0, 1});
+            s.vertices.uvs.push_back({x / 15.0f, y / 15.0f});
+        }
+    Texture smooth = makeTexture("base", 16, 16, true, 3); // compressible: zstd levels
+    for (size_t i = 0; i < smooth.texels.size(); ++i)
+        smooth.texels[i] = uint8_t(i / 64);
+    s.textures = {smooth, makeTexture("normal", 8, 8, false, 4, TextureFormat::Bc5),
+                  makeTexture("colour", 6, 5, true, 5, TextureFormat::Bc1),
+                  makeTexture("mask", 4, 4, true, 6, TextureFormat::Bc3),
+                  makeTexture("occlusion", 3, 3, false, 7, TextureFormat::Bc4)};
+    Material& m = s.materials[0];
+    m.baseColorTexture = 3;
+    m.metallicRoughnessTexture = 2;
+    m.normalTexture = 1;
+    m.occlusionTexture = 4;
+    m.emissiveTexture = 0;
+    return s;
+}
+
+std::vector<uint8_t> goldenBytes(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
     return std::vector<uint8_t>(std::istreambuf_iterator<char>(in), {});
 }
 
@@ -96,21 +130,48 @@ protected:
     {
         const char* regenerate = std::getenv("LFD_REGENERATE_GOLDEN");
         if (regenerate && std::string(regenerate) == "1")
-            writePack(kGoldenPath, goldenScene());
+            writePack(kGoldenV2Path, goldenSceneV2());
     }
 };
 
-TEST_F(PackGolden, CommittedFileIsSmallAndReadable)
+TEST_F(PackGolden, CommittedV1FileIsStillRead)
 {
-    ASSERT_TRUE(fs::exists(kGoldenPath)) << kGoldenPath << " is missing (LFD_REGENERATE_GOLDEN=1 writes it)";
-    EXPECT_LT(fs::file_size(kGoldenPath), 16u * 1024u);
-    expectSameScene(goldenScene(), readPack(kGoldenPath));
+    ASSERT_TRUE(fs::exists(kGoldenV1Path)) << kGoldenV1Path << " is missing";
+    expectSameScene(goldenScene(), readPack(kGoldenV1Path));
+    EXPECT_NO_THROW(MappedPack{kGoldenV1Path});
+}
+
+TEST_F(PackGolden, CommittedV2FileIsSmallAndReadable)
+{
+    ASSERT_TRUE(fs::exists(kGoldenV2Path)) << kGoldenV2Path << " is missing (LFD_REGENERATE_GOLDEN=1 writes it)";
+    EXPECT_LT(fs::file_size(kGoldenV2Path), 16u * 1024u);
+    expectSameScene(goldenSceneV2(), readPack(kGoldenV2Path));
+}
+
+// The v2 file really holds what v2 added: a zstd section, zstd texture levels and every
+// block format.
+TEST_F(PackGolden, CommittedV2FileUsesEveryEncoding)
+{
+    PackInfo info;
+    readPack(kGoldenV2Path, &info);
+    EXPECT_EQ(info.formatVersion, 2u);
+    bool zstdSection = false, rawGeometry = false;
+    for (const PackSectionInfo& s : info.sections) {
+        zstdSection = zstdSection || s.encoding == pack::kEncodingZstd;
+        rawGeometry = rawGeometry || (s.tag == "INDX" && s.encoding == pack::kEncodingRaw);
+    }
+    EXPECT_TRUE(zstdSection);
+    EXPECT_TRUE(rawGeometry);
+    const MappedPack mapped(kGoldenV2Path);
+    EXPECT_TRUE(mapped.levelsZstd(0));
+    for (uint32_t t = 1; t < 5; ++t)
+        EXPECT_FALSE(mapped.levelsZstd(t));
 }
 
 TEST_F(PackGolden, WriterReproducesTheCommittedBytes)
 {
-    const std::vector<uint8_t> committed = goldenBytes();
-    const std::vector<uint8_t> today = writePackToMemory(goldenScene());
+    const std::vector<uint8_t> committed = goldenBytes(kGoldenV2Path);
+    const std::vector<uint8_t> today = writePackToMemory(goldenSceneV2());
     ASSERT_EQ(today.size(), committed.size());
     for (size_t i = 0; i < today.size(); ++i)
         ASSERT_EQ(today[i], committed[i]) << "first difference at byte " << i;
@@ -118,12 +179,13 @@ TEST_F(PackGolden, WriterReproducesTheCommittedBytes)
 
 // The header fields at the offsets formats/README.md documents, read without pack_layout.h
 // structs, with the checksum computed by xxhash directly.
-TEST_F(PackGolden, HeaderMatchesTheDocumentedLayout)
+void expectDocumentedLayout(const fs::path& path, uint32_t version)
 {
-    const std::vector<uint8_t> bytes = goldenBytes();
+    SCOPED_TRACE(path.string());
+    const std::vector<uint8_t> bytes = goldenBytes(path);
     ASSERT_GE(bytes.size(), 64u);
     EXPECT_EQ(std::string(reinterpret_cast<const char*>(bytes.data()), 8), std::string("LFDPACK\x1a", 8));
-    EXPECT_EQ(at<uint32_t>(bytes, 8), 1u);   // format version
+    EXPECT_EQ(at<uint32_t>(bytes, 8), version); // format version
     EXPECT_EQ(at<uint32_t>(bytes, 12), 64u); // header size
     const uint32_t sectionCount = at<uint32_t>(bytes, 16);
     EXPECT_EQ(sectionCount, 20u);             // every v1 section, optional streams included
@@ -139,11 +201,22 @@ TEST_F(PackGolden, HeaderMatchesTheDocumentedLayout)
         const uint64_t size = at<uint64_t>(bytes, entry + 16);
         const uint64_t count = at<uint64_t>(bytes, entry + 24);
         const uint32_t stride = at<uint32_t>(bytes, entry + 40);
+        const uint32_t encoding = at<uint32_t>(bytes, entry + 44);
         EXPECT_EQ(at<uint32_t>(bytes, entry + 4), 1u);
         EXPECT_EQ(offset % 64, 0u);
-        EXPECT_EQ(size, count * stride);
+        EXPECT_LE(encoding, version == 1 ? 0u : 1u);
+        if (encoding == 0)
+            EXPECT_EQ(size, count * stride);
+        else
+            EXPECT_EQ(at<uint32_t>(bytes, size_t(offset)), 0xFD2FB528u); // zstd frame magic
         EXPECT_EQ(at<uint64_t>(bytes, entry + 32), XXH3_64bits(bytes.data() + offset, size));
     }
+}
+
+TEST_F(PackGolden, HeaderMatchesTheDocumentedLayout)
+{
+    expectDocumentedLayout(kGoldenV1Path, 1);
+    expectDocumentedLayout(kGoldenV2Path, 2);
 }
 
 } // namespace

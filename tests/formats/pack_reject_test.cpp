@@ -26,7 +26,9 @@ Scene smallScene()
     return s;
 }
 
-std::vector<uint8_t> smallPack() { return writePackToMemory(smallScene()); }
+// Raw sections, so a test can patch records in place (the zstd encoding has tests of
+// its own below).
+std::vector<uint8_t> smallPack() { return writePackToMemory(smallScene(), {}, PackWriteOptions{false}); }
 
 // Returns the error message, or "" (with a test failure) when the pack was accepted.
 std::string rejection(const std::vector<uint8_t>& bytes, const std::string& name = kName)
@@ -84,10 +86,10 @@ TEST(PackReject, WrongFormatVersion)
 {
     std::vector<uint8_t> bytes = smallPack();
     FileHeader h = headerOf(bytes);
-    h.formatVersion = 2;
+    h.formatVersion = 3;
     setHeader(bytes, h);
     resealPack(bytes);
-    expectRejected(bytes, "unsupported format version 2 (this reader supports 1)");
+    expectRejected(bytes, "unsupported format version 3 (this reader supports 1 to 2)");
     h.formatVersion = 0;
     setHeader(bytes, h);
     expectRejected(bytes, "unsupported format version 0");
@@ -533,8 +535,8 @@ TEST(PackReject, InvalidEnumsAndFlags)
     expectPatchRejected([](std::vector<uint8_t>& b) { writeElement<uint32_t>(b, kTagTriangleStats, 0, 4u, 20); },
                         "triangle 0: unknown flags");
     expectPatchRejected(
-        [](std::vector<uint8_t>& b) { writeElement<uint32_t>(b, kTagTextures, 0, 3, offsetof(TextureRecord, flags)); },
-        "texture 0: unknown flags 3");
+        [](std::vector<uint8_t>& b) { writeElement<uint32_t>(b, kTagTextures, 0, 4, offsetof(TextureRecord, flags)); },
+        "texture 0: unknown flags 4");
     expectPatchRejected(
         [](std::vector<uint8_t>& b) {
             writeElement<uint32_t>(b, kTagPrimitives, 0, 1, offsetof(PrimitiveRecord, reserved));

@@ -15,8 +15,10 @@
 
 namespace lfd::test {
 
-// Deterministic RGBA8 texels for a full mip chain, different per texture `seed`.
-inline Texture makeTexture(const std::string& name, uint32_t width, uint32_t height, bool srgb, uint8_t seed)
+// Deterministic texels (RGBA8 texels or BC blocks) for a full mip chain, different per
+// texture `seed`.
+inline Texture makeTexture(const std::string& name, uint32_t width, uint32_t height, bool srgb, uint8_t seed,
+                           TextureFormat format = TextureFormat::Rgba8)
 {
     Texture t;
     t.name = name;
@@ -25,13 +27,15 @@ inline Texture makeTexture(const std::string& name, uint32_t width, uint32_t hei
     t.sourceWidth = width * 2 + 1;
     t.sourceHeight = height * 3;
     t.srgb = srgb;
+    t.format = format;
     uint64_t offset = 0;
     for (uint32_t l = 0;; ++l) {
         MipLevel level;
         level.width = std::max(1u, width >> l);
         level.height = std::max(1u, height >> l);
         level.offset = offset;
-        level.size = uint64_t(level.width) * level.height * 4;
+        level.size = format == TextureFormat::Rgba8 ? uint64_t(level.width) * level.height * 4
+                                                    : textureLevelBytes(format, level.width, level.height);
         offset += level.size;
         t.mips.push_back(level);
         if (level.width == 1 && level.height == 1)
@@ -159,6 +163,7 @@ inline void expectSameTexture(const Texture& a, const Texture& b, size_t i)
     EXPECT_EQ(a.sourceWidth, b.sourceWidth);
     EXPECT_EQ(a.sourceHeight, b.sourceHeight);
     EXPECT_EQ(a.srgb, b.srgb);
+    EXPECT_EQ(a.format, b.format);
     ASSERT_EQ(a.mips.size(), b.mips.size());
     for (size_t l = 0; l < a.mips.size(); ++l) {
         EXPECT_EQ(a.mips[l].width, b.mips[l].width);

@@ -35,6 +35,7 @@ struct PackSectionInfo {
     uint64_t size = 0;
     uint64_t checksum = 0; // XXH3-64 of the payload
     uint64_t count = 0;    // elements in the section
+    uint32_t encoding = 0; // pack::SectionEncoding: 0 raw, 1 zstd (size is then the stored bytes)
 };
 
 struct PackInfo {
@@ -43,12 +44,20 @@ struct PackInfo {
     std::vector<PackSectionInfo> sections;
 };
 
+// How payloads are stored (formats/README.md "Compression"). Block-compressed textures
+// are stored as they are either way.
+struct PackWriteOptions {
+    // zstd for the geometry and record sections and for every RGBA8 texture's levels,
+    // wherever it makes them smaller. Off: every byte stored raw (as format 1 did).
+    bool compress = true;
+};
+
 // Writes `scene` to `path` atomically: a temporary file next to `path` is written,
 // flushed and renamed over `path`; on any failure the temporary is removed and `path`
 // is left untouched. If `produce` is set, texture i's texels come from produce(i).
 // Throws PackError.
 void writePack(const std::filesystem::path& path, const Scene& scene,
-               const TextureProducer& produce = {});
+               const TextureProducer& produce = {}, const PackWriteOptions& options = {});
 
 // Reads and fully validates a pack. Throws PackError (one line: "<file>: <problem>").
 // `info`, if given, receives the section table (what verifyPack returns) from the same read.
@@ -58,7 +67,8 @@ Scene readPack(const std::filesystem::path& path, PackInfo* info = nullptr);
 PackInfo verifyPack(const std::filesystem::path& path);
 
 // In-memory variants (used by tests and fuzzing). `name` is used in error messages.
-std::vector<uint8_t> writePackToMemory(const Scene& scene, const TextureProducer& produce = {});
+std::vector<uint8_t> writePackToMemory(const Scene& scene, const TextureProducer& produce = {},
+                                       const PackWriteOptions& options = {});
 Scene readPackFromMemory(const uint8_t* data, size_t size, const std::string& name);
 
 } // namespace lfd

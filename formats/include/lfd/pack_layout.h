@@ -1,4 +1,4 @@
-// .lfdpack version 1 on-disk layout: magic, versions, section tags and the byte layout
+// .lfdpack version 2 on-disk layout: magic, versions, section tags and the byte layout
 // of the header, the section table and every fixed-size payload record. These structs
 // are defined once here and mirrored field by field in formats/README.md; the writer,
 // the reader and the tests all use them, nothing restates offsets by hand.
@@ -21,8 +21,13 @@ static_assert(std::endian::native == std::endian::little,
 
 // "LFDPACK" + 0x1A (stops `type`/`cat` on Windows, catches text-mode transfers).
 inline constexpr char kMagic[8] = {'L', 'F', 'D', 'P', 'A', 'C', 'K', '\x1A'};
-inline constexpr uint32_t kFormatVersion = 1;
-inline constexpr uint32_t kSectionVersion = 1; // every section of format version 1
+// Version 2 gave meaning to two version-1 reserved fields: the section entry's
+// `encoding` (zstd sections) and the texture record's `format` (block-compressed
+// textures, zstd-compressed texel levels). A version-1 pack has zeros there and reads as
+// before; kOldestFormatVersion is the oldest this reader accepts.
+inline constexpr uint32_t kFormatVersion = 2;
+inline constexpr uint32_t kOldestFormatVersion = 1;
+inline constexpr uint32_t kSectionVersion = 1; // every section of format versions 1 and 2
 // Section payloads start at multiples of this (a cache line; satisfies every std430 and
 // buffer-offset alignment the player asks for, and page-friendly for mmap).
 inline constexpr uint64_t kAlignment = 64;
@@ -81,9 +86,24 @@ struct SectionEntry {
     uint64_t count;    // elements in the payload
     uint64_t checksum; // XXH3_64bits(seed 0) of the payload bytes
     uint32_t stride;   // bytes per element (1 for byte blobs)
-    uint32_t reserved; // 0
+    uint32_t encoding; // SectionEncoding (format 2; 0 in format 1)
 };
 static_assert(sizeof(SectionEntry) == 48 && offsetof(SectionEntry, stride) == 40);
+
+// How a payload is stored. Raw: `size == count * stride`. Zstd: the payload is one zstd
+// frame whose content is the count * stride bytes a raw section would hold; `size` and
+// the checksum cover the stored (compressed) bytes. TEXL is always raw (its levels carry
+// their own encoding, see kTextureZstdLevels).
+enum SectionEncoding : uint32_t {
+    kEncodingRaw = 0,
+    kEncodingZstd = 1,
+};
+// A zstd section may expand to at most this many times its stored size, or to
+// kZstdSmallSectionBytes, whichever is larger: decompression allocates the declared size
+// up front, so a forged count cannot make a small file claim gigabytes. The writer
+// stores a section raw when its data compresses further than that.
+inline constexpr uint64_t kZstdMaxRatio = 1024;
+inline constexpr uint64_t kZstdSmallSectionBytes = uint64_t(16) << 20;
 
 // A string in STRS: UTF-8 bytes [offset, offset + length), not NUL-terminated.
 struct StringRef {
@@ -133,6 +153,9 @@ static_assert(sizeof(MaterialRecord) == 96 && offsetof(MaterialRecord, alphaMode
               offsetof(MaterialRecord, name) == 80);
 
 inline constexpr uint32_t kTextureSrgb = 1u << 0;
+// Format 2: every mip level is a zstd frame of its texels; MIPS offset/size are the stored
+// bytes. Set only for RGBA8 textures (block-compressed levels are stored as they are).
+inline constexpr uint32_t kTextureZstdLevels = 1u << 1;
 
 struct TextureRecord { // TEXD, 64 bytes
     StringRef name;
@@ -140,12 +163,12 @@ struct TextureRecord { // TEXD, 64 bytes
     uint32_t height;
     uint32_t sourceWidth;
     uint32_t sourceHeight;
-    uint32_t flags;     // kTextureSrgb
+    uint32_t flags;     // kTextureSrgb | kTextureZstdLevels
     uint32_t mipCount;  // full chain: floor(log2(max(width, height))) + 1
     uint32_t firstMip;  // index into MIPS
-    uint32_t reserved0;
+    uint32_t format;    // lfd::TextureFormat (format 2; 0 = RGBA8 in format 1)
     uint64_t texelOffset; // into TEXL
-    uint64_t texelSize;   // sum of the levels' sizes
+    uint64_t texelSize;   // sum of the levels' stored sizes
     uint64_t reserved1;
 };
 static_assert(sizeof(TextureRecord) == 64 && offsetof(TextureRecord, texelOffset) == 40);
@@ -154,7 +177,7 @@ struct MipRecord { // MIPS, 24 bytes
     uint32_t width;
     uint32_t height;
     uint64_t offset; // relative to the texture's texelOffset
-    uint64_t size;   // width * height * 4
+    uint64_t size;   // stored bytes: lfd::textureLevelBytes, or the zstd frame's size
 };
 static_assert(sizeof(MipRecord) == 24);
 

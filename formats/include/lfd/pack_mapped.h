@@ -23,6 +23,32 @@
 
 namespace lfd {
 
+// Decompresses one zstd-stored texture level (kTextureZstdLevels) piece by piece, so a
+// streamer holds one chunk of it, not the whole level. Throws PackError (one line naming
+// `name` and `what`) on a corrupt, truncated or over-long frame; the last read() checks
+// that the frame ends exactly where the level does.
+class LevelInflater {
+public:
+    LevelInflater(std::span<const uint8_t> frame, uint64_t size, std::string name, std::string what);
+    ~LevelInflater();
+    LevelInflater(const LevelInflater&) = delete;
+    LevelInflater& operator=(const LevelInflater&) = delete;
+
+    // The next n bytes of the level.
+    void read(uint8_t* out, size_t n);
+    // Decodes (and checks) the rest without keeping it.
+    void skipAll();
+    uint64_t remaining() const { return size_ - produced_; }
+
+private:
+    struct State;
+    std::span<const uint8_t> frame_;
+    uint64_t size_ = 0, produced_ = 0;
+    size_t consumed_ = 0;
+    std::string name_, what_;
+    std::unique_ptr<State> state_;
+};
+
 class MappedPack {
 public:
     // Maps `path` and validates everything but the texel checksum. Counts and sizes are
@@ -44,12 +70,16 @@ public:
     // Texture metadata (mip chains), kept for the texel accessors.
     const std::vector<Texture>& textures() const { return textures_; }
 
-    // The payload of section `tag` (pack_layout.h kTag*) in the mapping; empty when absent.
-    // Every payload but TEXL has been checksummed.
+    // The content of section `tag` (pack_layout.h kTag*): the mapping for raw sections,
+    // the inflated copy for zstd ones; empty when absent. Every payload but TEXL has been
+    // checksummed.
     std::span<const uint8_t> section(uint32_t tag) const;
-    // Mip `level` of texture `texture` in the mapping (RGBA8 rows, top to bottom), not yet
-    // verified: pass what is read to noteTexelsRead before releasing its pages.
+    // Mip `level` of texture `texture` in the mapping as stored, not yet verified: pass
+    // what is read to noteTexelsRead before releasing its pages. The level's texels as
+    // the GPU takes them (rows of texels or of 4x4 blocks, textures()[t].format) when
+    // levelsZstd(texture) is false; a zstd frame of them (LevelInflater) when it is true.
     std::span<const uint8_t> mipBytes(uint32_t texture, uint32_t level) const;
+    bool levelsZstd(uint32_t texture) const { return levelsZstd_.at(texture); }
     // Byte offset of mipBytes(texture, level) within the TEXL payload.
     uint64_t mipTexelOffset(uint32_t texture, uint32_t level) const;
 
@@ -82,8 +112,10 @@ private:
     Scene scene_;
     std::vector<Texture> textures_; // scene_.textures (metadata only), outlives takeScene()
     uint64_t texlOffset_ = 0, texlSize_ = 0, texlChecksum_ = 0;
-    std::vector<uint64_t> textureTexelStart_; // offset of each texture's level 0 in TEXL
+    std::vector<bool> levelsZstd_;
+    std::vector<std::vector<std::pair<uint64_t, uint64_t>>> storedLevels_; // (offset in TEXL, bytes)
     std::vector<std::pair<uint32_t, std::span<const uint8_t>>> sections_;
+    std::vector<std::pair<uint32_t, std::vector<uint8_t>>> inflated_; // zstd sections' content
     std::unique_ptr<HashState> hash_;
     uint64_t hashedUpTo_ = 0;
     bool verified_ = false;

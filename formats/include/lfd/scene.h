@@ -112,10 +112,32 @@ struct MipLevel {
     uint32_t width = 0;
     uint32_t height = 0;
     uint64_t offset = 0; // byte offset into Texture::texels
-    uint64_t size = 0;   // width * height * 4
+    uint64_t size = 0;   // textureLevelBytes(format, width, height)
+
+    bool operator==(const MipLevel&) const = default;
 };
 
-// RGBA8 texture with its full mip chain (level 0 .. 1x1), levels stored back to back.
+// How a texture's texels are laid out, as the GPU takes them (formats/README.md "TEXD").
+// The block formats hold 4x4 texel blocks, rows of blocks top to bottom; a level smaller
+// than a block still takes one block per dimension.
+enum class TextureFormat : uint32_t {
+    Rgba8 = 0, // 4 bytes per texel
+    Bc1 = 1,   // RGB, alpha 1 (S3TC DXT1, 8 bytes per block)
+    Bc3 = 2,   // RGBA (S3TC DXT5, 16 bytes per block)
+    Bc4 = 3,   // one channel, replicated to RGB by the sampler, alpha 1 (RGTC1, 8 bytes)
+    Bc5 = 4,   // two channels: a normal map's x, y; z = sqrt(1 - x^2 - y^2) (RGTC2, 16 bytes)
+};
+inline constexpr uint32_t kTextureFormatCount = 5;
+
+const char* textureFormatName(TextureFormat format); // "RGBA8", "BC1", ...
+bool isBlockCompressed(TextureFormat format);
+// Bytes of one width x height level (whole 4x4 blocks for the block formats).
+uint64_t textureLevelBytes(TextureFormat format, uint32_t width, uint32_t height);
+// The full chain level 0 .. 1x1 (max(1, w >> l) x max(1, h >> l)), back to back from 0.
+std::vector<MipLevel> textureMipChain(uint32_t width, uint32_t height, TextureFormat format);
+uint64_t textureChainBytes(uint32_t width, uint32_t height, TextureFormat format);
+
+// A texture with its full mip chain (level 0 .. 1x1), levels stored back to back.
 struct Texture {
     std::string name;
     uint32_t width = 0;  // level 0 as stored (after any reduction)
@@ -123,6 +145,7 @@ struct Texture {
     uint32_t sourceWidth = 0; // as decoded from the source image
     uint32_t sourceHeight = 0;
     bool srgb = false; // colour data (baseColor, emissive) is sRGB-encoded
+    TextureFormat format = TextureFormat::Rgba8;
     std::vector<MipLevel> mips;
     std::vector<uint8_t> texels;
 };
