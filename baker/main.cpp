@@ -198,7 +198,7 @@ int main(int argc, char** argv)
     app.add_flag("--keep-full-textures", o.keepFullTextures, "never drop mip levels the views cannot resolve");
     app.add_option("--texture-compression", o.textureCompression,
                    "bc: block-compress every texture by what its materials read (BC1/BC3 colour, BC5 normals, BC4 "
-                   "single channels); none: RGBA8 (zstd-compressed in the pack) (default bc)")
+                   "single channels); none: RGBA8 (default bc)")
         ->transform(CLI::CheckedTransformer(
             std::map<std::string, TextureCompression>{{"none", TextureCompression::None}, {"bc", TextureCompression::Bc}},
             CLI::ignore_case));

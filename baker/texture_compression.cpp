@@ -19,10 +19,19 @@ constexpr uint32_t kBlockRowsPerBand = 4;
 // declares kBc4/kBc5 but its Compress treats them as DXT1, so the channel goes through
 // the DXT5 alpha encoder and the (constant, range-fit) colour half is dropped.
 constexpr int kAlphaBlockFlags = squish::kDxt5 | squish::kColourRangeFit;
-// Range fit (endpoints from the block's principal axis): ~15x faster than cluster fit for
-// ~1-2 dB less PSNR on a level; what the views sample are the minified levels, where
-// the difference averages out (README "Texture compression" has the measured EIA error).
-constexpr int kColourFit = squish::kColourRangeFit;
+// Colour endpoints: cluster fit (squish's default, best of its fast fits) on levels up to
+// kClusterFitTexels, range fit (endpoints from the block's principal axis, ~10x faster,
+// ~2 dB less PSNR) on larger ones. The baker keeps textures about twice as fine as the
+// finest view pixel (texture_budget.cpp), so the views sample mostly level 1 and below:
+// the quality goes where it is seen, and the cluster-fit cost is bounded per texture
+// (~1.4 MP) whatever its size (README "Texture compression" has the measured EIA error).
+constexpr uint64_t kClusterFitTexels = uint64_t(1) << 20;
+
+int colourFit(const MipLevel& level)
+{
+    return uint64_t(level.width) * level.height <= kClusterFitTexels ? squish::kColourClusterFit
+                                                                    : squish::kColourRangeFit;
+}
 
 void encodeAlphaBlock(const uint8_t block[64], int channel, uint8_t* out)
 {
@@ -56,11 +65,11 @@ int bc4Channel(uint32_t uses)
 }
 
 // One 4x4 block (RGBA texels, channel already in place for BC4: R) into `format`.
-void encodeBlock(const uint8_t block[64], TextureFormat format, uint8_t* out)
+void encodeBlock(const uint8_t block[64], TextureFormat format, int fit, uint8_t* out)
 {
     switch (format) {
-    case TextureFormat::Bc1: squish::Compress(block, out, squish::kDxt1 | kColourFit); break;
-    case TextureFormat::Bc3: squish::Compress(block, out, squish::kDxt5 | kColourFit); break;
+    case TextureFormat::Bc1: squish::Compress(block, out, squish::kDxt1 | fit); break;
+    case TextureFormat::Bc3: squish::Compress(block, out, squish::kDxt5 | fit); break;
     case TextureFormat::Bc4: encodeAlphaBlock(block, 0, out); break;
     case TextureFormat::Bc5:
         encodeAlphaBlock(block, 0, out);
@@ -111,6 +120,7 @@ void compressLevel(const uint8_t* level, const MipLevel& mip, TextureFormat form
 {
     const uint32_t blocksX = (mip.width + 3) / 4, blocksY = (mip.height + 3) / 4;
     const size_t blockBytes = size_t(textureLevelBytes(format, 4, 4));
+    const int fit = colourFit(mip);
     const size_t bands = (blocksY + kBlockRowsPerBand - 1) / kBlockRowsPerBand;
     parallelFor(bands, threads, [&](size_t band) {
         uint8_t block[64];
@@ -119,7 +129,7 @@ void compressLevel(const uint8_t* level, const MipLevel& mip, TextureFormat form
         for (uint32_t by = y0; by < y1; ++by)
             for (uint32_t bx = 0; bx < blocksX; ++bx) {
                 gatherBlock(level, mip, bx, by, format, channel, block);
-                encodeBlock(block, format, out + (size_t(by) * blocksX + bx) * blockBytes);
+                encodeBlock(block, format, fit, out + (size_t(by) * blocksX + bx) * blockBytes);
             }
     });
 }

@@ -11,7 +11,8 @@
 //     roughness-only G / metallic-only B)
 //   two or three data channels       BC1 (occlusion-roughness-metallic packed)
 //   a normal map also read as data   RGBA8 (no single block format fits both)
-// Encoder: libsquish (range fit, BC4/BC5 through its DXT5 alpha encoder). Blocks are independent, so bands of block rows are
+// Encoder: libsquish (cluster fit on levels up to 1 MP, range fit above; BC4/BC5 through
+// its DXT5 alpha-block encoder). Blocks are independent, so bands of block rows are
 // compressed in parallel and the bytes do not depend on the thread count.
 #pragma once
 

@@ -253,9 +253,6 @@ private:
         if (r.format >= kTextureFormatCount)
             fail(where + ": unknown format " + std::to_string(r.format));
         t.format = TextureFormat(r.format);
-        if ((r.flags & kTextureZstdLevels) && t.format != TextureFormat::Rgba8)
-            fail(where + ": zstd levels are only allowed for RGBA8 textures, this one is " +
-                 textureFormatName(t.format));
         reserved(r.reserved1, where);
     }
 

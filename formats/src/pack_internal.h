@@ -6,6 +6,7 @@
 #include "lfd/pack_layout.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,12 +20,14 @@ namespace lfd::pack {
 uint32_t fullMipCount(uint32_t width, uint32_t height);
 
 // Section payloads stored with zstd (format 2). compressSection returns the frame, or
-// nothing when the data should stay raw (it would not shrink, or would expand past
-// kZstdMaxRatio). inflate checks that the frame holds exactly `expectedSize` bytes.
+// nothing when the data should stay raw (zstd would not shrink it). inflate checks that the frame holds exactly `expectedSize` bytes.
 std::vector<uint8_t> compressSection(const void* data, size_t size);
-// A texture level's frame, even when it does not shrink (a texture's levels are all zstd
-// or all raw); empty only when it would expand past kZstdMaxRatio.
-std::vector<uint8_t> compressLevel(const void* data, size_t size);
+// Writes a zstd frame of `size` bytes to `write` piece by piece and returns its size,
+// even when it does not shrink (a texture's levels are all zstd or all raw). Data that
+// would expand past kZstdMaxRatio (a uniform 16384² level) gets a zstd skippable frame
+// appended, enough to keep the stored size within the bound.
+using ByteSink = std::function<void(const void*, size_t)>;
+uint64_t compressLevel(const void* data, size_t size, const ByteSink& write);
 std::vector<uint8_t> inflate(const uint8_t* frame, size_t frameSize, uint64_t expectedSize,
                              const std::string& name, const std::string& what);
 // The largest content a zstd payload of `storedSize` bytes may declare.

@@ -137,36 +137,33 @@ struct WrittenTexture {
 };
 using WrittenTextures = std::vector<WrittenTexture>;
 
-// Writes one texture's levels: RGBA8 ones as zstd frames when compressing (the whole
-// texture raw if any level would expand past what a reader accepts, or if zstd saves
-// under 5%), the rest as they are.
+// Whether zstd is worth it for a texture: it must save at least 5% (noise-like texels and
+// most block data do not; inflating them while streaming would cost time for nothing).
+// Judged on level 1 (a quarter of level 0, with the same statistics), or level 0 when it
+// is the only one, so the decision needs one small frame, not the whole chain.
+bool worthZstd(const Texture& t)
+{
+    const MipLevel& probe = t.mips[t.mips.size() > 1 ? 1 : 0];
+    const uint64_t frameBytes = compressLevel(t.texels.data() + probe.offset, size_t(probe.size),
+                                              [](const void*, size_t) {}); // counted, not kept
+    return frameBytes * 20 <= probe.size * 19;
+}
+
+// Writes one texture's levels, as zstd frames (RGBA8 texels and blocks alike: blocks of
+// flat regions repeat) when compressing and worthZstd, otherwise raw. Each frame is
+// streamed out as it is made, so the writer holds no compressed level.
 WrittenTexture writeTexture(const Texture& t, bool compress, SectionStream& out)
 {
-    WrittenTexture stored{t.format, false, {}};
-    std::vector<std::vector<uint8_t>> frames;
-    if (compress && t.format == TextureFormat::Rgba8) {
-        uint64_t frameBytes = 0;
-        for (const MipLevel& level : t.mips) {
-            frames.push_back(compressLevel(t.texels.data() + level.offset, size_t(level.size)));
-            frameBytes += frames.back().size();
-            if (frames.back().empty()) {
-                frames.clear();
-                break;
-            }
+    WrittenTexture stored{t.format, compress && !t.mips.empty() && worthZstd(t), {}};
+    for (const MipLevel& level : t.mips) {
+        const uint8_t* texels = t.texels.data() + level.offset;
+        if (!stored.zstd) {
+            out.write(texels, size_t(level.size));
+            stored.levelBytes.push_back(level.size);
+            continue;
         }
-        // Under 5% saved (noise-like texels): not worth inflating while streaming.
-        if (frameBytes * 20 > uint64_t(t.texels.size()) * 19)
-            frames.clear();
-    }
-    stored.zstd = !frames.empty();
-    for (size_t l = 0; l < t.mips.size(); ++l) {
-        if (stored.zstd) {
-            out.write(frames[l].data(), frames[l].size());
-            stored.levelBytes.push_back(frames[l].size());
-        } else {
-            out.write(t.texels.data() + t.mips[l].offset, size_t(t.mips[l].size));
-            stored.levelBytes.push_back(t.mips[l].size);
-        }
+        stored.levelBytes.push_back(
+            compressLevel(texels, size_t(level.size), [&out](const void* bytes, size_t n) { out.write(bytes, n); }));
     }
     return stored;
 }

@@ -1,4 +1,4 @@
-// zstd payloads of format 2 (formats/README.md "Compression"): whole sections and RGBA8
+// zstd payloads of format 2 (formats/README.md "Compression"): whole sections and
 // texture levels. Every frame is checked to hold exactly the bytes its record promises,
 // and nothing is allocated beyond what the structural pass bounded.
 #include "lfd/pack_mapped.h"
@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <new>
 
 namespace lfd::pack {
 
@@ -26,22 +27,52 @@ uint64_t maxInflatedBytes(uint64_t storedSize)
     return std::max(ratioBound, kZstdSmallSectionBytes);
 }
 
-std::vector<uint8_t> compressLevel(const void* data, size_t size)
+uint64_t compressLevel(const void* data, size_t size, const ByteSink& write)
 {
-    std::vector<uint8_t> frame(ZSTD_compressBound(size));
-    const size_t n = ZSTD_compress(frame.data(), frame.size(), data, size, kCompressionLevel);
-    if (ZSTD_isError(n) || size > maxInflatedBytes(n))
-        return {}; // a ratio the reader would refuse
-    frame.resize(n);
-    frame.shrink_to_fit();
-    return frame;
+    // Streamed in ZSTD_CStreamOutSize() pieces: a 16384² level is never held compressed.
+    std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> ctx(ZSTD_createCCtx(), &ZSTD_freeCCtx);
+    if (!ctx || ZSTD_isError(ZSTD_CCtx_setParameter(ctx.get(), ZSTD_c_compressionLevel, kCompressionLevel)) ||
+        ZSTD_isError(ZSTD_CCtx_setPledgedSrcSize(ctx.get(), size))) // the content size goes in the header
+        throw std::bad_alloc();
+    std::vector<uint8_t> piece(ZSTD_CStreamOutSize());
+    ZSTD_inBuffer input{data, size, 0};
+    uint64_t written = 0;
+    for (size_t left = 1; left != 0;) {
+        ZSTD_outBuffer output{piece.data(), piece.size(), 0};
+        left = ZSTD_compressStream2(ctx.get(), &output, &input, ZSTD_e_end);
+        if (ZSTD_isError(left))
+            throw std::bad_alloc(); // in-memory input and output: only allocation can fail
+        write(piece.data(), output.pos);
+        written += output.pos;
+    }
+    if (size > maxInflatedBytes(written)) {
+        // A skippable frame (magic 0x184D2A50, u32 length, payload ignored by decoders)
+        // pads the stored size up to the reader's expansion bound.
+        const uint64_t needed = (uint64_t(size) + kZstdMaxRatio - 1) / kZstdMaxRatio;
+        const uint32_t payload = uint32_t(std::max<uint64_t>(needed, written + 8) - written - 8);
+        const uint8_t header[8] = {0x50, 0x2A, 0x4D, 0x18, uint8_t(payload), uint8_t(payload >> 8),
+                                   uint8_t(payload >> 16), uint8_t(payload >> 24)};
+        write(header, sizeof header);
+        const std::vector<uint8_t> zeros(std::min<size_t>(payload, 1 << 16), 0);
+        for (uint32_t left = payload; left > 0;) {
+            const uint32_t n = std::min<uint32_t>(left, uint32_t(zeros.size()));
+            write(zeros.data(), n);
+            left -= n;
+        }
+        written += sizeof header + payload;
+    }
+    return written;
 }
 
 std::vector<uint8_t> compressSection(const void* data, size_t size)
 {
     if (size == 0)
         return {};
-    std::vector<uint8_t> frame = compressLevel(data, size);
+    std::vector<uint8_t> frame;
+    compressLevel(data, size, [&](const void* bytes, size_t n) {
+        const auto* p = static_cast<const uint8_t*>(bytes);
+        frame.insert(frame.end(), p, p + n);
+    });
     if (frame.size() >= size)
         return {}; // raw: no gain
     return frame;
@@ -101,8 +132,23 @@ void LevelInflater::read(uint8_t* out, size_t n)
             pack::fail(name_, what_ + ": zstd frame is truncated");
     }
     produced_ += n;
-    if (produced_ == size_ && consumed_ != frame_.size())
-        pack::fail(name_, what_ + ": trailing bytes after the zstd frame");
+    if (produced_ == size_)
+        consumeTail();
+}
+
+// After the level's last byte only skippable frames may follow (the writer's padding):
+// they are consumed without output; anything that would produce more is an error.
+void LevelInflater::consumeTail()
+{
+    while (consumed_ < frame_.size()) {
+        uint8_t none = 0;
+        ZSTD_outBuffer output{&none, 0, 0};
+        ZSTD_inBuffer input{frame_.data(), frame_.size(), consumed_};
+        const size_t r = ZSTD_decompressStream(state_->ctx.get(), &output, &input);
+        if (ZSTD_isError(r) || input.pos == consumed_)
+            pack::fail(name_, what_ + ": trailing bytes after the zstd frame");
+        consumed_ = input.pos;
+    }
 }
 
 void LevelInflater::skipAll()

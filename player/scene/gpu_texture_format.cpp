@@ -18,6 +18,15 @@ void requireExtension(const char* extension, TextureFormat format)
                           textureFormatName(format) + " textures (rebake with --texture-compression none)");
 }
 
+// S3TC (BC1/BC3) is an extension every desktop driver has; sRGB blocks need another.
+GLenum s3tcFormat(TextureFormat format, bool srgb, GLenum linear, GLenum srgbFormat)
+{
+    requireExtension("GL_EXT_texture_compression_s3tc", format);
+    if (srgb)
+        requireExtension("GL_EXT_texture_sRGB", format);
+    return srgb ? srgbFormat : linear;
+}
+
 } // namespace
 
 GlTextureFormat glTextureFormat(TextureFormat format, bool srgb)
@@ -31,17 +40,12 @@ GlTextureFormat glTextureFormat(TextureFormat format, bool srgb)
         f.internalFormat = srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
         break;
     case TextureFormat::Bc1:
-        requireExtension("GL_EXT_texture_compression_s3tc", format);
-        if (srgb)
-            requireExtension("GL_EXT_texture_sRGB", format);
         // The RGB variant: alpha reads 1, and no block decodes as transparent.
-        f.internalFormat = srgb ? GL_COMPRESSED_SRGB_S3TC_DXT1_EXT : GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
+        f.internalFormat = s3tcFormat(format, srgb, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, GL_COMPRESSED_SRGB_S3TC_DXT1_EXT);
         break;
     case TextureFormat::Bc3:
-        requireExtension("GL_EXT_texture_compression_s3tc", format);
-        if (srgb)
-            requireExtension("GL_EXT_texture_sRGB", format);
-        f.internalFormat = srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT : GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+        f.internalFormat =
+            s3tcFormat(format, srgb, GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT);
         break;
     case TextureFormat::Bc4: {
         // RGTC is core since GL 3.0. One channel: the materials read it as R (occlusion),

@@ -7,9 +7,9 @@
 // the geometry and the coarsest levels are in and sharpens as finer levels arrive.
 // The texel checksum is computed on the way (MappedPack::noteTexelsRead) and compared
 // when the last level is resident: a corrupt pack throws lfd::PackError then.
-// Block-compressed levels upload as stored, in whole rows of 4x4 blocks; zstd-stored
-// RGBA8 levels are inflated a chunk at a time (lfd::LevelInflater) into one staging
-// buffer of at most `chunkBytes`.
+// Block-compressed levels upload in whole rows of 4x4 blocks; zstd-stored levels (RGBA8
+// or blocks) are inflated a chunk at a time (lfd::LevelInflater) into one staging buffer
+// of at most `chunkBytes`.
 #pragma once
 
 #include "gpu_scene.h"

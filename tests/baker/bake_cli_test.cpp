@@ -226,7 +226,7 @@ TEST_F(BakeCli, TexturesAreBlockCompressedByUseUnlessAskedNotTo)
     }
     EXPECT_LE(blockBytes * 4, rgbaBytes);
     // (The files: the samples' procedural textures are so regular that zstd shrinks the
-    // RGBA8 levels below the blocks; real textures do not, see README "Texture compression".)
+    // RGBA8 levels about as small as the blocks; see README "Texture compression".)
 
     const RunResult inspect = run(kBake + " --inspect " + quoted(bc));
     EXPECT_EQ(inspect.exitCode, 0) << inspect.out;

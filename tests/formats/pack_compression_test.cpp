@@ -1,10 +1,11 @@
-// Format 2's encodings: zstd sections, zstd RGBA8 texture levels and block-compressed
+// Format 2's encodings: zstd sections, zstd texture levels and block-compressed
 // textures round trip exactly, shrink what they should, and every forged or corrupted
 // compressed payload is a one-line PackError, never a crash or a huge allocation.
 #include "pack_test_scenes.h"
 
 #include "lfd/pack_mapped.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -17,7 +18,7 @@ namespace fs = std::filesystem;
 const std::string kName = "zstd.lfdpack";
 
 // makeFullScene plus a 64x64 vertex grid (compressible streams) and a smooth 64x64
-// RGBA8 texture (compressible levels) next to a block-compressed one.
+// RGBA8 texture (compressible levels) next to a block-compressed one of noise (raw).
 Scene compressibleScene()
 {
     Scene s = makeFullScene();
@@ -32,7 +33,14 @@ Scene compressibleScene()
     for (size_t i = 0; i < smooth.texels.size(); ++i)
         smooth.texels[i] = uint8_t((i / 256) & 0xff);
     s.textures[0] = smooth;
-    s.textures[1] = makeTexture("blocks", 16, 8, false, 2, TextureFormat::Bc5);
+    // Noise blocks: zstd cannot save 5% of them, so they stay raw.
+    Texture noise = makeTexture("blocks", 16, 8, false, 2, TextureFormat::Bc5);
+    uint32_t state = 12345;
+    for (uint8_t& b : noise.texels) {
+        state = state * 1664525u + 1013904223u;
+        b = uint8_t(state >> 24);
+    }
+    s.textures[1] = noise;
     return s;
 }
 
@@ -86,7 +94,7 @@ TEST(PackCompression, MappedPackInflatesSectionsAndStreamsLevels)
     ASSERT_EQ(positions.size(), scene.vertices.positions.size() * 12);
     EXPECT_EQ(std::memcmp(positions.data(), scene.vertices.positions.data(), positions.size()), 0);
     ASSERT_TRUE(mapped.levelsZstd(0));
-    EXPECT_FALSE(mapped.levelsZstd(1)); // block-compressed levels are stored as they are
+    EXPECT_FALSE(mapped.levelsZstd(1)); // noise blocks: zstd would not save 5%
     for (uint32_t t = 0; t < 2; ++t)
         for (uint32_t l = 0; l < scene.textures[t].mips.size(); ++l) {
             const MipLevel& level = scene.textures[t].mips[l];
@@ -175,8 +183,8 @@ TEST(PackCompression, TextureFormatRules)
         return bytes;
     };
     expectRejected(patched(1, offsetof(TextureRecord, format), 9), "texture 1: unknown format 9");
-    expectRejected(patched(1, offsetof(TextureRecord, flags), kTextureZstdLevels),
-                   "texture 1: zstd levels are only allowed for RGBA8 textures, this one is BC5");
+    // Raw blocks flagged as zstd frames.
+    expectRejected(patched(1, offsetof(TextureRecord, flags), kTextureZstdLevels), "texture 1 mip level 0");
     // A BC5 record read as BC1 no longer matches its level sizes.
     expectRejected(patched(1, offsetof(TextureRecord, format), uint32_t(TextureFormat::Bc1)),
                    "texture 1: mip level 0 is 16x8 at +0 size 128, expected 16x8 at +0 size 64");
@@ -203,6 +211,37 @@ TEST(PackCompression, CorruptTextureLevelIsRejectedByReadAndVerify)
     std::vector<uint8_t> out(size_t(level.size));
     EXPECT_THROW(LevelInflater(mapped.mipBytes(0, 0), level.size, kName, "level").read(out.data(), out.size()),
                  PackError);
+    fs::remove(path);
+}
+
+// A uniform level past 16 MiB compresses beyond the reader's expansion bound: the
+// writer pads its frame with a skippable frame, and every reader path takes it.
+TEST(PackCompression, UniformLevelIsPaddedToTheExpansionBound)
+{
+    Scene s = makeFullScene();
+    Texture flat = makeTexture("flat", 4096, 1100, false, 1);
+    std::fill(flat.texels.begin(), flat.texels.end(), uint8_t(77));
+    s.textures[0] = flat;
+    const std::vector<uint8_t> bytes = writePackToMemory(s);
+    EXPECT_LT(bytes.size(), flat.texels.size() / 64); // still tiny
+    expectSameScene(s, readPackFromMemory(bytes.data(), bytes.size(), kName));
+
+    const fs::path path = fs::temp_directory_path() / ("lfd_zstd_flat_" + std::to_string(::getpid()) + ".lfdpack");
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), long(bytes.size()));
+    EXPECT_NO_THROW(verifyPack(path));
+    MappedPack mapped(path);
+    ASSERT_TRUE(mapped.levelsZstd(0));
+    const MipLevel& level0 = mapped.textures()[0].mips[0];
+    const auto stored = mapped.mipBytes(0, 0);
+    EXPECT_LE(level0.size, stored.size() * kZstdMaxRatio);
+    LevelInflater inflater(stored, level0.size, kName, "level 0");
+    std::vector<uint8_t> chunk(1 << 20);
+    for (uint64_t left = level0.size; left > 0;) {
+        const size_t n = size_t(std::min<uint64_t>(left, chunk.size()));
+        inflater.read(chunk.data(), n);
+        EXPECT_TRUE(std::all_of(chunk.begin(), chunk.begin() + long(n), [](uint8_t b) { return b == 77; }));
+        left -= n;
+    }
     fs::remove(path);
 }
 

@@ -55,7 +55,7 @@ TEST(PackMapped, SameSceneAsReadPackAndTexelsInTheMapping)
         for (size_t l = 0; l < e.mips.size(); ++l) {
             const auto stored = mapped.mipBytes(uint32_t(t), uint32_t(l));
             std::vector<uint8_t> bytes(stored.begin(), stored.end());
-            if (mapped.levelsZstd(uint32_t(t))) { // RGBA8 levels are zstd frames by default
+            if (mapped.levelsZstd(uint32_t(t))) { // compressible levels are zstd frames by default
                 bytes.resize(size_t(e.mips[l].size));
                 LevelInflater(stored, e.mips[l].size, "full", "level").read(bytes.data(), bytes.size());
             }

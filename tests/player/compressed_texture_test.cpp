@@ -205,6 +205,14 @@ TEST_F(CompressedTextureTest, StreamedBlockRowsRenderLikeTheEagerUpload)
     const fs::path path =
         fs::temp_directory_path() / ("lfd_compressed_" + std::to_string(::getpid()) + ".lfdpack");
     writePack(path, blockCompressed(materialScene()));
+    {
+        // The smooth test textures' blocks repeat: zstd levels, inflated while streaming.
+        const MappedPack mapped(path);
+        bool anyZstd = false;
+        for (uint32_t t = 0; t < mapped.textures().size(); ++t)
+            anyZstd = anyZstd || mapped.levelsZstd(t);
+        EXPECT_TRUE(anyZstd);
+    }
     player::PlayOptions options;
     player::PlayerSession eager(options, smallProfile(), readPack(path), "eager");
     eager.renderFrame(0.0);

@@ -44,11 +44,10 @@ struct PackInfo {
     std::vector<PackSectionInfo> sections;
 };
 
-// How payloads are stored (formats/README.md "Compression"). Block-compressed textures
-// are stored as they are either way.
+// How payloads are stored (formats/README.md "Compression").
 struct PackWriteOptions {
-    // zstd for the geometry and record sections and for every RGBA8 texture's levels,
-    // wherever it makes them smaller. Off: every byte stored raw (as format 1 did).
+    // zstd for the geometry and key sections and for every texture's levels (RGBA8 or
+    // blocks), wherever it makes them smaller. Off: every byte stored raw (as format 1 did).
     bool compress = true;
 };
 

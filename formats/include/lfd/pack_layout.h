@@ -153,8 +153,8 @@ static_assert(sizeof(MaterialRecord) == 96 && offsetof(MaterialRecord, alphaMode
               offsetof(MaterialRecord, name) == 80);
 
 inline constexpr uint32_t kTextureSrgb = 1u << 0;
-// Format 2: every mip level is a zstd frame of its texels; MIPS offset/size are the stored
-// bytes. Set only for RGBA8 textures (block-compressed levels are stored as they are).
+// Format 2: every mip level is a zstd frame of its texels (RGBA8 texels or blocks); MIPS
+// offset/size are the stored bytes.
 inline constexpr uint32_t kTextureZstdLevels = 1u << 1;
 
 struct TextureRecord { // TEXD, 64 bytes

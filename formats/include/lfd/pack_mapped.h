@@ -41,6 +41,7 @@ public:
     uint64_t remaining() const { return size_ - produced_; }
 
 private:
+    void consumeTail();
     struct State;
     std::span<const uint8_t> frame_;
     uint64_t size_ = 0, produced_ = 0;
