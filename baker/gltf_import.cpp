@@ -722,6 +722,82 @@ std::optional<PrimitiveData> readPrimitive(const gltf::LoadedGltf& loaded, const
 
 // ---- Animations --------------------------------------------------------------------
 
+// The channel's target path, or nothing (with a warning) for paths not baked.
+std::optional<AnimationPath> channelPath(const std::string& path, Warnings& warnings)
+{
+    if (path == "translation")
+        return AnimationPath::Translation;
+    if (path == "rotation")
+        return AnimationPath::Rotation;
+    if (path == "scale")
+        return AnimationPath::Scale;
+    if (path == "weights")
+        warnings.once("weights", "ignores morph-target weight animation (meshes keep their base pose)");
+    else
+        warnings.once("path " + path, "ignores animation channels on path " + quoted(path));
+    return std::nullopt;
+}
+
+// LINEAR and STEP as they are; CUBICSPLINE keeps each keyframe's value and drops its
+// in/out tangents (a linear approximation; `cubic` tells the caller to skip them).
+Interpolation channelInterpolation(const std::string& interpolation, const std::string& label,
+                                   const std::string& file, bool& cubic)
+{
+    cubic = interpolation == "CUBICSPLINE";
+    if (interpolation == "LINEAR" || cubic)
+        return Interpolation::Linear;
+    if (interpolation == "STEP")
+        return Interpolation::Step;
+    fail(file, label + " has unknown interpolation " + quoted(interpolation));
+}
+
+// Key times: finite, strictly increasing, at least one.
+std::vector<float> readKeyTimes(const tinygltf::Model& model, int accessor, const std::string& label,
+                                const std::string& file)
+{
+    const gltf::FloatArray input = gltf::readFloatAccessor(model, accessor, {TINYGLTF_TYPE_SCALAR}, file, label + " input");
+    if (input.count == 0)
+        fail(file, label + " has no keyframes");
+    const std::vector<float>& times = input.values;
+    for (size_t k = 0; k < times.size(); ++k) {
+        if (!std::isfinite(times[k]))
+            fail(file, label + " key time " + std::to_string(k) + " is not finite");
+        if (k > 0 && !(times[k] > times[k - 1]))
+            fail(file, label + " key times are not strictly increasing at key " + std::to_string(k));
+    }
+    return times;
+}
+
+// One value per key (the middle of each cubic-spline triple), finite; rotations normalised.
+std::vector<glm::vec4> readKeyValues(const tinygltf::Model& model, int accessor, size_t keys, bool rotation,
+                                     bool cubic, const std::string& label, const std::string& file)
+{
+    const gltf::FloatArray output = gltf::readFloatAccessor(
+        model, accessor, {rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3}, file, label + " output");
+    const size_t perKey = cubic ? 3 : 1; // cubic spline: in-tangent, value, out-tangent
+    if (output.count != keys * perKey)
+        fail(file, label + " has " + std::to_string(output.count) + " output values for " + std::to_string(keys) +
+                       " keys");
+    const size_t c = size_t(output.components);
+    std::vector<glm::vec4> values(keys);
+    for (size_t k = 0; k < keys; ++k) {
+        const size_t e = k * perKey + (cubic ? 1 : 0);
+        glm::vec4 v(0.0f);
+        for (size_t i = 0; i < c; ++i)
+            v[glm::length_t(i)] = output.values[e * c + i];
+        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || !std::isfinite(v.w))
+            fail(file, label + " output value " + std::to_string(k) + " is not finite");
+        if (rotation) {
+            const float len = glm::length(v);
+            if (len < 1e-6f)
+                fail(file, label + " has a zero rotation quaternion at key " + std::to_string(k));
+            v /= len;
+        }
+        values[k] = v;
+    }
+    return values;
+}
+
 std::optional<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, const tinygltf::Animation& anim,
                                                const tinygltf::AnimationChannel& ch, const std::string& animLabel,
                                                size_t channelIndex,
@@ -731,19 +807,10 @@ std::optional<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, c
     const tinygltf::Model& model = loaded.model;
     const std::string label = animLabel + ".channels[" + std::to_string(channelIndex) + "]";
     AnimationChannel out;
-    if (ch.target_path == "translation")
-        out.path = AnimationPath::Translation;
-    else if (ch.target_path == "rotation")
-        out.path = AnimationPath::Rotation;
-    else if (ch.target_path == "scale")
-        out.path = AnimationPath::Scale;
-    else if (ch.target_path == "weights") {
-        warnings.once("weights", "ignores morph-target weight animation (meshes keep their base pose)");
+    const std::optional<AnimationPath> path = channelPath(ch.target_path, warnings);
+    if (!path)
         return std::nullopt;
-    } else {
-        warnings.once("path " + ch.target_path, "ignores animation channels on path " + quoted(ch.target_path));
-        return std::nullopt;
-    }
+    out.path = *path;
     if (ch.target_node < 0)
         return std::nullopt; // targets something other than a node (extension)
     if (size_t(ch.target_node) >= model.nodes.size())
@@ -757,18 +824,8 @@ std::optional<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, c
     if (ch.sampler < 0 || size_t(ch.sampler) >= anim.samplers.size())
         fail(file, label + " refers to missing sampler " + std::to_string(ch.sampler));
     const tinygltf::AnimationSampler& sampler = anim.samplers[size_t(ch.sampler)];
-
     bool cubic = false;
-    if (sampler.interpolation == "LINEAR")
-        out.interpolation = Interpolation::Linear;
-    else if (sampler.interpolation == "STEP")
-        out.interpolation = Interpolation::Step;
-    else if (sampler.interpolation == "CUBICSPLINE") {
-        // Keep each keyframe's value, drop its in/out tangents: a linear approximation.
-        out.interpolation = Interpolation::Linear;
-        cubic = true;
-    } else
-        fail(file, label + " has unknown interpolation " + quoted(sampler.interpolation));
+    out.interpolation = channelInterpolation(sampler.interpolation, label, file, cubic);
 
     // An animation whose keys or values the file does not hold (a buffer without a uri, an
     // accessor without a bufferView or sparse data: an extension would supply them) is left
@@ -779,43 +836,9 @@ std::optional<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, c
                          "]) has no data in the file: channel ignored");
             return std::nullopt;
         }
-    // Key times: finite, strictly increasing, at least one.
-    const gltf::FloatArray input =
-        gltf::readFloatAccessor(model, sampler.input, {TINYGLTF_TYPE_SCALAR}, file, label + " input");
-    if (input.count == 0)
-        fail(file, label + " has no keyframes");
-    out.times = input.values;
-    for (size_t k = 0; k < out.times.size(); ++k) {
-        if (!std::isfinite(out.times[k]))
-            fail(file, label + " key time " + std::to_string(k) + " is not finite");
-        if (k > 0 && !(out.times[k] > out.times[k - 1]))
-            fail(file, label + " key times are not strictly increasing at key " + std::to_string(k));
-    }
-
-    const bool rotation = out.path == AnimationPath::Rotation;
-    const gltf::FloatArray output = gltf::readFloatAccessor(
-        model, sampler.output, {rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_VEC3}, file, label + " output");
-    const size_t perKey = cubic ? 3 : 1; // cubic spline: in-tangent, value, out-tangent
-    if (output.count != input.count * perKey)
-        fail(file, label + " has " + std::to_string(output.count) + " output values for " +
-                       std::to_string(input.count) + " keys");
-    const size_t c = size_t(output.components);
-    out.values.resize(input.count);
-    for (size_t k = 0; k < input.count; ++k) {
-        const size_t e = k * perKey + (cubic ? 1 : 0);
-        glm::vec4 v(0.0f);
-        for (size_t i = 0; i < c; ++i)
-            v[glm::length_t(i)] = output.values[e * c + i];
-        if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z) || !std::isfinite(v.w))
-            fail(file, label + " output value " + std::to_string(k) + " is not finite");
-        if (rotation) {
-            const float len = glm::length(v);
-            if (len < 1e-6f)
-                fail(file, label + " has a zero rotation quaternion at key " + std::to_string(k));
-            v /= len;
-        }
-        out.values[k] = v;
-    }
+    out.times = readKeyTimes(model, sampler.input, label, file);
+    out.values = readKeyValues(model, sampler.output, out.times.size(), out.path == AnimationPath::Rotation, cubic,
+                               label, file);
     if (cubic)
         warnings.once("cubic " + animLabel,
                       animLabel + " uses CUBICSPLINE interpolation: linearised (keyframe values kept, tangents dropped)");

@@ -56,9 +56,10 @@ int inspect(const std::filesystem::path& path)
     return 0;
 }
 
-int bakeScene(const Options& o)
+// Where the bake's messages go: warnings to stderr (or, with --strict, the first one
+// refuses the input), progress to stdout unless --quiet.
+Log bakeLog(const Options& o)
 {
-    BakeReport report;
     Log log;
     const std::string file = o.input.string();
     if (o.strict) {
@@ -69,48 +70,43 @@ int bakeScene(const Options& o)
     }
     if (!o.quiet)
         log.info = [](const std::string& s) { std::cout << s << "\n" << std::flush; };
+    return log;
+}
 
-    // Display profile: the tessellation bound is measured in its view pixels.
-    const DisplayProfile profile = o.display.empty() ? prototypeDisplayProfile() : loadDisplayProfile(o.display);
-
-    auto stage = Clock::now();
-    ImportedScene imported = importGltf(o.input, log);
-    Scene& scene = imported.scene;
-    report.stageSeconds.emplace_back("import", secondsSince(stage));
-
-    // Framing: the scene fitted to the display volume decides what a view pixel measures.
-    stage = Clock::now();
-    scene.bounds = computeBounds(scene);
+// Framing: the scene fitted to the display volume decides what a view pixel measures
+// (scene units per view pixel at the nearest depth; README "Baking", step 3).
+double viewPixelWorldOf(const Scene& scene, const DisplayProfile& profile, const Options& o, const Log& log)
+{
     const Framing framing = fitSceneToDisplay(profile, scene.bounds, o.fill);
     const double viewPixelWorld = minViewPixelWorld(profile, framing);
-    const double maxEdgeWorld = o.maxEdgePx * viewPixelWorld;
     log.info("framing: radius " + std::to_string(framing.sceneRadius) + " units, 1 view pixel >= " +
-             std::to_string(viewPixelWorld) + " units, edge bound " + std::to_string(maxEdgeWorld) + " units");
-    report.stageSeconds.emplace_back("bounds", secondsSince(stage));
+             std::to_string(viewPixelWorld) + " units, edge bound " + std::to_string(o.maxEdgePx * viewPixelWorld) +
+             " units");
+    return viewPixelWorld;
+}
 
-    stage = Clock::now();
-    report.tessellation = tessellateScene(scene, maxEdgeWorld, log, o.threads);
-    report.stageSeconds.emplace_back("tessellate", secondsSince(stage));
-
-    // Texture sizes: GPU limit and what the views can resolve; n_tex uses the stored size.
-    stage = Clock::now();
+// Texture sizes: GPU limit and what the views can resolve (n_tex uses the stored size).
+void planTextureSizes(ImportedScene& imported, double viewPixelWorld, const Options& o, BakeReport& report)
+{
+    Scene& scene = imported.scene;
     const std::vector<float> meshScale = meshMaxWorldScale(scene);
     for (size_t t = 0; t < scene.textures.size(); ++t) {
         Texture& texture = scene.textures[t];
         const glm::uvec2 source = probeTextureSize(imported.textureSources[t]);
         glm::uvec2 stored = storedTextureSize(source, TextureBakeOptions{o.maxTextureSize});
         if (!o.keepFullTextures)
-            stored = glm::min(stored, resolvableTextureSize(scene, uint32_t(t), stored, viewPixelWorld,
-                                                            meshScale, o.textureDetail));
+            stored = glm::min(stored, resolvableTextureSize(scene, uint32_t(t), stored, viewPixelWorld, meshScale,
+                                                            o.textureDetail));
         texture.sourceWidth = source.x;
         texture.sourceHeight = source.y;
         texture.width = stored.x;
         texture.height = stored.y;
         report.textures.push_back({texture.name, source, stored, texture.srgb});
     }
-    computeTriangleStats(scene, o.threads);
-    report.stageSeconds.emplace_back("triangle stats", secondsSince(stage));
+}
 
+void recordSettings(Scene& scene, const DisplayProfile& profile, double viewPixelWorld, const Options& o)
+{
     scene.settings.bakerVersion = LFD_VERSION;
     scene.settings.sourceFile = o.input.filename().string();
     scene.settings.displayProfile = profile.name;
@@ -121,15 +117,18 @@ int bakeScene(const Options& o)
     scene.settings.framingFill = float(o.fill);
     scene.settings.viewPixelWorld = float(viewPixelWorld);
     scene.settings.maxTextureSize = o.maxTextureSize;
+}
 
-    // Textures are decoded and mipmapped in the order the writer needs them, the ones after
-    // the texture being written on spare threads as far as kTextureMemoryLimit allows.
-    stage = Clock::now();
+// Textures are decoded, mipmapped and block-compressed (texture_compression.h) in the
+// order the writer needs them, the ones after the texture being written on spare threads
+// as far as kTextureMemoryLimit allows; the writer streams the pack out.
+void bakeTexturesAndWrite(const ImportedScene& imported, const Options& o, const Log& log, BakeReport& report)
+{
+    const Scene& scene = imported.scene;
     ThreadBudget threads(o.threads);
     std::vector<uint64_t> textureBytes;
     for (const Texture& t : scene.textures)
         textureBytes.push_back(mip::chainBytes(mip::chainLayout(t.width, t.height)));
-    // Decoded, mipmapped and block-compressed ahead of the writer (texture_compression.h).
     const std::vector<uint32_t> uses = textureUses(scene);
     TexturePrefetcher prefetcher(
         [&](uint32_t index) {
@@ -158,12 +157,14 @@ int bakeScene(const Options& o)
         return baked;
     };
     writePack(o.output, scene, produce);
-    report.stageSeconds.emplace_back("textures + write", secondsSince(stage));
+}
 
+void finishReport(const ImportedScene& imported, double viewPixelWorld, const Options& o, BakeReport& report)
+{
     report.pack = verifyPack(o.output);
     report.trianglesIn = imported.sourceTriangles;
-    report.trianglesOut = scene.triangleCount();
-    report.vertices = scene.vertices.size();
+    report.trianglesOut = imported.scene.triangleCount();
+    report.vertices = imported.scene.vertices.size();
     report.maxEdgePxBefore = report.tessellation.maxEdgeWorldBefore / viewPixelWorld;
     report.maxEdgePxAfter = report.tessellation.maxEdgeWorldAfter / viewPixelWorld;
     report.meanEdgePxAfter = report.tessellation.meanEdgeWorldAfter / viewPixelWorld;
@@ -171,6 +172,39 @@ int bakeScene(const Options& o)
     report.warnings = imported.warnings.size();
     report.peakRssBytes = peakResidentBytes();
     report.threads = resolveThreads(o.threads);
+}
+
+// The bake, stage by stage (README "Baking"), each stage timed for the report.
+int bakeScene(const Options& o)
+{
+    BakeReport report;
+    const Log log = bakeLog(o);
+    // Display profile: the tessellation bound is measured in its view pixels.
+    const DisplayProfile profile = o.display.empty() ? prototypeDisplayProfile() : loadDisplayProfile(o.display);
+    auto timed = [&report](const char* name, auto&& step) {
+        const auto start = Clock::now();
+        step();
+        report.stageSeconds.emplace_back(name, secondsSince(start));
+    };
+
+    ImportedScene imported;
+    timed("import", [&] { imported = importGltf(o.input, log); });
+    Scene& scene = imported.scene;
+    double viewPixelWorld = 0.0;
+    timed("bounds", [&] {
+        scene.bounds = computeBounds(scene);
+        viewPixelWorld = viewPixelWorldOf(scene, profile, o, log);
+    });
+    timed("tessellate",
+          [&] { report.tessellation = tessellateScene(scene, o.maxEdgePx * viewPixelWorld, log, o.threads); });
+    timed("triangle stats", [&] {
+        planTextureSizes(imported, viewPixelWorld, o, report);
+        computeTriangleStats(scene, o.threads);
+    });
+    recordSettings(scene, profile, viewPixelWorld, o);
+    timed("textures + write", [&] { bakeTexturesAndWrite(imported, o, log, report); });
+
+    finishReport(imported, viewPixelWorld, o, report);
     if (!o.quiet) // --quiet: warnings and errors only
         printBakeReport(std::cout, o.output, report);
     return 0;

@@ -82,6 +82,24 @@ gl::Texture createGlTexture(const Texture& tex, const GpuTextureLayout& layout, 
     return name;
 }
 
+// One draw per (node, primitive) of every node that has a mesh, empty primitives skipped.
+std::vector<DrawItem> drawItems(const Scene& scene)
+{
+    std::vector<DrawItem> draws;
+    for (uint32_t n = 0; n < scene.nodes.size(); ++n) {
+        const Node& node = scene.nodes[n];
+        if (node.mesh == kNone)
+            continue;
+        const Mesh& mesh = scene.meshes[size_t(node.mesh)];
+        for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p) {
+            const Primitive& prim = scene.primitives[p];
+            if (prim.indexCount != 0)
+                draws.push_back({n, p, prim.firstIndex, prim.indexCount, prim.material});
+        }
+    }
+    return draws;
+}
+
 } // namespace
 
 uint32_t materialTextureFlags(const Material& m)
@@ -162,18 +180,7 @@ GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options)
                             scene_.triangleStats.size() * sizeof(TriangleStats), streamedFlags, gpuBytes_);
 
     // Step 4: one draw per (node, primitive) of every node that has a mesh.
-    for (uint32_t n = 0; n < scene_.nodes.size(); ++n) {
-        const Node& node = scene_.nodes[n];
-        if (node.mesh == kNone)
-            continue;
-        const Mesh& mesh = scene_.meshes[size_t(node.mesh)];
-        for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p) {
-            const Primitive& prim = scene_.primitives[p];
-            if (prim.indexCount == 0)
-                continue;
-            draws_.push_back({n, p, prim.firstIndex, prim.indexCount, prim.material});
-        }
-    }
+    draws_ = drawItems(scene_);
 
     // Step 5: per-node transforms (rewritten every frame by update()).
     nodeSsbo_ = makeBuffer(nullptr, std::max<size_t>(scene_.nodes.size(), 1) * sizeof(bindings::NodeGpu),
