@@ -2,6 +2,7 @@
 
 #include "bench_report.h"
 #include "frame_stages.h"
+#include "atomic_file.h"
 #include "frame_stats.h"
 
 #include <cmath>
@@ -244,9 +245,9 @@ std::string matrixTable(const std::vector<BenchReport>& reports)
 void writeMatrixTables(const fs::path& dir, const std::vector<BenchReport>& reports)
 {
     fs::create_directories(dir);
-    writeTextFileAtomic(dir / "results.csv", matrixCsv(reports));
-    writeTextFileAtomic(dir / "results.json", matrixJson(reports).dump(2) + "\n");
-    writeTextFileAtomic(dir / "table.md", matrixTable(reports));
+    io::writeFileAtomically(dir / "results.csv", matrixCsv(reports));
+    io::writeFileAtomically(dir / "results.json", matrixJson(reports).dump(2) + "\n");
+    io::writeFileAtomically(dir / "table.md", matrixTable(reports));
 }
 
 fs::path chartScriptPath()

@@ -1,8 +1,9 @@
 #include "bench_report.h"
 
 #include "frame_stages.h"
+#include "atomic_file.h"
 #include "frame_stats.h"
-#include "image_output.h"
+#include "image_metrics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -403,22 +404,22 @@ std::vector<fs::path> writeBenchOutputs(const fs::path& dir, const BenchReport& 
             if (it == images.end())
                 continue;
             const FrameImages& img = it->second;
-            writeImage(dir / (r.name + "_eia.png"), img.eia.data(), p.panelWidth, p.panelHeight, 4);
+            metrics::writeImage(dir / (r.name + "_eia.png"), img.eia.data(), p.panelWidth, p.panelHeight, 4);
             written.push_back(dir / (r.name + "_eia.png"));
-            writeImage(dir / (r.name + "_view_centre.png"), img.centre.data(), p.viewWidth, p.viewHeight, 4);
+            metrics::writeImage(dir / (r.name + "_view_centre.png"), img.centre.data(), p.viewWidth, p.viewHeight, 4);
             written.push_back(dir / (r.name + "_view_centre.png"));
             if (reference && r.name != report.options.reference) {
-                const Image a{p.panelWidth, p.panelHeight, 4, img.eia};
-                const Image b{p.panelWidth, p.panelHeight, 4, reference->eia};
-                writeDiffImage(dir / (r.name + "_diff_eia.png"), a, b, 4.0f);
+                const metrics::Image a{p.panelWidth, p.panelHeight, 4, img.eia};
+                const metrics::Image b{p.panelWidth, p.panelHeight, 4, reference->eia};
+                metrics::writeDiffImage(dir / (r.name + "_diff_eia.png"), a, b, 4.0f);
                 written.push_back(dir / (r.name + "_diff_eia.png"));
             }
         }
-        writeTextFileAtomic(dir / "bench.csv", benchCsv(report));
+        io::writeFileAtomically(dir / "bench.csv", benchCsv(report));
         written.push_back(dir / "bench.csv");
-        writeTextFileAtomic(dir / "speed_vs_error.svg", speedErrorSvg(report));
+        io::writeFileAtomically(dir / "speed_vs_error.svg", speedErrorSvg(report));
         written.push_back(dir / "speed_vs_error.svg");
-        writeTextFileAtomic(dir / "bench.json", benchJson(report).dump(2) + "\n");
+        io::writeFileAtomically(dir / "bench.json", benchJson(report).dump(2) + "\n");
         written.push_back(dir / "bench.json");
     } catch (...) {
         for (const fs::path& path : written) {

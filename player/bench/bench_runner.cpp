@@ -6,12 +6,10 @@
 #include "frame_pipeline.h"
 #include "frame_stages.h"
 #include "gstd_cache.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "simulated_viewer.h"
 
 #include "lfd/framing.h"
-
-#include "image_metrics.h"
 
 #include <epoxy/gl.h>
 
@@ -29,8 +27,8 @@ namespace lfd::player {
 namespace {
 
 struct CapturedFrame {
-    std::vector<Image> views; // image order
-    Image eia;
+    std::vector<metrics::Image> views; // image order
+    metrics::Image eia;
 };
 
 CapturedFrame capture(const FramePipeline& pipeline)
@@ -45,19 +43,11 @@ CapturedFrame capture(const FramePipeline& pipeline)
     return out;
 }
 
-Quality compare(const Image& a, const Image& reference)
+Quality compare(const metrics::Image& a, const metrics::Image& reference)
 {
-    const auto rgb = [](const Image& image) {
-        return metrics::rgbFromPixels8(image.pixels.data(), int(image.width), int(image.height),
-                                       int(image.channels));
-    };
-    return {rmse(a, reference), psnr(a, reference), ssimLuma(a, reference),
-            metrics::flip(rgb(reference), rgb(a))};
-}
-
-double psnrFromRmse(double e)
-{
-    return e == 0.0 ? std::numeric_limits<double>::infinity() : 20.0 * std::log10(255.0 / e);
+    const metrics::RgbImage test = metrics::rgbFromImage(a), ref = metrics::rgbFromImage(reference);
+    const double rmse = metrics::rmse(ref, test);
+    return {rmse, metrics::psnrFromRmse(rmse), metrics::ssim(ref, test), metrics::flip(ref, test)};
 }
 
 struct Config {
@@ -85,7 +75,7 @@ struct BenchRun {
     std::optional<GstdCache> gstdCache;
     std::string gstdKey;
     CapturedFrame reference;
-    Image referenceLens;
+    metrics::Image referenceLens;
     std::vector<RendererResult> results;
     BenchReport& report;
     // The configurations timed round-robin (timeRoundRobin), by name: their stages and
@@ -366,12 +356,12 @@ Quality compareAllViews(const CapturedFrame& frame, const CapturedFrame& referen
 {
     double mse = 0.0, ssim = 0.0;
     for (size_t v = 0; v < frame.views.size(); ++v) {
-        const double e = rmse(frame.views[v], reference.views[v]);
+        const double e = metrics::rmse(frame.views[v], reference.views[v]);
         mse += e * e;
-        ssim += ssimLuma(frame.views[v], reference.views[v]);
+        ssim += metrics::ssim(frame.views[v], reference.views[v]);
     }
     const double n = double(frame.views.size());
-    return {std::sqrt(mse / n), psnrFromRmse(std::sqrt(mse / n)), ssim / n, std::numeric_limits<double>::quiet_NaN()};
+    return {std::sqrt(mse / n), metrics::psnrFromRmse(std::sqrt(mse / n)), ssim / n, std::numeric_limits<double>::quiet_NaN()};
 }
 
 // The captured frame's quality against the reference; configuration 0 is the reference
@@ -381,7 +371,7 @@ void compareWithReference(BenchRun& run, size_t i, CapturedFrame& frame, Rendere
     const DisplayProfile& profile = run.profile;
     // Through the lens: what an eye at the centre view position sees of this EIA.
     const double eyePosition = 0.5 * double(profile.viewCount);
-    const Image lens{profile.viewWidth, profile.viewHeight, 4,
+    const metrics::Image lens{profile.viewWidth, profile.viewHeight, 4,
                      simulateViewer(profile, frame.eia.pixels, eyePosition)};
     if (i == 0) {
         // The reference against itself: identical.

@@ -62,7 +62,7 @@ struct BenchOptions {
 // "lfdpr" for (lfdpr, none, 1), else e.g. "lfdpr+aa-view-spatial+ss-2v".
 std::string configName(const std::string& renderer, const std::string& aa, const std::string& ss);
 
-// Quality of one image set against the reference's (image_output.h metrics).
+// Quality of one image set against the reference's (image_metrics.h).
 struct Quality {
     double rmse = 0.0; // 0..255
     double psnr = 0.0; // dB, +inf when identical

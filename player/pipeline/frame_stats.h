@@ -47,7 +47,5 @@ std::string statsCsv(const std::map<std::string, StageTimes>& stages);
 // std::runtime_error naming the file.
 void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
                 const std::map<std::string, StageTimes>& stages);
-// Atomic text file write used above.
-void writeTextFileAtomic(const std::filesystem::path& path, const std::string& text);
 
 } // namespace lfd::player

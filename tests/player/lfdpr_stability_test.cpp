@@ -18,7 +18,7 @@
 #include "test_scenes.h"
 
 #include "frame_uniforms.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "lfdpr_math.h"
 #include "renderer_registry.h"
 #include "renderer_lfdpr.h"
@@ -39,7 +39,7 @@
 namespace lfd::test {
 namespace {
 
-using player::Image;
+using metrics::Image;
 
 class LfdprStabilityTest : public GlTest {};
 
@@ -304,9 +304,9 @@ void keepImages(const std::string& name, const Frame& lfdpr, const Frame& mvr, s
     if (!::testing::Test::HasFailure() && !std::getenv("LFD_KEEP_TEST_IMAGES"))
         return;
     const std::filesystem::path dir = testOutputDir("lfdpr_stability_" + name);
-    player::writeImage(dir / "mvr.png", mvr.views[view]);
-    player::writeImage(dir / "lfdpr.png", lfdpr.views[view]);
-    player::writeDiffImage(dir / "diff.png", lfdpr.views[view], mvr.views[view]);
+    metrics::writeImage(dir / "mvr.png", mvr.views[view]);
+    metrics::writeImage(dir / "lfdpr.png", lfdpr.views[view]);
+    metrics::writeDiffImage(dir / "diff.png", lfdpr.views[view], mvr.views[view]);
     std::printf("[ images   ] %s\n", dir.string().c_str());
 }
 

@@ -13,7 +13,7 @@
 #include "frame_stages.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "renderer_registry.h"
 #include "shader_library.h"
 #include "view_targets.h"
