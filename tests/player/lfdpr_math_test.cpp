@@ -1,4 +1,4 @@
-// LFDPR formulas (shaders/lfdpr_math.glsl compiled as C++ through player/lfdpr_math.h, so
+// LFDPR formulas (shaders/lfdpr_math.glsl compiled as C++ through player/render/lfdpr/lfdpr_math.h, so
 // these test the code the shaders run): pixel-edge reverse projection, T_align / S_ortho,
 // the sampling-spacing property, eq. lfd_texelSplatDensity, size_vpuv, LOD, the tv
 // interpolation with its division guard, coverage rules, and the union-frustum planes.

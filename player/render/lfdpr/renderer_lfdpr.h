@@ -13,7 +13,7 @@
 //      64-bit (depth << 32 | rgba8) word, or by the two-pass 32-bit fallback.
 //   3. "resolve": a compute pass writes the winning colours (or the background) into the
 //      ViewTargets colour array, so the EIA builder, quilt and view outputs are shared.
-// The shared formulas live in shaders/lfdpr_math.glsl (player/lfdpr_math.h on the CPU).
+// The shared formulas live in shaders/lfdpr_math.glsl (player/render/lfdpr/lfdpr_math.h on the CPU).
 #pragma once
 
 #include "renderer.h"
