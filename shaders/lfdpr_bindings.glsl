@@ -1,5 +1,7 @@
-// LFDPR buffers: binding points, uniform locations and std430/std140 layouts shared by the
-// point-generation and view-generation stages. This file is the only definition: the
+// LFDPR buffers: binding points, uniform locations and std430/std140 layouts of both LFDPR
+// pipelines (renderer_lfdpr.h): the paper's (LfdprPaper* structs, lfdpr_paper_*
+// shaders) and the visibility pipeline (LfdprVisibility* and the other Lfdpr*Gpu structs,
+// lfdpr_visibility_* shaders). This file is the only definition: the
 // build generates the C++ side from it (lfdpr_bindings_gpu.h: every #define as a constant,
 // every struct and fixed-member block as a C++ struct with these offsets; see
 // player/gl/gpu_layout_gen.cpp), and tests/player/gpu_layout_test.cpp checks every member
@@ -9,11 +11,13 @@
 // Requires scene_bindings.glsl first (LFD_SSBO_* 0..3 and LFD_UBO_FRAME 0 are taken).
 
 #define LFDPR_SSBO_POINTS 4
-#define LFDPR_SSBO_TRIANGLES 5    // TriangleRecordGpu: what view generation needs
-#define LFDPR_SSBO_SAMPLING 6     // TriangleSamplingGpu: what the point FS needs
+#define LFDPR_SSBO_TRIANGLES 5    // LfdprPaperTriangleGpu: what view generation needs
+#define LFDPR_SSBO_SAMPLING 6     // LfdprPaperSamplingGpu: what the point FS needs
 #define LFDPR_SSBO_COUNTERS 7
-#define LFDPR_SSBO_VIEW_DEPTH 8   // 32-bit path: depth words; 64-bit path: depth|colour
-#define LFDPR_SSBO_VIEW_COLOR 9   // 32-bit path: colour words
+#define LFDPR_SSBO_VIEW_DEPTH 8   // 32-bit path: depth words; 64-bit path: depth|payload
+// 32-bit path: per view pixel, the payload of the depth test's winner - its colour word
+// (paper pipeline) or its LfdprRecordGpu index (visibility pipeline).
+#define LFDPR_SSBO_VIEW_WINNER 9
 #define LFDPR_SSBO_VIEW_INVERSE 10 // sceneFromClip per view
 #define LFDPR_UBO_FRAME 1
 #define LFDPR_IMAGE_VIEWS 0
@@ -28,7 +32,7 @@
 #define LFDPR_OPTION_TEXTURE_SPLATTING 2
 #define LFDPR_OPTION_MV_MIPMAPPING 4
 
-// TriangleRecordGpu flags.
+// LfdprPaperTriangleGpu flags.
 #define LFDPR_TRIANGLE_DOUBLE_SIDED 1
 #define LFDPR_TRIANGLE_MIRRORED 2     // node transform flips the winding (front = CW)
 #define LFDPR_TRIANGLE_FACE_NORMAL 4  // no normal stream: shade with the face normal
@@ -50,9 +54,9 @@
 // fetched at LOD_min and LOD_max (paper: tv_min, tv_max), packed 8 bits per channel.
 // Normal-mapped surfaces store the two perturbed normals instead of the two normal-map
 // texels (the tangent frame is applied at fetch time, so no frame is stored per point).
-struct PointGpu {
+struct LfdprPaperPointGpu {
     vec3 position;      // scene space (splat centre)
-    uint triangle;      // TriangleRecordGpu index
+    uint triangle;      // LfdprPaperTriangleGpu index
     uint normalMin;     // octahedral unit normal, 2 x snorm16 (LOD_min)
     uint normalMax;     // (LOD_max)
     uint baseColorMin;  // sRGB-encoded rgb, linear alpha (texture value, factor not applied)
@@ -66,7 +70,7 @@ struct PointGpu {
 // One triangle as view generation sees it (std430), indexed by draw record base
 // + gl_PrimitiveID: scene-space vertices for the inside-triangle test, the sampling axes
 // and spacings (the splat size), and the multiview-mipmapping range.
-struct TriangleRecordGpu {
+struct LfdprPaperTriangleGpu {
     vec4 p0;    // xyz scene position, w = uintBitsToFloat(material index)
     vec4 p1;    // xyz, w = A_ts / A_ws in scene units (texture area per world area)
     vec4 p2;    // xyz, w = uintBitsToFloat(LFDPR_TRIANGLE_* flags)
@@ -76,7 +80,7 @@ struct TriangleRecordGpu {
 };
 
 // What the point fragment shader needs besides the record (std430).
-struct TriangleSamplingGpu {
+struct LfdprPaperSamplingGpu {
     vec4 origin;   // xyz scene point of sampling coordinates (0, 0), w unused
     vec4 q01;      // sampling coordinates of p0 (xy) and p1 (zw)
     vec4 q2uv0;    // q2 (xy), uv0 (zw)
@@ -114,9 +118,9 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 
 // ---------------------------------------------------------------------------------------
 // The visibility pipeline (lfdpr's default; the paper's pipeline above stays selectable):
-// compute point generation (lfdpr_points.comp), visibility splatting of depth and point
-// index (lfdpr_visibility.comp), then shading once per visible view pixel
-// (lfdpr_shade.comp). A point is 8 bytes: its triangle record and its sampling cell.
+// compute point generation (lfdpr_visibility_points.comp), visibility splatting of depth and point
+// index (lfdpr_visibility_splat.comp), then shading once per visible view pixel
+// (lfdpr_visibility_shade.comp). A point is 8 bytes: its triangle record and its sampling cell.
 #define LFDPR_SSBO_RECORDS 11      // LfdprRecordGpu per emitting triangle
 #define LFDPR_SSBO_INDICES 12      // the scene's index buffer (uint)
 #define LFDPR_SSBO_POSITIONS 13    // the scene's position stream (float x 3 per vertex)
@@ -148,20 +152,20 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
 #define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI the winner's record (32-bit path)
 
-#define LFDPR_LOC_FIRST_WORKGROUP 7 // lfdpr_points.comp: the dispatch's first LfdprWorkgroupGpu
-#define LFDPR_LOC_WORKGROUPS 8     // lfdpr_points.comp: LfdprWorkgroupGpu entries it covers
-#define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_shade.comp: the material whose textures are bound
+#define LFDPR_LOC_FIRST_WORKGROUP 7 // lfdpr_visibility_points.comp: the dispatch's first LfdprWorkgroupGpu
+#define LFDPR_LOC_WORKGROUPS 8     // lfdpr_visibility_points.comp: LfdprWorkgroupGpu entries it covers
+#define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_visibility_shade.comp: the material whose textures are bound
 #define LFDPR_LOC_LARGE_BASE 10    // first LFDPR_SSBO_LARGE slot of the dispatch class
-#define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_shade.comp: the shading group dispatched
-#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_list.comp, lfdpr_repair_dispatch.comp: groups in use
-#define LFDPR_LOC_LARGE_CLASS 13   // lfdpr_points.comp: the dispatch class (its LFDPR_SSBO_LARGE_DISPATCH entry)
+#define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_visibility_shade.comp: the shading group dispatched
+#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_visibility_shade_list.comp, lfdpr_visibility_repair_dispatch.comp: groups in use
+#define LFDPR_LOC_LARGE_CLASS 13   // lfdpr_visibility_points.comp: the dispatch class (its LFDPR_SSBO_LARGE_DISPATCH entry)
 
-// Shading (lfdpr_shade_list.comp, lfdpr_shade.comp): view pixels are shaded in tiles of
+// Shading (lfdpr_visibility_shade_list.comp, lfdpr_visibility_shade.comp): view pixels are shaded in tiles of
 // LFDPR_SHADE_TILE x LFDPR_SHADE_TILE pixels, a tile position over a chunk of views at a
 // time. Materials fall into shading groups - group 0 every untextured material, then one
 // group per textured material (whose textures are bound for its dispatch) - and each
 // group's dispatch visits only the tile chunks, and in them the views, where a point of
-// the group was splatted (lfdpr_visibility.comp marks them). Textured materials beyond
+// the group was splatted (lfdpr_visibility_splat.comp marks them). Textured materials beyond
 // LFDPR_MAX_SHADE_GROUPS - 1 share groups (each then visits its group's tiles and shades
 // only its own pixels).
 #define LFDPR_SHADE_TILE 8
@@ -176,7 +180,7 @@ uint lfdViewWord(uint view, uint x, uint y, uint width, uint viewCount)
 }
 
 // One point of the visibility pipeline (std430): its triangle record and its sampling cell.
-struct LfdprPointGpu {
+struct LfdprVisibilityPointGpu {
     uint record; // LfdprRecordGpu index
     uint cell;   // sampling cell: x | y << 16
 };
@@ -209,7 +213,7 @@ struct LfdprDrawGpu {
 };
 
 // Counters of the visibility pipeline (std430). The splat's indirect dispatch is made from
-// them on the GPU (lfdpr_dispatch.comp); the renderer reads them back frames later behind a
+// them on the GPU (lfdpr_paper_dispatch.comp); the renderer reads them back frames later behind a
 // fence (gl::GpuReadback, by name), for the stats and to grow the point buffer after an
 // overflow - never waiting for them.
 struct LfdprVisCountersGpu {
@@ -224,14 +228,14 @@ struct LfdprVisCountersGpu {
 };
 
 // The 32-bit path's repair, made on the GPU from the shading's first pass
-// (lfdpr_repair_dispatch.comp, std430): three indirect dispatches, each of zero workgroups
+// (lfdpr_visibility_repair_dispatch.comp, std430): three indirect dispatches, each of zero workgroups
 // when it has nothing to do, so the frame never waits to learn whether to repair.
 struct LfdprRepairGpu {
-    uvec4 indexPass;  // xyz: lfdpr_visibility.comp LFDPR_INDEX_PASS over every point (0 without
+    uvec4 indexPass;  // xyz: lfdpr_visibility_splat.comp LFDPR_INDEX_PASS over every point (0 without
                       // repairs); w: view pixels to repair (the first pass's repairCount)
-    uvec4 listRepair; // xyz: lfdpr_shade_list.comp LFDPR_REPAIR_LIST over the repair list,
+    uvec4 listRepair; // xyz: lfdpr_visibility_shade_list.comp LFDPR_REPAIR_LIST over the repair list,
                       // when the list holds every repair; w 0
-    uvec4 listAll;    // xyz: lfdpr_shade_list.comp over every marked chunk again, when more
+    uvec4 listAll;    // xyz: lfdpr_visibility_shade_list.comp over every marked chunk again, when more
                       // pixels raced than the list holds; w 0
 };
 

@@ -4,7 +4,7 @@
 // record and sampling cell; everything else about it is derived from here.
 // Needs scene_bindings.glsl and lfdpr_bindings.glsl first.
 
-// LFDPR_SCENE_TEXELS (lfdpr_shade.comp): the reads go through buffer textures over the
+// LFDPR_SCENE_TEXELS (lfdpr_visibility_shade.comp): the reads go through buffer textures over the
 // same buffers (LFDPR_UNIT_*): Mesa's llvmpipe turns a storage-buffer load at a
 // per-invocation address into a loop over the SIMD lanes, once per component and with a
 // bounds check per lane, while texelFetch is one vectorised gather of a whole texel. That
@@ -141,7 +141,7 @@ LfdSamplingFrame lfdRecordFrame(vec3 p0, vec3 p1, vec3 p2, vec2 spacing)
 }
 
 // A compact point: (record, sampling cell x | y << 16).
-vec2 lfdPointCell(uvec2 point)
+vec2 lfdPointCell(LfdprVisibilityPointGpu point)
 {
-    return vec2(float(point.y & 0xFFFFu), float(point.y >> 16)) + vec2(0.5);
+    return vec2(float(point.cell & 0xFFFFu), float(point.cell >> 16)) + vec2(0.5);
 }

@@ -1,6 +1,6 @@
 // LFDPR per-triangle sampling setup (paper section 3.1), shared by both point generators:
-// the geometry shader of the paper's pipeline (lfdpr_points.geom) and the compute path
-// (lfdpr_points.comp). One function, so both sample every triangle identically and emit
+// the geometry shader of the paper's pipeline (lfdpr_paper_points.geom) and the compute path
+// (lfdpr_visibility_points.comp). One function, so both sample every triangle identically and emit
 // the same point set. Needs scene_bindings.glsl, lfdpr_bindings.glsl and lfdpr_math.glsl.
 //
 // Steps: cull; find the triangle's point closest to the viewing line; reverse-project one

@@ -4,7 +4,7 @@
 // interpolation with its division guard, coverage rules, and the union-frustum planes.
 // CPU only.
 #include "lfdpr_math.h"
-#include "lfdpr_point_generation.h"
+#include "lfdpr_paper_point_generation.h"
 
 #include "lfd/display_profile.h"
 #include "lfd/framing.h"
@@ -213,7 +213,7 @@ TEST(LfdprMath, TexValueInterpolation)
     EXPECT_NEAR(tv.w, 1.0f, 1e-6f);
 }
 
-// The GS's spacing choice over views (same loop as lfdpr_points.geom, step 3).
+// The GS's spacing choice over views (same loop as lfdpr_paper_points.geom, step 3).
 vec2 finestEdges(vec3 p, vec3 n, const std::vector<vec3>& eyes)
 {
     float h = 1e30f, v = 1e30f;

@@ -62,14 +62,14 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, uint32_
     std::vector<std::string> splatDefines;
     if (!int64 && testIndexRaces > 0)
         splatDefines.push_back("LFDPR_TEST_INDEX_RACES " + std::to_string(testIndexRaces));
-    splatProgram_ = build("lfdpr_visibility.comp", splatDefines);
+    splatProgram_ = build("lfdpr_visibility_splat.comp", splatDefines);
     if (!int64)
-        indexProgram_ = build("lfdpr_visibility.comp", {"LFDPR_INDEX_PASS 1"});
-    listProgram_ = build("lfdpr_shade_list.comp", {});
+        indexProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1"});
+    listProgram_ = build("lfdpr_visibility_shade_list.comp", {});
     if (!int64)
-        listRepairProgram_ = build("lfdpr_shade_list.comp", {"LFDPR_REPAIR_LIST 1"});
+        listRepairProgram_ = build("lfdpr_visibility_shade_list.comp", {"LFDPR_REPAIR_LIST 1"});
     if (!int64) {
-        repairDispatchProgram_ = build("lfdpr_repair_dispatch.comp", {});
+        repairDispatchProgram_ = build("lfdpr_visibility_repair_dispatch.comp", {});
         repair_ = gl::createBuffer(LfdprConstants::get().repairBytes);
     }
     // The untextured group's program is always needed; built now (for a scene with every
@@ -90,7 +90,7 @@ unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t str
     defines.emplace_back(mask);
     std::snprintf(mask, sizeof(mask), "LFD_STREAMS 0x%Xu", streams);
     defines.emplace_back(mask);
-    gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines));
+    gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility_shade.comp"}}, defines));
     const unsigned name = program.get();
     shadePrograms_[key] = std::move(program);
     return name;
@@ -151,7 +151,7 @@ void LfdprVisibilityShading::beginFrame(const GpuScene& scene, const std::vector
 }
 
 // The shading counters and each group's indirect dispatch: (0, 1, 0) workgroups, entry
-// count 0 (lfdpr_shade_list.comp keeps x and y as maxima and sets z with the first entry).
+// count 0 (lfdpr_visibility_shade_list.comp keeps x and y as maxima and sets z with the first entry).
 void LfdprVisibilityShading::clearShadeDispatches() const
 {
     const GLuint empty[4] = {0u, 1u, 0u, 0u};
@@ -167,7 +167,7 @@ void LfdprVisibilityShading::splat(unsigned counters)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewWinner, index_);
     // The 32-bit path's index pass runs only to repair, in shade().
     splatPass(splatProgram_, counters, offsetof(LfdprVisCountersGpu, splatGroupsX));
 }
@@ -220,9 +220,9 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
     const LfdprConstants& k = LfdprConstants::get();
 
     // Step 1: each group's list of tile chunks from the splat's marks, and with it the
-    // group's indirect dispatch (lfdpr_shade_list.comp). Pass 2 (the repair): emptied
+    // group's indirect dispatch (lfdpr_visibility_shade_list.comp). Pass 2 (the repair): emptied
     // again, then the repair list's chunks when it held them all, else all again
-    // (lfdpr_repair_dispatch.comp sized both, the one not needed to zero workgroups).
+    // (lfdpr_visibility_repair_dispatch.comp sized both, the one not needed to zero workgroups).
     for (const unsigned list : {listProgram_.get(), listRepairProgram_.get()})
         if (list) // the repair list exists on the 32-bit path only
             glProgramUniform1ui(list, k.locShadeGroups, groupCount_);
@@ -230,7 +230,7 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
         const uint32_t workgroups = divideUp(entryCount_ * groupCount_, 64);
         const uint32_t width = std::min<uint32_t>(workgroups, k.shadeDispatchWidth);
         glUseProgram(listProgram_);
-        glDispatchCompute(width, divideUp(workgroups, width), 1); // lfdpr_shade_list.comp's (x, y) order
+        glDispatchCompute(width, divideUp(workgroups, width), 1); // lfdpr_visibility_shade_list.comp's (x, y) order
     } else {
         // note: the barrier orders the first pass's shader writes to these words before the
         // clear; a clear itself is ordered with the dispatches after it.

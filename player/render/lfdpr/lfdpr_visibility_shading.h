@@ -1,6 +1,6 @@
 // LFDPR visibility splatting and per-pixel shading (the visibility pipeline;
-// shaders/lfdpr_visibility.comp, lfdpr_shade_list.comp, lfdpr_shade.comp,
-// lfdpr_repair_dispatch.comp): the per-view depth and winner (triangle record) buffers for
+// shaders/lfdpr_visibility_splat.comp, lfdpr_visibility_shade_list.comp, lfdpr_visibility_shade.comp,
+// lfdpr_visibility_repair_dispatch.comp): the per-view depth and winner (triangle record) buffers for
 // either atomics path, the splat pass(es), which also mark per shading group the tile
 // chunks (a tile position over a run of views) and views its points wrote, and shading in
 // two steps - list each group's marked chunks (which sizes the group's indirect dispatch
@@ -61,7 +61,7 @@ public:
     // dispatch per group over the chunks splat() marked for it. On the 32-bit path, pixels
     // whose record lost a race to a nearer point are repaired - the index pass over every
     // point (its count from the bound LfdprVisCountersGpu block), then their chunks shaded
-    // again - with dispatches the GPU sizes from its own count (lfdpr_repair_dispatch.comp),
+    // again - with dispatches the GPU sizes from its own count (lfdpr_visibility_repair_dispatch.comp),
     // so nothing is read back; the count of repaired pixels is at repairCountOffset() in
     // repairBuffer().
     void shade(const GpuScene& scene, ViewTargets& targets);
@@ -91,7 +91,7 @@ private:
     bool int64_;
     std::vector<std::string> defines_; // every program's: atomics path, work shape
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
-    gl::Program listProgram_, listRepairProgram_; // lfdpr_shade_list.comp: marks, repair list
+    gl::Program listProgram_, listRepairProgram_; // lfdpr_visibility_shade_list.comp: marks, repair list
     gl::Program repairDispatchProgram_;
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_; // 64-bit path: depth_ holds the words

@@ -1,6 +1,6 @@
 // lfdpr, the visibility pipeline (LfdprOptions::Pipeline::Visibility, the default): owns
 // its buffers and runs, per frame,
-//   1. "point_generation": compute point generation (lfdpr_compute_points) into 8-byte
+//   1. "point_generation": compute point generation (lfdpr_visibility_points) into 8-byte
 //      points and 16-byte triangle records; as it reserves points it keeps the splat's
 //      indirect dispatch covering them (GPU side, no pass of its own);
 //   2. "view_generation": visibility splatting of depth and the point's triangle record
@@ -19,10 +19,10 @@
 #include "gpu_readback.h"
 #include "gpu_timer.h"
 #include "lfdpr_camera_line.h"
-#include "lfdpr_compute_points.h"
+#include "lfdpr_visibility_points.h"
 #include "lfdpr_constants.h"
 #include "lfdpr_counters.h"
-#include "lfdpr_point_generation.h" // makeLfdprFrame, LfdprFrameGpu
+#include "lfdpr_paper_point_generation.h" // makeLfdprFrame, LfdprFrameGpu
 #include "lfdpr_visibility_shading.h"
 #include "scene_bindings.h"
 #include "shader_library.h"
@@ -344,7 +344,7 @@ private:
     bool gpuWork_; // LFDPR_WORK_GPU for every program (lfdpr_work_shape.glsl)
     LfdprFrameInfo info_;
     FrameUniforms uniforms_;
-    LfdprComputePointGeneration pointGeneration_;
+    LfdprVisibilityPointGeneration pointGeneration_;
     LfdprVisibilityShading shading_;
     uint64_t sceneSerial_ = 0; // GpuScene::serial() of the scene the tables are for
     std::vector<uint32_t> drawFirstTriangle_;

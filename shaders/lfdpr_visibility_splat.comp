@@ -1,7 +1,7 @@
 #version 450 core
 // LFDPR visibility splatting (the visibility pipeline; paper section 3.2 without the
 // per-splat shading): one invocation per point splats it into every view, writing only
-// depth and the point's triangle record; lfdpr_shade.comp then shades each visible pixel
+// depth and the point's triangle record; lfdpr_visibility_shade.comp then shades each visible pixel
 // once. The record, not the point, is what the shading needs (it evaluates the triangle
 // at the pixel's own centre, whichever of its points won), so a pixel's word names it
 // directly and the shading reads one texel less per pixel and view.
@@ -18,14 +18,14 @@
 // multiply-add each. Facing, coverage and depth are then evaluated per view as usual.
 //
 // The depth pass also marks, for the point's shading group, the tile chunks and views it
-// wrote pixels in (LFDPR_SSBO_CHUNK_MASKS), from which lfdpr_shade_list.comp lists the
+// wrote pixels in (LFDPR_SSBO_CHUNK_MASKS), from which lfdpr_visibility_shade_list.comp lists the
 // shading work.
 //
 // Depth key: lfdPlaneDepthKey (smaller = nearer; 0xFFFFFFFF = empty).
 // LFDPR_INT64: atomicMin on (key << 32 | record) (GL_NV_shader_atomic_int64).
 // Otherwise 32-bit words: atomicMin on the key, and the invocation that lowered it stores
 // its record with a plain store. A nearer point racing a farther one can leave the
-// farther one's record behind; lfdpr_shade.comp checks every pixel's record against its key
+// farther one's record behind; lfdpr_visibility_shade.comp checks every pixel's record against its key
 // and flags the few that disagree, and only then the index pass runs (LFDPR_INDEX_PASS, a
 // program of its own: llvmpipe would run an untaken branch for it in every pixel): where
 // the key equals the minimum, atomicMin on the record. The image is the same either way:
@@ -47,7 +47,7 @@
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
 layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
-    uvec2 points[];
+    LfdprVisibilityPointGpu points[];
 };
 layout(std430, binding = LFDPR_SSBO_RECORDS) readonly buffer Records {
     LfdprRecordGpu records[];
@@ -63,8 +63,8 @@ layout(std430, binding = LFDPR_SSBO_CHUNK_MASKS) buffer ChunkMasks {
 // Marks, for the point's shading group, the tile chunks of one view chunk in which it wrote
 // pixels: the tiles of columns tileLo..tileHi (the union over the chunk's views) and rows
 // tileRows, with the views it wrote in - one atomicOr per tile and mask word, once per
-// point and view chunk (lfdpr_shade_list.comp lists the marks). The union may list a tile
-// for a view the point missed; lfdpr_shade.comp checks each pixel's winner anyway.
+// point and view chunk (lfdpr_visibility_shade_list.comp lists the marks). The union may list a tile
+// for a view the point missed; lfdpr_visibility_shade.comp checks each pixel's winner anyway.
 void lfdMarkChunk(uint group, uint chunk, int tileLo, int tileHi, uvec2 tileRows, uvec2 views, uvec2 tiles,
                   uint entries)
 {
@@ -97,7 +97,7 @@ layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewWords {
 layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewDepth {
     uint viewDepth[];
 };
-layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
+layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) buffer ViewIndex {
     uint viewIndex[];
 };
 #endif
@@ -105,7 +105,7 @@ layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
 void main()
 {
     // Workgroup w splats LFDPR_GROUP_SIZE consecutive points into one slice of
-    // LFDPR_SPLAT_VIEWS views (lfdpr_work_shape.glsl; lfdpr_dispatch.comp sized the grid).
+    // LFDPR_SPLAT_VIEWS views (lfdpr_work_shape.glsl; lfdpr_paper_dispatch.comp sized the grid).
     uint viewCount = u_lfd.counts.x;
     uint slices = lfdSplatSlices(viewCount);
     uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
@@ -115,8 +115,8 @@ void main()
         return;
 
     // Step 1: the point, its triangle and the cell's corners in the triangle plane.
-    uvec2 point = points[index];
-    uint record = point.x; // what the view words hold
+    LfdprVisibilityPointGpu point = points[index];
+    uint record = point.record; // what the view words hold
     LfdprRecordGpu r = records[record];
     LfdprDrawGpu draw = draws[r.draw];
     vec3 p0, p1, p2;

@@ -4,10 +4,10 @@
 // never reads the count back to decide (README "Frames that never wait"). Each of the
 // three indirect dispatches of LfdprRepairGpu gets zero workgroups when it has nothing to
 // do: without races the repair costs three empty dispatches.
-//   indexPass: lfdpr_visibility.comp LFDPR_INDEX_PASS over every point (as the splat);
-//   listRepair: lfdpr_shade_list.comp LFDPR_REPAIR_LIST, one invocation per (repair-list
+//   indexPass: lfdpr_visibility_splat.comp LFDPR_INDEX_PASS over every point (as the splat);
+//   listRepair: lfdpr_visibility_shade_list.comp LFDPR_REPAIR_LIST, one invocation per (repair-list
 //     entry, group), when the repair list holds every raced pixel;
-//   listAll: lfdpr_shade_list.comp over every (group, chunk) again, when it does not.
+//   listAll: lfdpr_visibility_shade_list.comp over every (group, chunk) again, when it does not.
 // One invocation.
 #include "scene_bindings.glsl"
 #define LFDPR_VISIBILITY_PIPELINE
@@ -27,7 +27,7 @@ layout(std430, binding = LFDPR_SSBO_REPAIR) writeonly buffer Repair {
 };
 
 // Workgroups of 64 invocations covering `invocations`, LFDPR_SHADE_DISPATCH_WIDTH per row
-// (lfdpr_shade_list.comp's (x, y) order); none for none.
+// (lfdpr_visibility_shade_list.comp's (x, y) order); none for none.
 uvec3 listGroups(uint invocations)
 {
     uint groups = (invocations + 63u) / 64u;

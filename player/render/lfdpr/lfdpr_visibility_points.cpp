@@ -1,4 +1,4 @@
-#include "lfdpr_compute_points.h"
+#include "lfdpr_visibility_points.h"
 
 #include "gpu_scene.h"
 #include "lfdpr_constants.h"
@@ -32,7 +32,7 @@ void dispatchCovering(uint32_t n)
 
 } // namespace
 
-LfdprComputePointGeneration::LfdprComputePointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork)
+LfdprVisibilityPointGeneration::LfdprVisibilityPointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork)
 {
     for (int alpha = 0; alpha < 2; ++alpha)
         for (int large = 0; large < 2; ++large) {
@@ -47,11 +47,11 @@ LfdprComputePointGeneration::LfdprComputePointGeneration(bool pixelCentreCulling
                 defines.push_back("LFDPR_CELL_SCALE " + std::to_string(cellScale));
             if (gpuWork)
                 defines.emplace_back("LFDPR_WORK_GPU 1");
-            programs_[alpha][large] = gl::Program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, defines));
+            programs_[alpha][large] = gl::Program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility_points.comp"}}, defines));
         }
 }
 
-void LfdprComputePointGeneration::prepare(const GpuScene& scene)
+void LfdprVisibilityPointGeneration::prepare(const GpuScene& scene)
 {
     if (scene.serial() == sceneSerial_)
         return;
@@ -93,15 +93,15 @@ void LfdprComputePointGeneration::prepare(const GpuScene& scene)
              classes_.size() * k.largeDispatchBytes;
 }
 
-void LfdprComputePointGeneration::clearQueues() const
+void LfdprVisibilityPointGeneration::clearQueues() const
 {
-    const GLuint noGroups[4] = {0, 1, 1, 0}; // x, y, z, queued (lfdpr_points.comp keeps x, y)
+    const GLuint noGroups[4] = {0, 1, 1, 0}; // x, y, z, queued (lfdpr_visibility_points.comp keeps x, y)
     glClearNamedBufferData(largeDispatch_, GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, noGroups);
 }
 
-size_t LfdprComputePointGeneration::bufferBytes() const { return bytes_; }
+size_t LfdprVisibilityPointGeneration::bufferBytes() const { return bytes_; }
 
-void LfdprComputePointGeneration::run(const GpuScene& scene) const
+void LfdprVisibilityPointGeneration::run(const GpuScene& scene) const
 {
     const LfdprConstants& k = LfdprConstants::get();
     const uint32_t streams = scene.cpu().vertices.mask();

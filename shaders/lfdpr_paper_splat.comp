@@ -28,10 +28,10 @@
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
 layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
-    PointGpu points[];
+    LfdprPaperPointGpu points[];
 };
 layout(std430, binding = LFDPR_SSBO_TRIANGLES) readonly buffer TriangleRecords {
-    TriangleRecordGpu records[];
+    LfdprPaperTriangleGpu records[];
 };
 layout(std430, binding = LFDPR_SSBO_VIEW_INVERSE) readonly buffer ViewInverse {
     mat4 sceneFromClip[];
@@ -44,7 +44,7 @@ layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewWords {
 layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewDepth {
     uint viewDepth[];
 };
-layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewColor {
+layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) buffer ViewColor {
     uint viewColor[];
 };
 layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
@@ -81,8 +81,8 @@ void main()
         return;
 
     // Step 1: the point, its triangle and its material.
-    PointGpu point = points[index];
-    TriangleRecordGpu r = records[point.triangle];
+    LfdprPaperPointGpu point = points[index];
+    LfdprPaperTriangleGpu r = records[point.triangle];
     vec3 p0 = r.p0.xyz, p1 = r.p1.xyz, p2 = r.p2.xyz;
     uint flags = floatBitsToUint(r.p2.w);
     MaterialGpu m = materials[floatBitsToUint(r.p0.w)];

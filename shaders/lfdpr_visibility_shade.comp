@@ -1,6 +1,6 @@
 #version 450 core
 // LFDPR shading, step 2 of 2 (the visibility pipeline): each view pixel that a point won
-// in lfdpr_visibility.comp is shaded once, as mvr shades a fragment - the same material
+// in lfdpr_visibility_splat.comp is shaded once, as mvr shades a fragment - the same material
 // function (material_shading.glsl), the point's triangle interpolated perspective-correctly
 // at the pixel centre, and every texture fetched with textureGrad at the pixel's exact
 // footprint in this view (analytic uv gradients: the pixel's neighbours on the triangle
@@ -8,7 +8,7 @@
 // replaces the paper's per-splat shading with tv_min / tv_max (multiview mipmapping),
 // which the paper's pipeline keeps.
 //
-// One dispatch per shading group (lfdpr_shade_list.comp): a workgroup per listed tile chunk
+// One dispatch per shading group (lfdpr_visibility_shade_list.comp): a workgroup per listed tile chunk
 // (one tile position over a run of views) and slice of its views (lfdpr_work_shape.glsl:
 // the whole chunk on llvmpipe, LFDPR_SHADE_VIEWS on a GPU), each invocation finding the views of the
 // chunk's mask in which its pixel is group u_group's and shading those (a textured group
@@ -18,7 +18,7 @@
 // program reads a stream the scene lacks (llvmpipe would run those loads under an off mask).
 // On the 32-bit path, u_pass 0 first checks that the stored record belongs to the
 // stored depth key; a pixel that fails gets no index, its tile chunk goes on the repair
-// list, and after lfdpr_visibility.comp's index pass the listed chunks are shaded again
+// list, and after lfdpr_visibility_splat.comp's index pass the listed chunks are shaded again
 // (u_pass 2).
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
@@ -54,7 +54,7 @@ layout(binding = LFDPR_UNIT_TANGENTS) uniform samplerBuffer t_sceneTangents;
 layout(binding = LFDPR_UNIT_UVS) uniform samplerBuffer t_sceneUvs;
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
 #ifndef LFDPR_INT64
-layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) writeonly buffer ViewIndex {
+layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) writeonly buffer ViewIndex {
     uint viewIndex[];
 };
 #endif
@@ -65,7 +65,7 @@ vec3 objectNormal(uint vertex)
 }
 
 // A visible point's triangle in one view: its draw, vertices, scene positions and window
-// positions (projected as lfdpr_visibility.comp projects them).
+// positions (projected as lfdpr_visibility_splat.comp projects them).
 struct ViewTriangle {
     LfdprDrawGpu draw;
     uvec3 vi;
@@ -172,10 +172,10 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint
     // Step 3 (32-bit path): the single splat pass stores depth by atomicMin and the index
     // by a plain store, so a racing point may have left its index under another's depth.
     if (u_pass == 0u && lfdPlaneDepthKey(vt, edges) != lfdPixelKey(pixel)) {
-        viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp LFDPR_INDEX_PASS sets it again
+        viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility_splat.comp LFDPR_INDEX_PASS sets it again
         uint entry = atomicAdd(shadeCounters.repairCount, 1u);
         if (entry < shadeCounters.repairCapacity)
-            groupTiles[shadeCounters.repairBase + entry] = chunkTile; // listed again (lfdpr_shade_list.comp)
+            groupTiles[shadeCounters.repairBase + entry] = chunkTile; // listed again (lfdpr_visibility_shade_list.comp)
         return;
     }
 #endif
@@ -188,7 +188,7 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint
 void main()
 {
     // Step 1: this workgroup's tile chunk and its views with pixels of the group, from
-    // the group's list (lfdpr_shade_list.comp).
+    // the group's list (lfdpr_visibility_shade_list.comp).
     uvec2 size = uvec2(u_lfd.viewSize.xy);
     uvec2 tiles = lfdShadeTiles(size);
     uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;

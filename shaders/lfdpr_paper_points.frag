@@ -23,13 +23,13 @@ layout(binding = LFD_UNIT_OCCLUSION) uniform sampler2D t_occlusion;
 layout(binding = LFD_UNIT_EMISSIVE) uniform sampler2D t_emissive;
 
 layout(std430, binding = LFDPR_SSBO_TRIANGLES) coherent readonly buffer TriangleRecords {
-    TriangleRecordGpu records[];
+    LfdprPaperTriangleGpu records[];
 };
 layout(std430, binding = LFDPR_SSBO_SAMPLING) coherent readonly buffer TriangleSampling {
-    TriangleSamplingGpu sampling[];
+    LfdprPaperSamplingGpu sampling[];
 };
 layout(std430, binding = LFDPR_SSBO_POINTS) writeonly buffer Points {
-    PointGpu points[];
+    LfdprPaperPointGpu points[];
 };
 
 // Texture values at the two LODs of one texture (eqs. minLOD, maxLOD with its X_t * Y_t).
@@ -61,7 +61,7 @@ vec3 perturb(vec3 n, vec3 t, float handedness, vec4 texel, float scale)
 void main()
 {
     // Step 1: conservative coverage in the sampling viewport.
-    TriangleSamplingGpu s = sampling[g_record];
+    LfdprPaperSamplingGpu s = sampling[g_record];
     vec2 q0 = s.q01.xy, q1 = s.q01.zw, q2 = s.q2uv0.xy;
     vec2 q = gl_FragCoord.xy + g_tileOrigin;
     if (!lfdPixelOverlapsTriangle(q, q0, q1, q2))
@@ -69,7 +69,7 @@ void main()
 
     // Step 2: the point: pixel centre on the triangle plane; attributes from the clamped
     // barycentrics (conservative pixels may lie just outside the triangle).
-    TriangleRecordGpu r = records[g_record];
+    LfdprPaperTriangleGpu r = records[g_record];
     LfdFrame frame;
     frame.u = r.axisU.xyz;
     frame.v = r.axisV.xyz;
@@ -129,7 +129,7 @@ void main()
     uint index = atomicAdd(counters.pointCount, 1u);
     if (index >= u_lfd.counts.y)
         return;
-    PointGpu p;
+    LfdprPaperPointGpu p;
     p.position = position;
     p.triangle = g_record;
     p.normalMin = packSnorm2x16(lfdOctEncode(normalLo));

@@ -51,7 +51,7 @@ layout(std430, binding = LFDPR_SSBO_UVS) readonly buffer SceneUvs {
     vec2 sceneUvs[];
 };
 layout(std430, binding = LFDPR_SSBO_POINTS) writeonly buffer Points {
-    LfdprPointGpu points[];
+    LfdprVisibilityPointGpu points[];
 };
 layout(std430, binding = LFDPR_SSBO_RECORDS) writeonly buffer Records {
     LfdprRecordGpu records[];
@@ -110,7 +110,7 @@ bool setUp(uint drawIndex, uint primitive, out Sampled t)
     return true;
 }
 
-// The conservative sampling rule of lfdpr_points.frag (step 1) plus the alpha test.
+// The conservative sampling rule of lfdpr_paper_points.frag (step 1) plus the alpha test.
 bool emits(Sampled t, vec2 q)
 {
     if (!lfdPixelOverlapsTriangle(q, t.s.q0, t.s.q1, t.s.q2))
@@ -207,7 +207,7 @@ void main()
         for (uint x = 0u; x < ex; ++x)
             if (emits(t, vec2(x, y) + 0.5)) {
                 if (first < capacity)
-                    points[first] = LfdprPointGpu(record, x | (y << 16));
+                    points[first] = LfdprVisibilityPointGpu(record, x | (y << 16));
                 ++first;
             }
 }
@@ -264,7 +264,7 @@ void main()
     for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))
         if (emits(t, vec2(c % ex, c / ex) + 0.5)) {
             if (index < capacity)
-                points[index] = LfdprPointGpu(s_record, (c % ex) | ((c / ex) << 16));
+                points[index] = LfdprVisibilityPointGpu(s_record, (c % ex) | ((c / ex) << 16));
             ++index;
         }
 }
