@@ -24,6 +24,7 @@
 #define LFD_PRECISE precise
 #include "lfdpr_math.glsl"
 #include "pbr_shading.glsl"
+#include "srgb.glsl"
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
@@ -49,11 +50,6 @@ layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) buffer ViewColor {
 };
 layout(location = LFDPR_LOC_PASS) uniform uint u_pass;
 #endif
-
-vec3 srgbToLinear(vec3 c)
-{
-    return mix(pow((c + 0.055) / 1.055, vec3(2.4)), c / 12.92, lessThanEqual(c, vec3(0.04045)));
-}
 
 vec4 unpackSrgb(uint word)
 {

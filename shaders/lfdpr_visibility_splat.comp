@@ -46,6 +46,12 @@
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
+// An extension point after the 32-bit path's index write, empty here: only a test build of
+// this program defines it (lfdpr_visibility_shading.cpp, LfdprOptions::testIndexRaces).
+#ifndef LFDPR_AFTER_INDEX_WRITE
+#define LFDPR_AFTER_INDEX_WRITE(index, pixel, record)
+#endif
+
 layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
     LfdprVisibilityPointGpu points[];
 };
@@ -218,13 +224,7 @@ void main()
 #else
                     if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
                         viewIndex[pixel] = record;
-#ifdef LFDPR_TEST_INDEX_RACES
-                    // Test hook (LfdprOptions::testIndexRaces): every LFDPR_TEST_INDEX_RACES-th
-                    // point also stores its record unconditionally, as a lost race would, so the
-                    // tests can drive the repair through both of its paths.
-                    if (index % uint(LFDPR_TEST_INDEX_RACES) == 0u)
-                        viewIndex[pixel] = record;
-#endif
+                    LFDPR_AFTER_INDEX_WRITE(index, pixel, record);
 #endif
                 }
             }

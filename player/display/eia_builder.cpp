@@ -6,6 +6,8 @@
 // arithmetic step by step (within one 8-bit level, see eia_builder.h).
 #include "eia_builder.h"
 
+#include "eia_bindings_gpu.h"
+
 #include "frame_stages.h"
 #include "gl_context.h"
 #include "gpu_timer.h"
@@ -74,13 +76,10 @@ uint8_t encodeSrgb(float linear) {
 // GLSL mix(x, y, a) = x * (1 - a) + y * a.
 inline float mixf(float x, float y, float a) { return x * (1.0f - a) + y * a; }
 
-GLint uniformLocation(GLuint program, const char* name) {
-    const GLint location = glGetUniformLocation(program, name);
-    if (location < 0)
-        throw gl::GlError(std::string("shaders/eia_construct.comp: uniform '") + name +
-                          "' not found (removed or optimised out)");
-    return location;
-}
+namespace eb = eia_bindings;
+static_assert(uint32_t(Reconstruction::None) == eb::kModeNone && uint32_t(Reconstruction::Spatial) == eb::kModeSpatial &&
+              uint32_t(Reconstruction::View) == eb::kModeView &&
+              uint32_t(Reconstruction::ViewSpatial) == eb::kModeViewSpatial);
 
 } // namespace
 
@@ -162,48 +161,41 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
                                     "' needs " + std::to_string(profile_.viewCount));
     const SubpixelMapping& m = profile_.mapping;
 
-    // Step 1: the mode's program and its uniforms (looked up by name, so nothing is
-    // mirrored by hand).
+    // Step 1: the mode's program and its uniforms (locations from eia_bindings.glsl).
     const unsigned prog = program(mode);
     glUseProgram(prog);
-    glUniform2ui(uniformLocation(prog, "panelSize"), profile_.panelWidth, profile_.panelHeight);
-    glUniform2ui(uniformLocation(prog, "viewSize"), views.width(), views.height());
-    glUniform1ui(uniformLocation(prog, "viewCount"), profile_.viewCount);
-    glUniform1d(uniformLocation(prog, "perSubpixel"), m.perSubpixel);
-    glUniform1d(uniformLocation(prog, "perRow"), m.perRow);
-    glUniform1d(uniformLocation(prog, "phaseOffset"), m.offset);
-    glUniform1i(uniformLocation(prog, "invertPhase"), m.invert ? 1 : 0);
-    glUniform1i(uniformLocation(prog, "subpixelsBgr"),
-                profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
+    glUniform2ui(eb::kLocPanelSize, profile_.panelWidth, profile_.panelHeight);
+    glUniform2ui(eb::kLocViewSize, views.width(), views.height());
+    glUniform1ui(eb::kLocViewCount, profile_.viewCount);
+    glUniform1d(eb::kLocPerSubpixel, m.perSubpixel);
+    glUniform1d(eb::kLocPerRow, m.perRow);
+    glUniform1d(eb::kLocPhaseOffset, m.offset);
+    glUniform1i(eb::kLocInvertPhase, m.invert ? 1 : 0);
+    glUniform1i(eb::kLocSubpixelsBgr, profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
     if (mode != Reconstruction::None) {
         const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed_);
-        glUniform3fv(uniformLocation(prog, "samples"), GLsizei(samples.size()), &samples[0].x);
-        glUniform1fv(uniformLocation(prog, "linearFromByte"), 256, linearFromByte().data());
+        glUniform3fv(eb::kLocSamples, GLsizei(samples.size()), &samples[0].x);
+        glUniform1fv(eb::kLocLinearFromByte, 256, linearFromByte().data());
     }
 
-    // Step 2: inputs and output on the units the shader declares. A nearest-filter sampler
-    // object keeps the view array complete whatever its own filter state (texelFetch does
-    // not filter, but an incomplete texture would read as zero).
-    GLint textureUnit = 0, imageUnit = 0;
-    glGetUniformiv(prog, uniformLocation(prog, "views"), &textureUnit);
-    glGetUniformiv(prog, uniformLocation(prog, "eia"), &imageUnit);
-    glBindTextureUnit(GLuint(textureUnit), views.colorArray());
-    glBindSampler(GLuint(textureUnit), nearest_);
-    glBindImageTexture(GLuint(imageUnit), eia_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    // Step 2: inputs and output on the shader's units. A nearest-filter sampler object
+    // keeps the view array complete whatever its own filter state (texelFetch does not
+    // filter, but an incomplete texture would read as zero).
+    glBindTextureUnit(eb::kUnitViews, views.colorArray());
+    glBindSampler(eb::kUnitViews, nearest_);
+    glBindImageTexture(eb::kImageEia, eia_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
 
     // Step 3: one invocation per panel pixel.
-    GLint localSize[3] = {1, 1, 1};
-    glGetProgramiv(prog, GL_COMPUTE_WORK_GROUP_SIZE, localSize);
     timer.begin(stage::kEia);
-    glDispatchCompute((profile_.panelWidth + GLuint(localSize[0]) - 1) / GLuint(localSize[0]),
-                      (profile_.panelHeight + GLuint(localSize[1]) - 1) / GLuint(localSize[1]), 1);
+    glDispatchCompute((profile_.panelWidth + eb::kLocalSize - 1) / eb::kLocalSize,
+                      (profile_.panelHeight + eb::kLocalSize - 1) / eb::kLocalSize, 1);
     timer.end();
     // Later consumers: texture reads (display, quilt), readback, blits.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 
-    glBindSampler(GLuint(textureUnit), 0);
-    glBindImageTexture(GLuint(imageUnit), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindSampler(eb::kUnitViews, 0);
+    glBindImageTexture(eb::kImageEia, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glUseProgram(0);
 }
 

@@ -549,6 +549,36 @@ std::string constantName(const std::string& define, const std::string& prefix)
 
 std::string quoted(const std::string& s) { return "\"" + s + "\""; }
 
+// The struct and block tables of the layout test (gpu_layout.h).
+void emitTables(std::ostringstream& o, const std::vector<Aggregate>& aggregates,
+                std::map<std::string, size_t>& structIndex)
+{
+    o << "inline constexpr lfd::gl::GpuStruct kStructs[] = {\n";
+    size_t index = 0;
+    for (const Aggregate& a : aggregates) {
+        if (a.block && a.members.size() == 1 && a.members[0].unsized)
+            continue;
+        o << "    {" << quoted(a.glslName) << ", " << quoted(a.cppName) << ", sizeof(" << a.cppName << "), k"
+          << a.cppName << "Members},\n";
+        structIndex[a.glslName] = index++;
+    }
+    o << "};\n";
+    o << "inline constexpr lfd::gl::GpuBlock kBlocks[] = {\n";
+    for (const Aggregate& a : aggregates) {
+        if (!a.block)
+            continue;
+        const bool arrayBlock = a.members.size() == 1 && a.members[0].unsized;
+        o << "    {" << quoted(a.glslName) << ", lfd::gl::GpuInterface::" << (a.uniform ? "Uniform" : "Storage")
+          << ", " << quoted(a.packing) << ", " << a.binding << ", ";
+        if (arrayBlock)
+            o << "nullptr, " << quoted(a.members[0].name) << ", &kStructs[" << structIndex.at(a.members[0].type) << "]";
+        else
+            o << "&kStructs[" << structIndex.at(a.glslName) << "], nullptr, nullptr";
+        o << ", " << (a.instance.empty() ? "nullptr" : quoted(a.instance)) << "},\n";
+    }
+    o << "};\n";
+}
+
 std::string generate(const std::string& input, const std::string& ns, const std::string& prefix,
                      const std::vector<Define>& defines, std::vector<Aggregate>& aggregates)
 {
@@ -631,30 +661,14 @@ std::string generate(const std::string& input, const std::string& ns, const std:
     // Tables: structs (free structs and fixed blocks), blocks, defines.
     o << "\n// ---- Tables for the layout test\n\n";
     std::map<std::string, size_t> structIndex;
-    o << "inline constexpr lfd::gl::GpuStruct kStructs[] = {\n";
-    size_t index = 0;
-    for (const Aggregate& a : aggregates) {
-        if (a.block && a.members.size() == 1 && a.members[0].unsized)
-            continue;
-        o << "    {" << quoted(a.glslName) << ", " << quoted(a.cppName) << ", sizeof(" << a.cppName << "), k"
-          << a.cppName << "Members},\n";
-        structIndex[a.glslName] = index++;
+    // A file of #defines only (a program's units and locations): empty tables, as spans,
+    // since C++ has no zero-size arrays.
+    if (aggregates.empty()) {
+        o << "inline constexpr std::span<const lfd::gl::GpuStruct> kStructs{};\n";
+        o << "inline constexpr std::span<const lfd::gl::GpuBlock> kBlocks{};\n";
+    } else {
+        emitTables(o, aggregates, structIndex);
     }
-    o << "};\n";
-    o << "inline constexpr lfd::gl::GpuBlock kBlocks[] = {\n";
-    for (const Aggregate& a : aggregates) {
-        if (!a.block)
-            continue;
-        const bool arrayBlock = a.members.size() == 1 && a.members[0].unsized;
-        o << "    {" << quoted(a.glslName) << ", lfd::gl::GpuInterface::" << (a.uniform ? "Uniform" : "Storage")
-          << ", " << quoted(a.packing) << ", " << a.binding << ", ";
-        if (arrayBlock)
-            o << "nullptr, " << quoted(a.members[0].name) << ", &kStructs[" << structIndex.at(a.members[0].type) << "]";
-        else
-            o << "&kStructs[" << structIndex.at(a.glslName) << "], nullptr, nullptr";
-        o << ", " << (a.instance.empty() ? "nullptr" : quoted(a.instance)) << "},\n";
-    }
-    o << "};\n";
     o << "inline constexpr lfd::gl::GpuDefine kDefines[] = {\n";
     for (const Define& d : defines)
         if (d.integer)

@@ -98,7 +98,7 @@ TEST(Eia, ParseReconstruction) {
 }
 
 TEST(Eia, ShaderModeConstantsMatchTheEnum) {
-    EXPECT_EQ(gl::shaderDefineValue("eia_construct.comp", "EIA_MODE_NONE"),
+    EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_MODE_NONE"),
               long(Reconstruction::None));
 }
 

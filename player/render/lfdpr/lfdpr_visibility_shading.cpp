@@ -60,8 +60,11 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, uint32_
     // A shader error thrown below leaves nothing behind: the programs built so far are
     // owned by their handles.
     std::vector<std::string> splatDefines;
+    // The test hook lives here, not in the shader: every n-th point also stores its record
+    // unconditionally, as a lost race would, so tests drive the repair through both paths.
     if (!int64 && testIndexRaces > 0)
-        splatDefines.push_back("LFDPR_TEST_INDEX_RACES " + std::to_string(testIndexRaces));
+        splatDefines.push_back("LFDPR_AFTER_INDEX_WRITE(index, pixel, record) if ((index) % " +
+                               std::to_string(testIndexRaces) + "u == 0u) viewIndex[pixel] = (record)");
     splatProgram_ = build("lfdpr_visibility_splat.comp", splatDefines);
     if (!int64)
         indexProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1"});
