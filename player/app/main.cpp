@@ -434,6 +434,109 @@ struct PackInput {
     bool present() const { return scene || mapped; }
 };
 
+using StageMap = std::map<std::string, lfd::player::StageTimes>;
+
+// One headless run's state, shared by its steps.
+struct HeadlessRun {
+    const PlayOptions& options;
+    lfd::player::PlayerSession& session;
+    lfd::gl::GlErrorWatch& glErrors;
+    lfd::player::FrameQuality quality;
+    Sequence sequence;
+    PlayOptions single;      // the options of the one-frame outputs (no quilt for a sequence)
+    bool wantOutputs = false;
+    uint32_t outputFrame = 0;
+    double firstFrameMs = -1.0, residentMs = -1.0; // loading figures (README "Streaming")
+    lfd::player::FrameOutputs outputs;
+    lfd::DisplayProfile outputProfile;
+    std::vector<fs::path> written; // removed again if the run fails
+};
+
+// Streaming: one untimed frame as soon as the geometry and the coarsest mips are in (time
+// to first frame), then everything is made resident before the timed frames, so no
+// benchmark times a half-resident scene.
+void measureLoading(HeadlessRun& run, const PackInput& input, const std::string& packName)
+{
+    if (!input.present())
+        return;
+    if (lfd::player::TextureStreamer* streamer = run.session.streamer()) {
+        streamer->untilRenderable();
+        run.session.renderUntimedFrame(0.0);
+        run.firstFrameMs = msSince(input.start);
+        streamer->untilResident();
+    }
+    glFinish();
+    run.residentMs = msSince(input.start);
+    run.glErrors.check("the streamed upload of " + packName);
+}
+
+void readOutputs(HeadlessRun& run, uint32_t frame)
+{
+    run.session.completeLastFrame();
+    run.outputs = run.session.readOutputs(frame);
+    run.outputProfile = run.session.profile();
+}
+
+// Renders F frames, reads the outputs back right after frame K (K after the timed frames:
+// rendered once more, not counted in the stats); a sequence keeps every quilt. Returns the
+// timed frames' stages.
+StageMap renderFrames(HeadlessRun& run, lfd::player::GpuTimer& timer, const PackInput& input)
+{
+    const PlayOptions& options = run.options;
+    for (uint32_t k = 0; k < options.frames; ++k) {
+        run.session.renderFrame(double(k) / options.fps, run.quality);
+        run.glErrors.check("frame " + std::to_string(k));
+        if (k == 0 && run.firstFrameMs < 0.0 && input.present()) {
+            glFinish();
+            run.firstFrameMs = msSince(input.start);
+        }
+        if (k == run.outputFrame && run.wantOutputs)
+            readOutputs(run, k);
+        if (run.sequence.active) {
+            Sequence& sequence = run.sequence;
+            run.session.completeLastFrame();
+            sequence.profile = run.session.profile();
+            sequence.frames.push_back(writeQuiltFrame(sequence.base, sequence.profile, run.session.readOutputs(k), k));
+            if (sequence.tempFolder.empty())
+                run.written.push_back(sequence.frames.back());
+        }
+    }
+    timer.finish();
+    run.session.completeLastFrame(); // the renderer's stats of the last frame
+    StageMap stages = timer.stages();
+    if (run.outputFrame >= options.frames && run.wantOutputs) {
+        run.session.renderFrame(double(run.outputFrame) / options.fps, run.quality);
+        readOutputs(run, run.outputFrame);
+        timer.finish();
+    }
+    return stages;
+}
+
+void printSummary(const HeadlessRun& run, const StageMap& stages)
+{
+    std::string summary = stageSummary(stages);
+    if (!run.session.quiltInput())
+        for (const auto& [name, value] : run.session.renderer().extraStats())
+            if (name == "points")
+                summary += ", " + std::to_string(uint64_t(value)) + " points";
+    const lfd::DisplayProfile& shown = run.session.profile();
+    std::printf("lfd-play: %s%s, %u views of %ux%u, %u frame(s), mean GPU time: %s\n",
+                run.session.rendererName().c_str(), run.quality == lfd::player::FrameQuality::Preview ? " (preview)" : "",
+                shown.viewCount, shown.viewWidth, shown.viewHeight, run.options.frames, summary.c_str());
+}
+
+lfd::player::PlayerSession openSession(const PlayOptions& options, const lfd::DisplayProfile& profile,
+                                       PackInput& input, std::vector<fs::path> quilts)
+{
+    using lfd::player::PlayerSession;
+    const std::string packName = options.pack.filename().string();
+    if (input.mapped)
+        return PlayerSession(options, profile, input.mapped, packName);
+    if (input.scene)
+        return PlayerSession(options, profile, std::move(*input.scene), packName);
+    return PlayerSession(options, profile, std::move(quilts));
+}
+
 int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, PackInput input,
                 std::vector<fs::path> quilts)
 {
@@ -448,105 +551,42 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
     const uint64_t triangles = cpuScene ? cpuScene->triangleCount() : 0;
     const uint64_t drawnTriangles = cpuScene ? cpuScene->drawnTriangleCount() : 0;
     const std::string packName = options.pack.filename().string();
-    PlayerSession session = input.mapped ? PlayerSession(options, profile, input.mapped, packName)
-                            : input.scene ? PlayerSession(options, profile, std::move(*input.scene), packName)
-                                          : PlayerSession(options, profile, std::move(quilts));
+    PlayerSession session = openSession(options, profile, input, std::move(quilts));
     glErrors.check("the upload of " + (input.present() ? packName : std::string("the quilts")));
-    // Loading figures (README "Streaming"). Streaming: one untimed frame as soon as the
-    // geometry and the coarsest mips are in (time to first frame), then everything is
-    // made resident before the timed frames, so no benchmark times a half-resident scene.
-    double firstFrameMs = -1.0, residentMs = -1.0;
-    if (input.present()) {
-        if (TextureStreamer* streamer = session.streamer()) {
-            streamer->untilRenderable();
-            session.renderUntimedFrame(0.0);
-            firstFrameMs = msSince(input.start);
-            streamer->untilResident();
-            glFinish();
-            residentMs = msSince(input.start);
-        } else {
-            glFinish();
-            residentMs = msSince(input.start);
-        }
-        glErrors.check("the streamed upload of " + packName);
-    }
-    const FrameQuality quality =
-        options.preview == PreviewMode::Always ? FrameQuality::Preview : FrameQuality::Full;
-    GpuTimer& timer = quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
 
-    // Render F frames; read the outputs back right after frame K; a sequence keeps every quilt.
-    Sequence sequence = planSequence(options);
-    const uint32_t outputFrame = options.outputFrame.value_or(options.frames - 1);
-    PlayOptions single = options;
-    if (sequence.active)
-        single.quiltOut.clear();
-    const bool wantOutputs = !single.eiaOut.empty() || !single.quiltOut.empty() || !single.viewsOut.empty() ||
-                             !single.viewerOut.empty();
-    std::vector<fs::path> written;
-    FrameOutputs outputs;
-    lfd::DisplayProfile outputProfile = profile;
+    HeadlessRun run{options, session, glErrors,
+                    options.preview == PreviewMode::Always ? FrameQuality::Preview : FrameQuality::Full,
+                    planSequence(options), options};
+    measureLoading(run, input, packName);
+    GpuTimer& timer = run.quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
+    run.outputFrame = options.outputFrame.value_or(options.frames - 1);
+    if (run.sequence.active)
+        run.single.quiltOut.clear();
+    run.wantOutputs = !run.single.eiaOut.empty() || !run.single.quiltOut.empty() || !run.single.viewsOut.empty() ||
+                      !run.single.viewerOut.empty();
+    run.outputProfile = profile;
     try {
-        for (uint32_t k = 0; k < options.frames; ++k) {
-            session.renderFrame(double(k) / options.fps, quality);
-            glErrors.check("frame " + std::to_string(k));
-            if (k == 0 && firstFrameMs < 0.0 && input.present()) {
-                glFinish();
-                firstFrameMs = msSince(input.start);
-            }
-            if (k == outputFrame && wantOutputs) {
-                session.completeLastFrame();
-                outputs = session.readOutputs(k);
-                outputProfile = session.profile();
-            }
-            if (sequence.active) {
-                session.completeLastFrame();
-                sequence.profile = session.profile();
-                sequence.frames.push_back(writeQuiltFrame(sequence.base, sequence.profile, session.readOutputs(k), k));
-                if (sequence.tempFolder.empty())
-                    written.push_back(sequence.frames.back());
-            }
-        }
-        timer.finish();
-        session.completeLastFrame(); // the renderer's stats of the last frame
-        const auto stages = timer.stages(); // timing frames only
-        if (outputFrame >= options.frames && wantOutputs) {
-            // Frame K after the timed frames: rendered once more, not counted in the stats.
-            session.renderFrame(double(outputFrame) / options.fps, quality);
-            session.completeLastFrame();
-            outputs = session.readOutputs(outputFrame);
-            outputProfile = session.profile();
-            timer.finish();
-        }
-
+        const StageMap stages = renderFrames(run, timer, input);
         // Outputs: each file atomic; if one fails, remove the others written by this run.
-        if (wantOutputs)
-            writeFrameOutputs(single, outputProfile, outputs, written);
+        if (run.wantOutputs)
+            writeFrameOutputs(run.single, run.outputProfile, run.outputs, run.written);
         if (!options.statsOut.empty()) {
             RunInfo info = runInfo(session, options, *context, triangles, drawnTriangles);
             info.streaming = input.mapped != nullptr;
-            info.timeToFirstFrameMs = firstFrameMs;
-            info.timeToResidentMs = residentMs;
+            info.timeToFirstFrameMs = run.firstFrameMs;
+            info.timeToResidentMs = run.residentMs;
             writeStats(options.statsOut, info, stages);
-            written.push_back(options.statsOut);
+            run.written.push_back(options.statsOut);
         }
-
-        std::string summary = stageSummary(stages);
-        if (!session.quiltInput())
-            for (const auto& [name, value] : session.renderer().extraStats())
-                if (name == "points")
-                    summary += ", " + std::to_string(uint64_t(value)) + " points";
-        const lfd::DisplayProfile& shown = session.profile();
-        std::printf("lfd-play: %s%s, %u views of %ux%u, %u frame(s), mean GPU time: %s\n",
-                    session.rendererName().c_str(), quality == FrameQuality::Preview ? " (preview)" : "",
-                    shown.viewCount, shown.viewWidth, shown.viewHeight, options.frames, summary.c_str());
+        printSummary(run, stages);
     } catch (...) {
-        for (const auto& path : written)
+        for (const auto& path : run.written)
             fs::remove(path);
-        if (!sequence.tempFolder.empty())
-            fs::remove_all(sequence.tempFolder);
+        if (!run.sequence.tempFolder.empty())
+            fs::remove_all(run.sequence.tempFolder);
         throw;
     }
-    return encodeVideo(options, sequence);
+    return encodeVideo(options, run.sequence);
 }
 
 } // namespace

@@ -215,12 +215,11 @@ std::vector<uint8_t> EiaBuilder::read() const {
     return image;
 }
 
-std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
-                                 const std::vector<std::vector<uint8_t>>& views,
-                                 uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode,
-                                 uint64_t seed) {
-    const uint32_t W = profile.panelWidth, H = profile.panelHeight;
-    if (W == 0 || H == 0 || profile.viewCount == 0)
+namespace {
+
+void requireEiaInputs(const DisplayProfile& profile, const std::vector<std::vector<uint8_t>>& views,
+                      uint32_t viewWidth, uint32_t viewHeight) {
+    if (profile.panelWidth == 0 || profile.panelHeight == 0 || profile.viewCount == 0)
         throw std::invalid_argument("EIA: display profile '" + profile.name +
                                     "' has an empty panel or no views");
     if (views.size() != profile.viewCount)
@@ -235,55 +234,64 @@ std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
                                         std::to_string(viewBytes) + " (" +
                                         std::to_string(viewWidth) + "x" +
                                         std::to_string(viewHeight) + " RGBA8)");
+}
 
+// The filtered modes, step for step as eia_construct.comp's filtered().
+void filteredEiaCpu(const DisplayProfile& profile, const std::vector<std::vector<uint8_t>>& views,
+                    uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode, uint64_t seed,
+                    std::vector<uint8_t>& eia) {
+    const uint32_t W = profile.panelWidth, H = profile.panelHeight;
     const bool bgr = profile.subpixelOrder == SubpixelOrder::BGR;
-    std::vector<uint8_t> eia(size_t(W) * H * 4);
-    if (mode != Reconstruction::None) {
-        // The filtered modes, step for step as eia_construct.comp's filtered().
-        const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed);
-        const std::array<float, 256>& linear = linearFromByte();
-        const uint32_t N = profile.viewCount;
-        auto viewAt = [&](double c) { return uint32_t(std::clamp(std::floor(c), 0.0, double(N - 1))); };
-        auto texel = [&](int x, int y, uint32_t view, uint32_t channel) {
-            x = std::clamp(x, 0, int(viewWidth) - 1);
-            y = std::clamp(y, 0, int(viewHeight) - 1);
-            return linear[views[view][(size_t(y) * viewWidth + size_t(x)) * 4 + channel]];
-        };
-        for (uint32_t l = 0; l < H; ++l) {
-            const int imageRow = int(viewRowUnder(l, H, viewHeight));
-            const float py = float((2u * l + 1u) * viewHeight) / float(2u * H);
-            for (uint32_t x = 0; x < W; ++x) {
-                uint8_t* out = &eia[(size_t(l) * W + x) * 4];
-                for (uint32_t i = 0; i < 3; ++i) {
-                    const uint32_t k = 3 * x + i;
-                    const uint32_t channel = bgr ? 2 - i : i;
-                    const double c = subpixelPhase(profile, k, l) * double(N);
-                    const float px = float((2u * k + 1u) * viewWidth) / float(6u * W);
-                    const int column = int(viewColumnUnder(k, W, viewWidth));
-                    float sum = 0.0f;
-                    for (const glm::vec3& o : samples) {
-                        const uint32_t view = mode == Reconstruction::Spatial ? viewAt(c) : viewAt(c + double(o.z));
-                        if (mode == Reconstruction::View) {
-                            sum += texel(column, imageRow, view, channel);
-                            continue;
-                        }
-                        // Bilinear in linear light at (px, py) + (o.x, o.y).
-                        const float fx = (px + o.x) - 0.5f, fy = (py + o.y) - 0.5f;
-                        const float bx = std::floor(fx), by = std::floor(fy);
-                        const float ax = fx - bx, ay = fy - by;
-                        const int x0 = int(bx), y0 = int(by);
-                        const float top = mixf(texel(x0, y0, view, channel), texel(x0 + 1, y0, view, channel), ax);
-                        const float bottom =
-                            mixf(texel(x0, y0 + 1, view, channel), texel(x0 + 1, y0 + 1, view, channel), ax);
-                        sum += mixf(top, bottom, ay);
+    const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed);
+    const std::array<float, 256>& linear = linearFromByte();
+    const uint32_t N = profile.viewCount;
+    auto viewAt = [&](double c) { return uint32_t(std::clamp(std::floor(c), 0.0, double(N - 1))); };
+    auto texel = [&](int x, int y, uint32_t view, uint32_t channel) {
+        x = std::clamp(x, 0, int(viewWidth) - 1);
+        y = std::clamp(y, 0, int(viewHeight) - 1);
+        return linear[views[view][(size_t(y) * viewWidth + size_t(x)) * 4 + channel]];
+    };
+    for (uint32_t l = 0; l < H; ++l) {
+        const int imageRow = int(viewRowUnder(l, H, viewHeight));
+        const float py = float((2u * l + 1u) * viewHeight) / float(2u * H);
+        for (uint32_t x = 0; x < W; ++x) {
+            uint8_t* out = &eia[(size_t(l) * W + x) * 4];
+            for (uint32_t i = 0; i < 3; ++i) {
+                const uint32_t k = 3 * x + i;
+                const uint32_t channel = bgr ? 2 - i : i;
+                const double c = subpixelPhase(profile, k, l) * double(N);
+                const float px = float((2u * k + 1u) * viewWidth) / float(6u * W);
+                const int column = int(viewColumnUnder(k, W, viewWidth));
+                float sum = 0.0f;
+                for (const glm::vec3& o : samples) {
+                    const uint32_t view = mode == Reconstruction::Spatial ? viewAt(c) : viewAt(c + double(o.z));
+                    if (mode == Reconstruction::View) {
+                        sum += texel(column, imageRow, view, channel);
+                        continue;
                     }
-                    out[channel] = encodeSrgb(sum / float(ReconstructionFilter::kSamples));
+                    // Bilinear in linear light at (px, py) + (o.x, o.y).
+                    const float fx = (px + o.x) - 0.5f, fy = (py + o.y) - 0.5f;
+                    const float bx = std::floor(fx), by = std::floor(fy);
+                    const float ax = fx - bx, ay = fy - by;
+                    const int x0 = int(bx), y0 = int(by);
+                    const float top = mixf(texel(x0, y0, view, channel), texel(x0 + 1, y0, view, channel), ax);
+                    const float bottom =
+                        mixf(texel(x0, y0 + 1, view, channel), texel(x0 + 1, y0 + 1, view, channel), ax);
+                    sum += mixf(top, bottom, ay);
                 }
-                out[3] = 255;
+                out[channel] = encodeSrgb(sum / float(ReconstructionFilter::kSamples));
             }
+            out[3] = 255;
         }
-        return eia;
     }
+}
+
+// Subpixel k = 3x + i shows channel i (RGB) or 2 - i (BGR) of view floor(phase * N) at its
+// own screen position.
+void nearestEiaCpu(const DisplayProfile& profile, const std::vector<std::vector<uint8_t>>& views,
+                   uint32_t viewWidth, uint32_t viewHeight, std::vector<uint8_t>& eia) {
+    const uint32_t W = profile.panelWidth, H = profile.panelHeight;
+    const bool bgr = profile.subpixelOrder == SubpixelOrder::BGR;
     for (uint32_t l = 0; l < H; ++l) {
         const uint32_t viewRow = viewRowUnder(l, H, viewHeight);
         for (uint32_t x = 0; x < W; ++x) {
@@ -300,6 +308,20 @@ std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
             out[3] = 255;
         }
     }
+}
+
+} // namespace
+
+std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
+                                 const std::vector<std::vector<uint8_t>>& views,
+                                 uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode,
+                                 uint64_t seed) {
+    requireEiaInputs(profile, views, viewWidth, viewHeight);
+    std::vector<uint8_t> eia(size_t(profile.panelWidth) * profile.panelHeight * 4);
+    if (mode != Reconstruction::None)
+        filteredEiaCpu(profile, views, viewWidth, viewHeight, mode, seed, eia);
+    else
+        nearestEiaCpu(profile, views, viewWidth, viewHeight, eia);
     return eia;
 }
 

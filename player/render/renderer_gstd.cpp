@@ -142,7 +142,6 @@ public:
                 draw_.drawScene(scene, 1);
                 glBindSamplers(bindings::kUnitBaseColor, 5, nullptr);
                 draw_.endFrame();
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
                 // Step 2: Gaussian reconstruction at view resolution, averaged over sub-views.
                 glUseProgram(reconstruct_);
