@@ -11,6 +11,7 @@
 #include "quilt.h"
 #include "quilt_input.h"
 #include "quilt_video.h"
+#include "tool_flags.h"
 #include "window_app.h"
 
 #include "lfd/display_profile.h"
@@ -46,13 +47,14 @@ const char* kFooter =
 
 // Flag values parsed after CLI11 (sizes, pairs, names).
 struct RawFlags {
-    std::string pack, viewSize, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility",
-        lfdprWork = "auto";
+    std::string pack, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility";
+    std::string aa = "none", ss = "1"; // --aa, --ss: typed into PlayOptions once
+    lfd::player::SharedFlags shared;   // the flags lfd-bench takes too
     uint32_t views = 0, frame = 0;
     bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false, noTurntable = false;
     bool noPixelCulling = false;
     bool listMonitors = false;
-    CLI::Option *viewsOpt = nullptr, *sizeOpt = nullptr, *framesOpt = nullptr, *frameOpt = nullptr;
+    CLI::Option *viewsOpt = nullptr, *framesOpt = nullptr, *frameOpt = nullptr;
     CLI::Option *monitorOpt = nullptr, *windowSizeOpt = nullptr;
 };
 
@@ -68,8 +70,7 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
 {
     app.add_option("PACK", f.pack, "packed scene from lfd-bake (or --quilt-in instead)");
     app.add_flag("--headless", o.headless, "render without a window (EGL)");
-    app.add_flag("--gl-debug", o.glDebug,
-                 "debug GL context: print every KHR_debug message; a GL error fails the frame naming the call");
+    addSharedFlags(app, f.shared);
     app.add_option("--renderer", o.renderer, "renderer: " + rendererList())->capture_default_str();
     app.add_flag("--no-lfd-sampling", f.noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
     app.add_flag("--no-texture-splatting", f.noTextureSplatting, "lfdpr: no density reduction by texture");
@@ -83,31 +84,18 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
         ->check(CLI::Range(1u, 8u))
         ->capture_default_str();
     app.add_option("--atomics", f.atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
-    app.add_option("--lfdpr-work", f.lfdprWork,
-                   "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
-                   "short invocations) | cpu (long invocations); the views are the same")
-        ->capture_default_str();
     app.add_option("--lfdpr-pipeline", f.pipeline,
                    "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
         ->capture_default_str();
-    app.add_option("--gstd-factor", o.rendererOptions.gstd.factor,
-                   "gstd: sub-views render at this many times the view resolution (slow gold standard)")
-        ->capture_default_str();
-    app.add_option("--display", o.displayProfile,
-                   "display profile JSON or Looking Glass visual.json (default: the paper's prototype)");
     f.viewsOpt = app.add_option("--views", f.views, "number of views (overrides the profile)");
-    f.sizeOpt = app.add_option("--view-size", f.viewSize, "view size WxH (overrides the profile)");
     f.framesOpt = app.add_option("--frames", o.frames,
                                  "frames to render (timing; windowed: exit after them; with --quilt: a sequence)")
                       ->capture_default_str();
     f.frameOpt = app.add_option("--frame", f.frame, "frame whose outputs are written (default: the last)");
-    app.add_option("--fps", o.fps, "frame k is at time k / fps")->capture_default_str();
-    app.add_option("--turntable-period", o.turntablePeriod, "seconds per turntable revolution (0 = still)")
-        ->capture_default_str();
-    app.add_option("--aa,--reconstruction", o.reconstruction,
+    app.add_option("--aa,--reconstruction", f.aa,
                    "EIA reconstruction: none|spatial|view|view-spatial (Gaussian, 8 seeded samples)")
         ->capture_default_str();
-    app.add_option("--ss", o.supersampling,
+    app.add_option("--ss", f.ss,
                    "supersampling: 1 | 2s (views at twice the resolution) | 2v (twice the views, random "
                    "angles in each view interval), averaged down")
         ->capture_default_str();
@@ -184,20 +172,22 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
             throw UsageError("--views: expected 1..2048, got " + std::to_string(f.views));
         o.views = f.views;
     }
-    if (*f.sizeOpt) {
-        const auto [w, h] = parseSize("--view-size", f.viewSize);
-        o.viewWidth = w;
-        o.viewHeight = h;
-    }
+    lfd::player::SharedFlags shared = f.shared;
+    lfd::player::finishSharedFlags(shared);
+    if (shared.viewSize)
+        std::tie(o.viewWidth, o.viewHeight) = *shared.viewSize;
+    o.displayProfile = shared.displayProfile;
+    o.fps = shared.fps;
+    o.turntablePeriod = shared.turntablePeriod;
+    o.glDebug = shared.glDebug;
+    lfd::player::applySharedFlags(shared, o.rendererOptions);
+    o.reconstruction = lfd::player::parseReconstructionFlag("--aa", f.aa);
+    o.supersampling = lfd::player::parseSupersamplingFlag("--ss", f.ss);
     if (o.frames == 0)
         throw UsageError("--frames: must be at least 1");
     o.framesGiven = bool(*f.framesOpt);
     if (*f.frameOpt)
         o.outputFrame = f.frame;
-    if (!std::isfinite(o.fps) || o.fps <= 0.0)
-        throw UsageError("--fps: must be a positive number");
-    if (!std::isfinite(o.turntablePeriod) || o.turntablePeriod < 0.0)
-        throw UsageError("--turntable-period: must be >= 0");
     lfd::player::LfdprOptions& lfdpr = o.rendererOptions.lfdpr;
     lfdpr.lfdBiasedSampling = !f.noLfdSampling;
     lfdpr.textureSplatting = !f.noTextureSplatting;
@@ -206,27 +196,11 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
     try {
         lfdpr.atomics = lfd::player::parseLfdprAtomics(f.atomics);
         lfdpr.pipeline = lfd::player::parseLfdprPipeline(f.pipeline);
-        lfdpr.workShape = lfd::player::parseLfdprWorkShape(f.lfdprWork);
     } catch (const std::exception& e) {
         throw UsageError(e.what());
     }
-    try {
-        lfd::player::validateGstdOptions(o.rendererOptions.gstd);
-    } catch (const std::exception& e) {
-        throw UsageError(std::string("--gstd-factor: ") + e.what());
-    }
     if (!lfd::player::isKnownRenderer(o.renderer))
         throw UsageError("--renderer: unknown renderer '" + o.renderer + "' (known: " + rendererList() + ")");
-    try {
-        lfd::player::parseReconstruction(o.reconstruction);
-    } catch (const std::exception& e) {
-        throw UsageError(std::string("--aa: ") + e.what());
-    }
-    try {
-        lfd::player::parseSupersampling(o.supersampling);
-    } catch (const std::exception& e) {
-        throw UsageError(std::string("--ss: ") + e.what());
-    }
 }
 
 void validateWindowFlags(PlayOptions& o, const RawFlags& f)
@@ -302,7 +276,7 @@ void validateInputFlags(PlayOptions& o, const RawFlags& f)
         throw UsageError(o.pack.empty() ? "PACK: give a pack file or --quilt-in (see --help)"
                                         : "--quilt-in: give either a pack or --quilt-in, not both");
     if (!o.quiltIn.empty()) {
-        if (*f.viewsOpt || *f.sizeOpt)
+        if (*f.viewsOpt || *f.shared.viewSizeOpt)
             throw UsageError(std::string(*f.viewsOpt ? "--views" : "--view-size") +
                              ": the quilt's layout gives the views with --quilt-in");
         if (!std::isfinite(o.slideSeconds) || o.slideSeconds <= 0.0)
@@ -401,8 +375,8 @@ lfd::player::RunInfo runInfo(lfd::player::PlayerSession& session, const PlayOpti
     info.gpu = c.caps().renderer + " / " + c.caps().version;
     info.profile = profile.name;
     info.pack = session.packName();
-    info.reconstruction = o.reconstruction;
-    info.supersampling = o.supersampling;
+    info.reconstruction = lfd::player::reconstructionName(o.reconstruction);
+    info.supersampling = lfd::player::supersamplingName(o.supersampling);
     info.views = profile.viewCount;
     info.viewWidth = profile.viewWidth;
     info.viewHeight = profile.viewHeight;

@@ -61,8 +61,8 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
 
 void PlayerSession::applyRenderOptions(const PlayOptions& options)
 {
-    reconstruction_ = parseReconstruction(options.reconstruction);
-    pipeline_->setSupersampling(parseSupersampling(options.supersampling));
+    reconstruction_ = options.reconstruction;
+    pipeline_->setSupersampling(options.supersampling);
     pipeline_->setViewControls(options.controls);
     pipeline_->setPreviewShape(options.previewShape);
     switchRenderer(options.renderer);
@@ -76,7 +76,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
       quilts_(std::make_unique<QuiltSlideshow>(profile, std::move(quilts), options.quiltViews, options.slideSeconds)),
       rendererName_("quilt-in")
 {
-    reconstruction_ = parseReconstruction(options.reconstruction);
+    reconstruction_ = options.reconstruction;
 }
 
 const DisplayProfile& PlayerSession::profile() const

@@ -401,7 +401,7 @@ LoopState initialLoopState(PlayerSession& session, const PlayOptions& options)
     // The cycle ends with the current one.
     state.rendererIndex = state.renderers.empty() ? 0 : state.renderers.size() - 1;
     state.reconstructions = reconstructionNames();
-    state.reconstructionIndex = size_t(parseReconstruction(session.options().reconstruction));
+    state.reconstructionIndex = size_t(session.options().reconstruction);
     state.shown = options.show == "quilt"    ? Shown::Quilt
                   : options.show == "view"   ? Shown::SingleView
                   : options.show == "viewer" ? Shown::Viewer
