@@ -46,16 +46,17 @@ std::vector<std::string> parseRendererList(const std::string& text)
 std::atomic<bool> gStop{false};
 extern "C" void onSignal(int) { gStop = true; }
 
-// "none,view" -> names checked with `parse` (tool_flags.h's typed --aa / --ss parsers).
+// "none,view" -> the modes, typed once by `parse` (tool_flags.h's --aa / --ss parsers).
 template <class Parse>
-std::vector<std::string> parseModeList(const std::string& flag, const std::string& text, Parse parse)
+auto parseModeList(const std::string& flag, const std::string& text, Parse parse)
 {
     const std::vector<std::string> names = lfd::cli::splitList(text);
     if (names.empty())
         throw UsageError(flag + ": empty list");
+    std::vector<decltype(parse(flag, text))> modes;
     for (const std::string& n : names)
-        parse(flag, n);
-    return names;
+        modes.push_back(parse(flag, n));
+    return modes;
 }
 
 // Raw flag values as CLI11 fills them (options bound straight into BenchOptions are not here).

@@ -131,8 +131,12 @@ nlohmann::json matrixJson(const std::vector<BenchReport>& reports)
     nlohmann::json runs = nlohmann::json::array();
     for (const BenchReport& rep : reports) {
         nlohmann::json run = benchJson(rep);
-        run["aa"] = rep.options.aa;
-        run["ss"] = rep.options.ss;
+        run["aa"] = nlohmann::json::array();
+        for (const Reconstruction a : rep.options.aa)
+            run["aa"].push_back(reconstructionName(a));
+        run["ss"] = nlohmann::json::array();
+        for (const Supersampling x : rep.options.ss)
+            run["ss"].push_back(supersamplingName(x));
         run["interrupted"] = rep.interrupted;
         const std::vector<bool> front = paretoFront(rep);
         for (size_t i = 0; i < rep.results.size(); ++i) {

@@ -51,8 +51,10 @@ Quality compare(const metrics::Image& a, const metrics::Image& reference)
 }
 
 struct Config {
-    std::string renderer, aa, ss;
-    std::string name() const { return configName(renderer, aa, ss); }
+    std::string renderer;
+    Reconstruction aa = Reconstruction::None;
+    Supersampling ss = Supersampling::None;
+    std::string name() const { return configName(renderer, reconstructionName(aa), supersamplingName(ss)); }
 };
 
 // Configuration lists and ordering.
@@ -128,20 +130,16 @@ ConfigPlan planConfigs(const BenchOptions& options)
 {
     if (options.aa.empty() || options.ss.empty())
         throw std::invalid_argument("aa, ss: the lists must not be empty");
-    for (const std::string& a : options.aa)
-        parseReconstruction(a);
-    for (const std::string& x : options.ss)
-        parseSupersampling(x);
     ConfigPlan plan;
     for (const std::string& r : options.renderers)
-        for (const std::string& x : options.ss)
-            for (const std::string& a : options.aa)
+        for (const Supersampling x : options.ss)
+            for (const Reconstruction a : options.aa)
                 plan.configs.push_back({r, a, x});
     const std::string referenceName = options.reference;
     plan.referenceTimed = std::any_of(plan.configs.begin(), plan.configs.end(), [&](const Config& c) {
         return c.name() == referenceName;
     });
-    plan.order.push_back({options.reference, "none", "1"});
+    plan.order.push_back({options.reference, Reconstruction::None, Supersampling::None});
     for (const Config& c : plan.configs)
         if (c.name() != referenceName)
             plan.order.push_back(c);
@@ -239,11 +237,11 @@ bool timeFrames(BenchRun& run, Renderer& renderer, Reconstruction aa, RendererRe
 bool timeRoundRobin(BenchRun& run)
 {
     const BenchOptions& options = run.options;
-    std::vector<std::string> modes; // supersampling modes in run order (one target size at a time)
+    std::vector<Supersampling> modes; // supersampling modes in run order (one target size at a time)
     for (const Config& c : run.plan.order)
         if (std::find(modes.begin(), modes.end(), c.ss) == modes.end())
             modes.push_back(c.ss);
-    for (const std::string& mode : modes) {
+    for (const Supersampling mode : modes) {
         struct Turn {
             Config config;
             Reconstruction aa;
@@ -253,13 +251,13 @@ bool timeRoundRobin(BenchRun& run)
         std::vector<Turn> turns;
         for (const Config& c : run.plan.order)
             if (c.ss == mode && (c.name() != options.reference || run.plan.referenceTimed))
-                turns.push_back({c, parseReconstruction(c.aa), createRenderer(c.renderer, options.rendererOptions),
+                turns.push_back({c, c.aa, createRenderer(c.renderer, options.rendererOptions),
                                  std::make_unique<GpuTimer>()});
         if (turns.empty())
             continue;
-        run.pipeline.setSupersampling(parseSupersampling(mode));
+        run.pipeline.setSupersampling(mode);
         if (!options.quiet)
-            progressLine(run) << "--ss " << mode << ": " << turns.size()
+            progressLine(run) << "--ss " << supersamplingName(mode) << ": " << turns.size()
                               << " configuration(s) taking turns: warm-up " << options.warmup << " frame(s), then "
                               << options.frames << " timed frame(s) each" << std::endl;
         GpuTimer warmTimer;
@@ -272,7 +270,7 @@ bool timeRoundRobin(BenchRun& run)
                 run.pipeline.renderFrame(*t.renderer, double(k) / options.fps, *t.timer, t.aa);
         if (stopRequested(options))
             return false;
-        gl::checkGlError("timing --ss " + mode);
+        gl::checkGlError("timing --ss " + supersamplingName(mode));
         for (Turn& t : turns) {
             t.timer->finish();
             BenchRun::Timed& timed = run.roundRobin[t.config.name()];
@@ -402,14 +400,14 @@ bool runConfig(BenchRun& run, size_t i)
     const BenchOptions& options = run.options;
     const Config& config = run.plan.order[i];
     const std::string name = config.name();
-    const Reconstruction aa = parseReconstruction(config.aa);
-    run.pipeline.setSupersampling(parseSupersampling(config.ss));
+    const Reconstruction aa = config.aa;
+    run.pipeline.setSupersampling(config.ss);
     const Clock::time_point start = Clock::now();
     RendererResult result;
     result.name = name;
     result.renderer = config.renderer;
-    result.aa = config.aa;
-    result.ss = config.ss;
+    result.aa = reconstructionName(config.aa);
+    result.ss = supersamplingName(config.ss);
     result.timed = name != options.reference || run.plan.referenceTimed;
     const Say say = progressFor(run, i, name);
     std::unique_ptr<Renderer> renderer;
