@@ -4,12 +4,8 @@
 #include "frame_stages.h"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
-#include <system_error>
 #include <sys/resource.h>
-#include <unistd.h>
 
 namespace lfd::player {
 
