@@ -46,20 +46,20 @@ MaterialGpu lfdMaterial(uint material)
     return m;
 }
 
-LfdprDrawGpu lfdDraw(uint draw)
+LfdprVisibilityDrawGpu lfdDraw(uint draw)
 {
     uvec4 d = texelFetch(t_draws, int(draw));
-    return LfdprDrawGpu(d.x, d.y, d.z, d.w);
+    return LfdprVisibilityDrawGpu(d.x, d.y, d.z, d.w);
 }
 
-LfdprRecordGpu lfdRecord(uint record)
+LfdprVisibilityRecordGpu lfdRecord(uint record)
 {
     uvec4 r = texelFetch(t_records, int(record));
-    return LfdprRecordGpu(r.x, r.y, uintBitsToFloat(r.zw));
+    return LfdprVisibilityRecordGpu(r.x, r.y, uintBitsToFloat(r.zw));
 }
 
 // Vertex indices of triangle `primitive` of draw `draw`.
-uvec3 lfdTriangleVertices(LfdprDrawGpu draw, uint primitive)
+uvec3 lfdTriangleVertices(LfdprVisibilityDrawGpu draw, uint primitive)
 {
     return texelFetch(t_sceneTriangles, int(draw.firstTriangle + primitive)).xyz;
 }
@@ -86,16 +86,16 @@ layout(std430, binding = LFDPR_SSBO_POSITIONS) readonly buffer ScenePositions {
     float scenePositions[];
 };
 layout(std430, binding = LFDPR_SSBO_DRAWS) readonly buffer Draws {
-    LfdprDrawGpu draws[];
+    LfdprVisibilityDrawGpu draws[];
 };
 
-LfdprDrawGpu lfdDraw(uint draw)
+LfdprVisibilityDrawGpu lfdDraw(uint draw)
 {
     return draws[draw];
 }
 
 // Vertex indices of triangle `primitive` of draw `draw`.
-uvec3 lfdTriangleVertices(LfdprDrawGpu draw, uint primitive)
+uvec3 lfdTriangleVertices(LfdprVisibilityDrawGpu draw, uint primitive)
 {
     uint first = 3u * (draw.firstTriangle + primitive);
     return uvec3(sceneIndices[first], sceneIndices[first + 1u], sceneIndices[first + 2u]);
@@ -109,7 +109,7 @@ vec3 lfdObjectPosition(uint vertex)
 
 // Scene-space positions of a triangle (the node transform applied as the raster vertex
 // shaders apply it).
-void lfdTrianglePositions(LfdprDrawGpu draw, uvec3 vertices, out vec3 p0, out vec3 p1, out vec3 p2)
+void lfdTrianglePositions(LfdprVisibilityDrawGpu draw, uvec3 vertices, out vec3 p0, out vec3 p1, out vec3 p2)
 {
     mat4 sceneFromObject = lfdNode(draw.node).sceneFromObject;
     p0 = (sceneFromObject * vec4(lfdObjectPosition(vertices.x), 1.0)).xyz;

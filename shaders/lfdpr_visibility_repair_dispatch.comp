@@ -2,7 +2,7 @@
 // LFDPR visibility pipeline, 32-bit path: the repair's dispatches, made on the GPU from the
 // first shading pass's count of raced pixels (shadeCounters.repairCount), so the frame
 // never reads the count back to decide (README "Frames that never wait"). Each of the
-// three indirect dispatches of LfdprRepairGpu gets zero workgroups when it has nothing to
+// three indirect dispatches of LfdprVisibilityRepairGpu gets zero workgroups when it has nothing to
 // do: without races the repair costs three empty dispatches.
 //   indexPass: lfdpr_visibility_splat.comp LFDPR_INDEX_PASS over every point (as the splat);
 //   listRepair: lfdpr_visibility_shade_list.comp LFDPR_REPAIR_LIST, one invocation per (repair-list
@@ -19,11 +19,11 @@ layout(local_size_x = 1) in;
 layout(location = LFDPR_LOC_SHADE_GROUPS) uniform uint u_groups;
 
 layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) readonly buffer VisCounters {
-    LfdprVisCountersGpu vis;
+    LfdprVisibilityCountersGpu vis;
 };
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) readonly LFDPR_SHADE_WORK_BUFFER;
 layout(std430, binding = LFDPR_SSBO_REPAIR) writeonly buffer Repair {
-    LfdprRepairGpu repair;
+    LfdprVisibilityRepairGpu repair;
 };
 
 // Workgroups of 64 invocations covering `invocations`, LFDPR_SHADE_DISPATCH_WIDTH per row

@@ -67,14 +67,14 @@ vec3 objectNormal(uint vertex)
 // A visible point's triangle in one view: its draw, vertices, scene positions and window
 // positions (projected as lfdpr_visibility_splat.comp projects them).
 struct ViewTriangle {
-    LfdprDrawGpu draw;
+    LfdprVisibilityDrawGpu draw;
     uvec3 vi;
     vec3 p0, p1, p2;
     vec2 s0, s1, s2;
     vec3 invW;
 };
 
-ViewTriangle viewTriangle(LfdprRecordGpu r, LfdprDrawGpu draw, uint view)
+ViewTriangle viewTriangle(LfdprVisibilityRecordGpu r, LfdprVisibilityDrawGpu draw, uint view)
 {
     ViewTriangle t;
     t.draw = draw;
@@ -94,7 +94,7 @@ ViewTriangle viewTriangle(LfdprRecordGpu r, LfdprDrawGpu draw, uint view)
 vec4 shadePixel(ViewTriangle t, uint view, LfdViewTriangle vt, vec3 edges)
 {
     // Step 1: the triangle in this view.
-    LfdprDrawGpu draw = t.draw;
+    LfdprVisibilityDrawGpu draw = t.draw;
     uvec3 vi = t.vi;
     vec3 p0 = t.p0, p1 = t.p1, p2 = t.p2;
     vec3 invW = t.invW;
@@ -150,19 +150,19 @@ vec4 shadePixel(ViewTriangle t, uint view, LfdViewTriangle vt, vec3 edges)
 // Whether view pixel `pixel`'s winning point belongs to the group being shaded (the chunk
 // was listed for the group's points, which may be hidden here; decided from the draw,
 // before any vertex is fetched); a shared group shades one material.
-bool groupWinner(uint pixel, out LfdprRecordGpu record)
+bool groupWinner(uint pixel, out LfdprVisibilityRecordGpu record)
 {
     uint winner = lfdPixelWinner(pixel);
     if (winner == 0xFFFFFFFFu)
         return false; // background (the views were cleared to it)
     record = lfdRecord(winner);
-    LfdprDrawGpu draw = lfdDraw(record.draw);
+    LfdprVisibilityDrawGpu draw = lfdDraw(record.draw);
     return draw.group == u_group && (u_group == 0u || draw.material == u_shadeMaterial);
 }
 
 // Shades view pixel `pixel` (xy of view `view`), whose winner's record is `record`
 // (steps 3-4 of main).
-void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint chunkTile)
+void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprVisibilityRecordGpu record, uint chunkTile)
 {
     ViewTriangle t = viewTriangle(record, lfdDraw(record.draw), view);
     vec2 centre = vec2(xy) + 0.5;
@@ -212,7 +212,7 @@ void main()
     uvec2 mine = uvec2(0u);
     for (uvec2 bits = mask; bits != uvec2(0u);) {
         uint v = lfdTakeChunkView(bits);
-        LfdprRecordGpu record;
+        LfdprVisibilityRecordGpu record;
         if (groupWinner(lfdViewWord(c.firstView + v, xy.x, xy.y, size.x, u_lfd.counts.x), record))
             mine[v >> 5] |= 1u << (v & 31u);
     }

@@ -26,7 +26,7 @@ layout(local_size_x = 64) in;
 layout(location = LFDPR_LOC_SHADE_GROUPS) uniform uint u_groups;
 #ifdef LFDPR_REPAIR_LIST
 layout(std430, binding = LFDPR_SSBO_REPAIR) readonly buffer Repair {
-    LfdprRepairGpu repair; // indexPass.w: entries in the repair list (lfdpr_visibility_repair_dispatch.comp)
+    LfdprVisibilityRepairGpu repair; // indexPass.w: entries in the repair list (lfdpr_visibility_repair_dispatch.comp)
 };
 #endif
 

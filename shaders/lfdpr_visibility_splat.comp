@@ -56,10 +56,10 @@ layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
     LfdprVisibilityPointGpu points[];
 };
 layout(std430, binding = LFDPR_SSBO_RECORDS) readonly buffer Records {
-    LfdprRecordGpu records[];
+    LfdprVisibilityRecordGpu records[];
 };
 layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) readonly buffer VisCounters {
-    LfdprVisCountersGpu vis;
+    LfdprVisibilityCountersGpu vis;
 };
 #ifndef LFDPR_INDEX_PASS
 layout(std430, binding = LFDPR_SSBO_CHUNK_MASKS) buffer ChunkMasks {
@@ -123,7 +123,7 @@ void projectCell(vec3 centre, LfdSamplingFrame f, vec2 viewSize, out LfdLinePoin
 
 // The point's triangle (v*) and cell (c*) projected once onto the camera line; false when
 // any of them lies behind a camera plane.
-bool projectSplat(LfdprVisibilityPointGpu point, LfdprRecordGpu r, LfdprDrawGpu draw, vec2 viewSize,
+bool projectSplat(LfdprVisibilityPointGpu point, LfdprVisibilityRecordGpu r, LfdprVisibilityDrawGpu draw, vec2 viewSize,
                   out LfdLinePoint v0, out LfdLinePoint v1, out LfdLinePoint v2, out LfdLinePoint ca,
                   out LfdLinePoint cb, out LfdLinePoint cc, out LfdLinePoint cd)
 {
@@ -213,8 +213,8 @@ void main()
     // Step 1: the point, its triangle and the cell's corners in the triangle plane.
     LfdprVisibilityPointGpu point = points[index];
     uint record = point.record; // what the view words hold
-    LfdprRecordGpu r = records[record];
-    LfdprDrawGpu draw = draws[r.draw];
+    LfdprVisibilityRecordGpu r = records[record];
+    LfdprVisibilityDrawGpu draw = draws[r.draw];
     bool doubleSided = (materials[draw.material].flags & LFD_MATERIAL_DOUBLE_SIDED) != 0u;
     bool mirrored = determinant(mat3(nodes[draw.node].sceneFromObject)) < 0.0;
 

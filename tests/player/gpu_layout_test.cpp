@@ -257,9 +257,9 @@ TEST_F(GpuLayoutTest, EveryStructAndBlockMatchesTheDriverMemberByMember)
     };
     for (const char* name : {"MaterialGpu", "NodeGpu", "ViewGpu", "TriangleStatsGpu", "FrameGpu"})
         EXPECT_TRUE(has(player::bindings::kLayoutFile, name)) << name;
-    for (const char* name : {"LfdprPaperPointGpu", "LfdprPaperTriangleGpu", "LfdprPaperSamplingGpu", "LfdprCountersGpu",
-                             "LfdprFrameGpu", "LfdprVisibilityPointGpu", "LfdprRecordGpu", "LfdprDrawGpu",
-                             "LfdprVisCountersGpu", "LfdprCameraLineGpu"})
+    for (const char* name : {"LfdprPaperPointGpu", "LfdprPaperTriangleGpu", "LfdprPaperSamplingGpu", "LfdprPaperCountersGpu",
+                             "LfdprFrameGpu", "LfdprVisibilityPointGpu", "LfdprVisibilityRecordGpu", "LfdprVisibilityDrawGpu",
+                             "LfdprVisibilityCountersGpu", "LfdprCameraLineGpu"})
         EXPECT_TRUE(has(lb::kLayoutFile, name)) << name;
 }
 
@@ -341,7 +341,7 @@ std::vector<BlockUse> paperBlocks()
                                  {"TriangleRecordsOut", k.ssboTriangles, k.triangleRecordBytes},
                                  {"TriangleSampling", k.ssboSampling, k.triangleSamplingBytes},
                                  {"TriangleSamplingOut", k.ssboSampling, k.triangleSamplingBytes},
-                                 {"LfdprCounters", k.ssboCounters, k.counterBytes},
+                                 {"LfdprPaperCounters", k.ssboCounters, k.counterBytes},
                                  {"ViewInverse", k.ssboViewInverse, k.viewInverseBytes},
                                  {"LfdprFrameBlock", k.uboFrame, sizeof(lb::LfdprFrameGpu)},
                                  // std140 blocks stay active wherever they are declared.
@@ -363,9 +363,9 @@ std::vector<BlockUse> visibilityBlocks()
                                  {"SceneUvs", k.ssboUvs, sizeof(glm::vec2)},
                                  {"Points", k.ssboPoints, k.compactPointBytes},
                                  {"Records", k.ssboRecords, k.recordBytes},
-                                 {"Draws", k.ssboDraws, sizeof(lb::LfdprDrawGpu)},
+                                 {"Draws", k.ssboDraws, sizeof(lb::LfdprVisibilityDrawGpu)},
                                  {"Large", k.ssboLarge, k.largeEntryBytes},
-                                 {"Workgroups", k.ssboWorkgroups, sizeof(lb::LfdprWorkgroupGpu)},
+                                 {"Workgroups", k.ssboWorkgroups, sizeof(lb::LfdprVisibilityWorkgroupGpu)},
                                  {"Repair", k.ssboRepair, k.repairBytes},
                                  {"LargeDispatch", k.ssboLargeDispatch, k.largeDispatchBytes},
                                  {"VisCounters", k.ssboVisCounters, k.visCounterBytes},

@@ -27,7 +27,7 @@ struct LfdprConstants {
     uint32_t pointBytes = sizeof(lfdpr_bindings::LfdprPaperPointGpu);
     uint32_t triangleRecordBytes = sizeof(lfdpr_bindings::LfdprPaperTriangleGpu);
     uint32_t triangleSamplingBytes = sizeof(lfdpr_bindings::LfdprPaperSamplingGpu);
-    uint32_t counterBytes = sizeof(lfdpr_bindings::LfdprCountersGpu);
+    uint32_t counterBytes = sizeof(lfdpr_bindings::LfdprPaperCountersGpu);
     uint32_t viewInverseBytes = sizeof(glm::mat4); // ViewInverse: mat4 sceneFromClip[]
     // Visibility pipeline.
     unsigned ssboRecords = lfdpr_bindings::kSsboRecords, ssboIndices = lfdpr_bindings::kSsboIndices,
@@ -53,11 +53,11 @@ struct LfdprConstants {
     uint32_t shadeTile = lfdpr_bindings::kShadeTile, maxShadeGroups = lfdpr_bindings::kMaxShadeGroups,
              shadeDispatchWidth = lfdpr_bindings::kShadeDispatchWidth, viewChunk = lfdpr_bindings::kViewChunk,
              shadeEntryWords = lfdpr_bindings::kShadeEntryWords;
-    uint32_t shadeCounterBytes = sizeof(lfdpr_bindings::LfdprShadeCountersGpu);
-    uint32_t recordBytes = sizeof(lfdpr_bindings::LfdprRecordGpu);
+    uint32_t shadeCounterBytes = sizeof(lfdpr_bindings::LfdprVisibilityShadeCountersGpu);
+    uint32_t recordBytes = sizeof(lfdpr_bindings::LfdprVisibilityRecordGpu);
     uint32_t compactPointBytes = sizeof(lfdpr_bindings::LfdprVisibilityPointGpu);
-    uint32_t visCounterBytes = sizeof(lfdpr_bindings::LfdprVisCountersGpu);
-    uint32_t repairBytes = sizeof(lfdpr_bindings::LfdprRepairGpu);
+    uint32_t visCounterBytes = sizeof(lfdpr_bindings::LfdprVisibilityCountersGpu);
+    uint32_t repairBytes = sizeof(lfdpr_bindings::LfdprVisibilityRepairGpu);
     uint32_t largeDispatchBytes = sizeof(glm::uvec4); // LargeDispatch: uvec4 per dispatch class
     uint32_t largeEntryBytes = sizeof(glm::uvec2);    // Large: (draw, primitive) per queued triangle
     uint32_t optionLfdSampling = lfdpr_bindings::kOptionLfdSampling,

@@ -57,7 +57,7 @@ void LfdprPaperViewGeneration::splat(unsigned counters) const
 
     // Step 3: splat, one pass (64-bit) or depth then colour (32-bit), with the arguments
     // lfdpr_paper_dispatch.comp wrote into the counter block.
-    const GLintptr dispatchOffset = offsetof(LfdprCountersGpu, dispatchX);
+    const GLintptr dispatchOffset = offsetof(LfdprPaperCountersGpu, dispatchX);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters);
     glUseProgram(splatProgram_);
     const int passes = int64_ ? 1 : 2;

@@ -16,7 +16,7 @@ namespace lfd::player {
 
 namespace {
 
-using lfdpr_bindings::LfdprWorkgroupGpu;
+using lfdpr_bindings::LfdprVisibilityWorkgroupGpu;
 
 bool alphaTested(const GpuScene& scene, int32_t material)
 {
@@ -62,7 +62,7 @@ void LfdprVisibilityPointGeneration::prepare(const GpuScene& scene)
     // Step 1: the workgroup table, draws without an alpha test first (one class), then each
     // alpha-tested draw (a class each); a class's large triangles queue in a segment of
     // its triangle count.
-    std::vector<LfdprWorkgroupGpu> table;
+    std::vector<LfdprVisibilityWorkgroupGpu> table;
     classes_.clear();
     uint32_t queued = 0;
     auto addDraw = [&](uint32_t d) {
@@ -86,10 +86,10 @@ void LfdprVisibilityPointGeneration::prepare(const GpuScene& scene)
         }
 
     // Step 2: the buffers.
-    workgroups_ = gl::createBuffer(table.size() * sizeof(LfdprWorkgroupGpu), 0, table.empty() ? nullptr : table.data());
+    workgroups_ = gl::createBuffer(table.size() * sizeof(LfdprVisibilityWorkgroupGpu), 0, table.empty() ? nullptr : table.data());
     large_ = gl::createBuffer(size_t(std::max<uint32_t>(queued, 1)) * k.largeEntryBytes);
     largeDispatch_ = gl::createBuffer(classes_.size() * k.largeDispatchBytes);
-    bytes_ = table.size() * sizeof(LfdprWorkgroupGpu) + size_t(queued) * k.largeEntryBytes +
+    bytes_ = table.size() * sizeof(LfdprVisibilityWorkgroupGpu) + size_t(queued) * k.largeEntryBytes +
              classes_.size() * k.largeDispatchBytes;
 }
 

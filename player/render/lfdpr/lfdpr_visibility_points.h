@@ -1,6 +1,6 @@
 // LFDPR point generation in compute (the visibility pipeline; shaders/lfdpr_visibility_points.comp):
 // one invocation per triangle, then one workgroup per large triangle. Triangles are cut
-// into workgroups of LFDPR_GROUP_SIZE triangles of one draw (LfdprWorkgroupGpu), so one
+// into workgroups of LFDPR_GROUP_SIZE triangles of one draw (LfdprVisibilityWorkgroupGpu), so one
 // dispatch samples every draw without an alpha test, and each alpha-tested draw (whose
 // textures must be bound) gets one of its own: the dispatch count does not grow with the
 // scene's draws. Large triangles are queued per such dispatch class and sampled by one

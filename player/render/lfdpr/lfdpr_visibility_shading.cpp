@@ -20,8 +20,8 @@ namespace lfd::player {
 
 namespace {
 
-using lfdpr_bindings::LfdprRepairGpu;
-using lfdpr_bindings::LfdprVisCountersGpu;
+using lfdpr_bindings::LfdprVisibilityRepairGpu;
+using lfdpr_bindings::LfdprVisibilityCountersGpu;
 
 std::vector<std::string> atomicsDefines(bool int64)
 {
@@ -32,7 +32,7 @@ uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 
 constexpr uint32_t kStreamsAll = kStreamPosition | kStreamNormal | kStreamTangent | kStreamUv;
 
-// LFDPR_SHADE_WORK_BUFFER: LfdprShadeCountersGpu (repairCount, repairBase, repairCapacity),
+// LFDPR_SHADE_WORK_BUFFER: LfdprVisibilityShadeCountersGpu (repairCount, repairBase, repairCapacity),
 // then the dispatches.
 constexpr GLintptr kDispatchOffset = 16;
 
@@ -134,7 +134,7 @@ size_t LfdprVisibilityShading::shadeWorkBytes() const {
     return shadeWorkBytes_ + chunkMaskBytes_;
 }
 
-size_t LfdprVisibilityShading::repairCountOffset() { return offsetof(LfdprRepairGpu, indexPass) + 12; }
+size_t LfdprVisibilityShading::repairCountOffset() { return offsetof(LfdprVisibilityRepairGpu, indexPass) + 12; }
 
 void LfdprVisibilityShading::beginFrame(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
                                         ViewTargets& targets)
@@ -160,7 +160,7 @@ void LfdprVisibilityShading::clearShadeDispatches() const
     const GLuint empty[4] = {0u, 1u, 0u, 0u};
     glClearNamedBufferSubData(shadeWork_, GL_RGBA32UI, kDispatchOffset, GLsizeiptr(groupCount_) * 16,
                               GL_RGBA_INTEGER, GL_UNSIGNED_INT, empty);
-    const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprShadeCountersGpu
+    const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprVisibilityShadeCountersGpu
     glNamedBufferSubData(shadeWork_, 0, sizeof(counters), counters);
 }
 
@@ -172,7 +172,7 @@ void LfdprVisibilityShading::splat(unsigned counters)
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewWinner, index_);
     // The 32-bit path's index pass runs only to repair, in shade().
-    splatPass(splatProgram_, counters, offsetof(LfdprVisCountersGpu, splatGroupsX));
+    splatPass(splatProgram_, counters, offsetof(LfdprVisibilityCountersGpu, splatGroupsX));
 }
 
 void LfdprVisibilityShading::splatPass(unsigned program, unsigned arguments, size_t offset) const
@@ -241,9 +241,9 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
         clearShadeDispatches();
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, repair_);
         glUseProgram(listRepairProgram_);
-        glDispatchComputeIndirect(offsetof(LfdprRepairGpu, listRepair));
+        glDispatchComputeIndirect(offsetof(LfdprVisibilityRepairGpu, listRepair));
         glUseProgram(listProgram_);
-        glDispatchComputeIndirect(offsetof(LfdprRepairGpu, listAll));
+        glDispatchComputeIndirect(offsetof(LfdprVisibilityRepairGpu, listAll));
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
@@ -280,7 +280,7 @@ void LfdprVisibilityShading::repair(const GpuScene& scene)
     glProgramUniform1ui(repairDispatchProgram_, k.locShadeGroups, groupCount_);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    splatPass(indexProgram_, repair_, offsetof(LfdprRepairGpu, indexPass));
+    splatPass(indexProgram_, repair_, offsetof(LfdprVisibilityRepairGpu, indexPass));
     listAndShade(scene, 2);
 }
 

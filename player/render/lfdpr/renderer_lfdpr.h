@@ -2,7 +2,8 @@
 // behind the one LfdprRenderer interface, chosen by LfdprOptions::pipeline; both report
 // the stages "point_generation", "view_generation" and "resolve", and every class, file,
 // shader and GPU struct names the pipeline it belongs to (LfdprPaper* / lfdpr_paper_*,
-// LfdprVisibility* / lfdpr_visibility_*); the Lfdpr* rest is shared.
+// LfdprVisibility* / lfdpr_visibility_*); the other Lfdpr* names are shared (options,
+// frame block, math) or name a visibility-only mechanism (the camera line, shading chunks).
 //
 // Visibility (the default, beyond the paper; renderer_lfdpr_visibility.cpp):
 //   1. point generation in a compute pass (LfdprVisibilityPointGeneration,

@@ -114,7 +114,7 @@ public:
         capacities_.submitted(tag, pointCapacity_);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         readback_.begin(tag);
-        readback_.copy(counters_, 0, 0, sizeof(LfdprCountersGpu));
+        readback_.copy(counters_, 0, 0, sizeof(LfdprPaperCountersGpu));
         readback_.end();
         info_.pointCapacity = pointCapacity_;
         info_.triangleCapacity = uint32_t(recordCapacity_);
@@ -213,7 +213,7 @@ private:
     // capacity the next frames get (1.25 x the count).
     void applyCounts(uint64_t tag, const uint8_t* bytes)
     {
-        LfdprCountersGpu c;
+        LfdprPaperCountersGpu c;
         std::memcpy(&c, bytes, sizeof(c));
         const uint32_t capacity = capacities_.counted(tag, pointCapacity_);
         lastCountedTag_ = tag;
@@ -238,7 +238,7 @@ private:
     LfdprPaperPointGeneration pointGeneration_;
     LfdprPaperViewGeneration views_;
     gl::Buffer points_, counters_, frameUbo_, records_, sampling_, viewInverse_;
-    gl::GpuReadback readback_{sizeof(LfdprCountersGpu)};
+    gl::GpuReadback readback_{sizeof(LfdprPaperCountersGpu)};
     LfdprFrameCapacities capacities_;
     uint64_t frameSerial_ = 0, lastCountedTag_ = 0;
     uint32_t pointCapacity_ = 0, nextCapacity_ = 0, maxPointCapacity_ = 0;

@@ -43,11 +43,11 @@ namespace lfd::player {
 
 namespace {
 
-using lfdpr_bindings::LfdprDrawGpu; // generated from shaders/lfdpr_bindings.glsl, checked by the layout test
+using lfdpr_bindings::LfdprVisibilityDrawGpu; // generated from shaders/lfdpr_bindings.glsl, checked by the layout test
 
 // A frame's read-back slot: its counters, then (32-bit path) the pixels it repaired.
 struct CountsSlot {
-    LfdprVisCountersGpu counters;
+    LfdprVisibilityCountersGpu counters;
     uint32_t repairs;
 };
 constexpr size_t kRepairsOffset = offsetof(CountsSlot, repairs);
@@ -130,14 +130,14 @@ public:
         bindBuffers(scene);
         const GLuint zero = 0, one = 1;
         glClearNamedBufferData(counters_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        glClearNamedBufferSubData(counters_, GL_R32UI, offsetof(LfdprVisCountersGpu, splatGroupsZ), sizeof(GLuint),
+        glClearNamedBufferSubData(counters_, GL_R32UI, offsetof(LfdprVisibilityCountersGpu, splatGroupsZ), sizeof(GLuint),
                                   GL_RED_INTEGER, GL_UNSIGNED_INT, &one);
         pointGeneration_.clearQueues();
         shading_.beginFrame(scene, texturedMaterials_, targets);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         pointGeneration_.run(scene);
         readback_.begin(tag);
-        readback_.copy(counters_, 0, 0, sizeof(LfdprVisCountersGpu));
+        readback_.copy(counters_, 0, 0, sizeof(LfdprVisibilityCountersGpu));
         timer.end();
         if (frame.pointSampling) {
             uniforms_.upload(frame);
@@ -221,7 +221,7 @@ private:
         CountsSlot slot;
         std::memcpy(&slot, bytes, sizeof(slot));
         const uint32_t capacity = capacities_.counted(tag, pointCapacity_);
-        const LfdprVisCountersGpu& c = slot.counters;
+        const LfdprVisibilityCountersGpu& c = slot.counters;
         lastCountedTag_ = tag;
         info_.points = c.pointCount;
         info_.pointsStored = std::min(c.pointCount, capacity);
@@ -251,7 +251,7 @@ private:
         if (scene.serial() == sceneSerial_)
             return;
         sceneSerial_ = scene.serial();
-        std::vector<LfdprDrawGpu> draws;
+        std::vector<LfdprVisibilityDrawGpu> draws;
         drawFirstTriangle_.clear();
         texturedMaterials_.clear();
         uint64_t triangles = 0;
@@ -274,7 +274,7 @@ private:
             throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
         triangleCapacity_ = std::max<uint64_t>(triangles, 1);
         records_ = gl::createBuffer(triangleCapacity_ * k_.recordBytes);
-        draws_ = gl::createBuffer(draws.size() * sizeof(LfdprDrawGpu), 0, draws.empty() ? nullptr : draws.data());
+        draws_ = gl::createBuffer(draws.size() * sizeof(LfdprVisibilityDrawGpu), 0, draws.empty() ? nullptr : draws.data());
         pointGeneration_.prepare(scene);
     }
 
