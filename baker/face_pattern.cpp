@@ -185,6 +185,89 @@ double parametricArea(const LocalMesh& mesh, size_t a, size_t b, size_t c)
     return (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
 }
 
+// Smaller than this (twice a parametric area), a triangle counts as flipped over.
+constexpr double kMinRelaxArea = 1e-12;
+
+// One pass of diagonal flips: the diagonal of two triangles becomes the shorter one where
+// both stay properly wound, each triangle flipped at most once. Returns whether any was.
+bool flipPass(LocalMesh& mesh, std::vector<std::pair<uint64_t, size_t>>& edges)
+{
+    auto key = [](size_t a, size_t b) { return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b)); };
+    // Edges as (key, triangle), sorted: an interior edge is two equal keys in a row.
+    edges.clear();
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (size_t e = 0; e < 3; ++e)
+            edges.emplace_back(key(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3]), t);
+    std::sort(edges.begin(), edges.end());
+    std::vector<bool> touched(mesh.triangles.size(), false);
+    bool flipped = false;
+    for (size_t i = 0; i + 1 < edges.size(); ++i) {
+        if (edges[i].first != edges[i + 1].first)
+            continue;
+        const uint64_t edgeKey = edges[i].first;
+        const size_t t0 = edges[i].second, t1 = edges[i + 1].second;
+        ++i;
+        if (touched[t0] || touched[t1])
+            continue;
+        const size_t a = size_t(edgeKey >> 32), b = size_t(edgeKey & 0xffffffffu);
+        // t0 = (a, b, c) and t1 = (b, a, d) in winding order, whichever holds a -> b.
+        auto opposite = [&](size_t t) {
+            for (size_t e = 0; e < 3; ++e)
+                if (mesh.triangles[t][e] != a && mesh.triangles[t][e] != b)
+                    return e;
+            return size_t(0);
+        };
+        const std::array<size_t, 3>& tri0 = mesh.triangles[t0];
+        const size_t e0 = opposite(t0);
+        const bool forward = tri0[(e0 + 1) % 3] == a; // (c, a, b): t0 holds a -> b
+        const size_t from = forward ? a : b, to = forward ? b : a;
+        const size_t c = tri0[e0], d = mesh.triangles[t1][opposite(t1)];
+        if (distance(mesh.points[c], mesh.points[d]) >= distance(mesh.points[a], mesh.points[b]))
+            continue;
+        // New triangles (from, d, c) and (d, to, c): the quad from, d, to, c.
+        if (parametricArea(mesh, from, d, c) <= kMinRelaxArea || parametricArea(mesh, d, to, c) <= kMinRelaxArea)
+            continue;
+        mesh.triangles[t0] = {from, d, c};
+        mesh.triangles[t1] = {d, to, c};
+        touched[t0] = touched[t1] = true;
+        flipped = true;
+    }
+    return flipped;
+}
+
+// Moves every interior point to the centroid of its neighbours where none of its triangles
+// flips over.
+void smoothInterior(const FacePoint& pointAt, LocalMesh& mesh, size_t boundaryCount)
+{
+    std::vector<std::vector<size_t>> around(mesh.points.size());
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+        for (size_t v : mesh.triangles[t])
+            if (v >= boundaryCount)
+                around[v].push_back(t);
+    for (size_t v = boundaryCount; v < mesh.points.size(); ++v) {
+        glm::dvec3 sum(0.0);
+        size_t count = 0;
+        for (size_t t : around[v])
+            for (size_t u : mesh.triangles[t])
+                if (u != v) {
+                    sum += mesh.weights[u];
+                    ++count;
+                }
+        if (count == 0)
+            continue;
+        const glm::dvec3 previous = mesh.weights[v];
+        mesh.weights[v] = sum / double(count);
+        bool wound = true;
+        for (size_t t : around[v])
+            wound = wound && parametricArea(mesh, mesh.triangles[t][0], mesh.triangles[t][1],
+                                            mesh.triangles[t][2]) > kMinRelaxArea;
+        if (wound)
+            mesh.points[v] = pointAt(mesh.weights[v]);
+        else
+            mesh.weights[v] = previous;
+    }
+}
+
 // Shortens edges without adding points, so that fewer of them need bisecting: flips the
 // diagonal of two triangles to the shorter one where both stay properly wound (each flip
 // shortens the total edge length, so this ends), then moves every interior point to the
@@ -192,83 +275,14 @@ double parametricArea(const LocalMesh& mesh, size_t a, size_t b, size_t c)
 // only: the boundary, which neighbouring faces share, never moves.
 void relax(const FacePoint& pointAt, LocalMesh& mesh, size_t boundaryCount, int rounds)
 {
-    constexpr double kMinArea = 1e-12;
-    auto key = [](size_t a, size_t b) { return uint64_t(std::min(a, b)) << 32 | uint64_t(std::max(a, b)); };
     std::vector<std::pair<uint64_t, size_t>> edges;
     for (int round = 0; round < rounds; ++round) {
         // Flip passes until none applies, at most 8 per round (more changed no triangle
         // count on the samples; the rounds repeat them anyway).
-        for (int pass = 0; pass < 8; ++pass) {
-            // Edges as (key, triangle), sorted: an interior edge is two equal keys in a row.
-            edges.clear();
-            for (size_t t = 0; t < mesh.triangles.size(); ++t)
-                for (size_t e = 0; e < 3; ++e)
-                    edges.emplace_back(key(mesh.triangles[t][e], mesh.triangles[t][(e + 1) % 3]), t);
-            std::sort(edges.begin(), edges.end());
-            std::vector<bool> touched(mesh.triangles.size(), false);
-            bool flipped = false;
-            for (size_t i = 0; i + 1 < edges.size(); ++i) {
-                if (edges[i].first != edges[i + 1].first)
-                    continue;
-                const uint64_t edgeKey = edges[i].first;
-                const size_t t0 = edges[i].second, t1 = edges[i + 1].second;
-                ++i;
-                if (touched[t0] || touched[t1])
-                    continue;
-                const size_t a = size_t(edgeKey >> 32), b = size_t(edgeKey & 0xffffffffu);
-                // t0 = (a, b, c) and t1 = (b, a, d) in winding order, whichever holds a -> b.
-                auto opposite = [&](size_t t) {
-                    for (size_t e = 0; e < 3; ++e)
-                        if (mesh.triangles[t][e] != a && mesh.triangles[t][e] != b)
-                            return e;
-                    return size_t(0);
-                };
-                const std::array<size_t, 3>& tri0 = mesh.triangles[t0];
-                const size_t e0 = opposite(t0);
-                const bool forward = tri0[(e0 + 1) % 3] == a; // (c, a, b): t0 holds a -> b
-                const size_t from = forward ? a : b, to = forward ? b : a;
-                const size_t c = tri0[e0], d = mesh.triangles[t1][opposite(t1)];
-                if (distance(mesh.points[c], mesh.points[d]) >= distance(mesh.points[a], mesh.points[b]))
-                    continue;
-                // New triangles (from, d, c) and (d, to, c): the quad from, d, to, c.
-                if (parametricArea(mesh, from, d, c) <= kMinArea || parametricArea(mesh, d, to, c) <= kMinArea)
-                    continue;
-                mesh.triangles[t0] = {from, d, c};
-                mesh.triangles[t1] = {d, to, c};
-                touched[t0] = touched[t1] = true;
-                flipped = true;
-            }
-            if (!flipped)
+        for (int pass = 0; pass < 8; ++pass)
+            if (!flipPass(mesh, edges))
                 break;
-        }
-        // Smoothing.
-        std::vector<std::vector<size_t>> around(mesh.points.size());
-        for (size_t t = 0; t < mesh.triangles.size(); ++t)
-            for (size_t v : mesh.triangles[t])
-                if (v >= boundaryCount)
-                    around[v].push_back(t);
-        for (size_t v = boundaryCount; v < mesh.points.size(); ++v) {
-            glm::dvec3 sum(0.0);
-            size_t count = 0;
-            for (size_t t : around[v])
-                for (size_t u : mesh.triangles[t])
-                    if (u != v) {
-                        sum += mesh.weights[u];
-                        ++count;
-                    }
-            if (count == 0)
-                continue;
-            const glm::dvec3 previous = mesh.weights[v];
-            mesh.weights[v] = sum / double(count);
-            bool wound = true;
-            for (size_t t : around[v])
-                wound = wound && parametricArea(mesh, mesh.triangles[t][0], mesh.triangles[t][1],
-                                                mesh.triangles[t][2]) > kMinArea;
-            if (wound)
-                mesh.points[v] = pointAt(mesh.weights[v]);
-            else
-                mesh.weights[v] = previous;
-        }
+        smoothInterior(pointAt, mesh, boundaryCount);
     }
 }
 

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 namespace lfd::bake::gltf {
 namespace {
@@ -44,85 +45,101 @@ public:
     {
         GltfContainer out;
         out.binary = true;
-        // Step 1: the 12-byte header: magic, version 2, total length.
+        const std::optional<size_t> end = readHeader();
+        if (!end)
+            return out;
+        // Step 2: the chunks: JSON first, BIN (at most one) second, unknown ones skipped.
+        size_t offset = 12;
+        bool sawBin = false;
+        for (size_t index = 0; offset < *end; ++index)
+            if (!readChunk(index, *end, offset, sawBin, out))
+                return out;
+        if (out.json.empty() && !hasError())
+            error("GLB", "has no JSON chunk");
+        return out;
+    }
+
+    // Step 1: the 12-byte header: magic, version 2, total length. Returns where the GLB
+    // ends (its declared length), or nothing after an error.
+    std::optional<size_t> readHeader()
+    {
         if (bytes_.size() < 12) {
             error("GLB header", "the file ends after " + std::to_string(bytes_.size()) + " bytes, inside the 12-byte header");
-            return out;
+            return std::nullopt;
         }
         const uint32_t version = readU32(bytes_, 4), length = readU32(bytes_, 8);
         if (version != 2) {
             error("GLB header.version", std::to_string(version) + " is not 2" +
                                             (version == 1 ? " (GLB version 1 is glTF 1.0, which this baker does not read)" : ""));
-            return out;
+            return std::nullopt;
         }
         size_t end = bytes_.size();
         if (length < 12) {
             error("GLB header.length", std::to_string(length) + " is smaller than the header");
-            return out;
+            return std::nullopt;
         }
         if (length > bytes_.size()) {
             error("GLB header.length", std::to_string(length) + " exceeds the file's " + std::to_string(bytes_.size()) +
                                            " bytes (truncated file)");
-            return out;
+            return std::nullopt;
         }
         if (length < bytes_.size()) {
             warn("GLB header.length", std::to_string(bytes_.size() - length) +
                                           " bytes of extra data after the declared length: ignored");
             end = length;
         }
+        return end;
+    }
 
-        // Step 2: the chunks: JSON first, BIN (at most one) second, unknown ones skipped.
-        size_t offset = 12;
-        bool sawBin = false;
-        for (size_t index = 0; offset < end; ++index) {
-            const std::string where = "GLB chunk " + std::to_string(index);
-            if (end - offset < 8) {
-                error(where, "the file ends inside the chunk's 8-byte header");
-                return out;
-            }
-            const uint32_t chunkLength = readU32(bytes_, offset), type = readU32(bytes_, offset + 4);
-            const std::string named = where + (type == kChunkJson ? " (JSON)" : type == kChunkBin ? " (BIN)" : "");
-            if (chunkLength > end - offset - 8) {
-                error(named, "chunkLength " + std::to_string(chunkLength) + " runs past the end of the GLB (" +
-                                 std::to_string(end - offset - 8) + " bytes left)");
-                return out;
-            }
-            // Section 4.4.3.1: "The start and the end of each chunk MUST be aligned to a
-            // 4-byte boundary".
-            if (chunkLength % 4 != 0)
-                error(named, "chunkLength " + std::to_string(chunkLength) + " is not a multiple of 4");
-            const auto data = bytes_.begin() + std::ptrdiff_t(offset + 8);
-            if (index == 0 && type != kChunkJson) {
-                error(where, "the first chunk is of type " + hex(type) + ", not JSON");
-                return out;
-            }
-            if (type == kChunkJson) {
-                if (index != 0) {
-                    error(named, "a second JSON chunk");
-                } else if (chunkLength == 0) {
-                    error(named, "empty JSON chunk");
-                    return out;
-                } else {
-                    out.json.assign(data, data + std::ptrdiff_t(chunkLength));
-                }
-            } else if (type == kChunkBin) {
-                if (sawBin)
-                    error(named, "a second BIN chunk (a GLB has at most one)");
-                else if (index != 1)
-                    error(named, "the BIN chunk is not the second chunk");
-                else if (chunkLength == 0)
-                    error(named, "empty BIN chunk");
-                else
-                    out.bin.emplace(data, data + std::ptrdiff_t(chunkLength));
-                sawBin = true;
-            } else {
-                warn(where, "unknown chunk type " + hex(type) + ": ignored");
-            }
-            offset += 8 + size_t(chunkLength);
+    // Chunk `index` at `offset` into `out`, and `offset` past it; false after an error that
+    // ends the reading.
+    bool readChunk(size_t index, size_t end, size_t& offset, bool& sawBin, GltfContainer& out)
+    {
+        const std::string where = "GLB chunk " + std::to_string(index);
+        if (end - offset < 8) {
+            error(where, "the file ends inside the chunk's 8-byte header");
+            return false;
         }
-        if (out.json.empty() && !hasError())
-            error("GLB", "has no JSON chunk");
-        return out;
+        const uint32_t chunkLength = readU32(bytes_, offset), type = readU32(bytes_, offset + 4);
+        const std::string named = where + (type == kChunkJson ? " (JSON)" : type == kChunkBin ? " (BIN)" : "");
+        if (chunkLength > end - offset - 8) {
+            error(named, "chunkLength " + std::to_string(chunkLength) + " runs past the end of the GLB (" +
+                             std::to_string(end - offset - 8) + " bytes left)");
+            return false;
+        }
+        // Section 4.4.3.1: "The start and the end of each chunk MUST be aligned to a
+        // 4-byte boundary".
+        if (chunkLength % 4 != 0)
+            error(named, "chunkLength " + std::to_string(chunkLength) + " is not a multiple of 4");
+        const auto data = bytes_.begin() + std::ptrdiff_t(offset + 8);
+        if (index == 0 && type != kChunkJson) {
+            error(where, "the first chunk is of type " + hex(type) + ", not JSON");
+            return false;
+        }
+        if (type == kChunkJson) {
+            if (index != 0) {
+                error(named, "a second JSON chunk");
+            } else if (chunkLength == 0) {
+                error(named, "empty JSON chunk");
+                return false;
+            } else {
+                out.json.assign(data, data + std::ptrdiff_t(chunkLength));
+            }
+        } else if (type == kChunkBin) {
+            if (sawBin)
+                error(named, "a second BIN chunk (a GLB has at most one)");
+            else if (index != 1)
+                error(named, "the BIN chunk is not the second chunk");
+            else if (chunkLength == 0)
+                error(named, "empty BIN chunk");
+            else
+                out.bin.emplace(data, data + std::ptrdiff_t(chunkLength));
+            sawBin = true;
+        } else {
+            warn(where, "unknown chunk type " + hex(type) + ": ignored");
+        }
+        offset += 8 + size_t(chunkLength);
+        return true;
     }
 
 private:

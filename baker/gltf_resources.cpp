@@ -210,27 +210,12 @@ private:
         };
         const auto uriIt = b.find("uri");
         if (uriIt == b.end() || !uriIt->is_string() || uriIt->get_ref<const std::string&>().empty()) {
-            // Section 4.4.3.3: in a GLB, buffers[0] without uri is the BIN chunk.
-            if (container_.binary && i == 0) {
-                if (!container_.bin) {
-                    problem(path, "refers to the GLB's BIN chunk, but the file has none" + reader);
-                } else if (container_.bin->size() < *byteLength) {
-                    problem(at(path, "byteLength"), std::to_string(*byteLength) + " exceeds the BIN chunk's " +
-                                                          std::to_string(container_.bin->size()) + " bytes" + reader);
-                } else {
-                    if (container_.bin->size() - *byteLength > 3)
-                        report(Severity::Warning, at(path, "byteLength"),
-                               std::to_string(*byteLength) + " leaves " +
-                                   std::to_string(container_.bin->size() - *byteLength) +
-                                   " bytes of the BIN chunk unused (at most 3 bytes of padding expected)");
-                    return sized(*container_.bin);
-                }
-            } else {
-                // Section 3.6.1.1: without a uri "the buffer's data MUST be provided by
-                // other means" (an extension, an application): valid, but not bakeable where
-                // the importer needs the bytes (it says so then).
-                hasData = false;
-            }
+            // Section 3.6.1.1: without a uri "the buffer's data MUST be provided by other
+            // means" (an extension, an application): valid, but not bakeable where the
+            // importer needs the bytes (it says so then). In a GLB, buffers[0] is the BIN chunk.
+            if (container_.binary && i == 0)
+                return binChunk(path, *byteLength, s, reader, hasData);
+            hasData = false;
             return zeros();
         }
         const std::string& text = uriIt->get_ref<const std::string&>();
@@ -267,6 +252,29 @@ private:
                                                   std::to_string(data->size()) + " bytes of '" + file.string() + "'" +
                                                   reader);
         return sized(std::move(*data));
+    }
+
+    // Section 4.4.3.3: a GLB's buffers[0] without uri is its BIN chunk: byteLength bytes of
+    // it (zeros, and no data, where the chunk is missing or too short).
+    std::vector<uint8_t> binChunk(const std::string& path, size_t byteLength, Severity s, const std::string& reader,
+                                  bool& hasData)
+    {
+        if (!container_.bin || container_.bin->size() < byteLength) {
+            if (!container_.bin)
+                report(s, path, "refers to the GLB's BIN chunk, but the file has none" + reader);
+            else
+                report(s, at(path, "byteLength"), std::to_string(byteLength) + " exceeds the BIN chunk's " +
+                                                      std::to_string(container_.bin->size()) + " bytes" + reader);
+            hasData = false;
+            return std::vector<uint8_t>(byteLength, 0);
+        }
+        if (container_.bin->size() - byteLength > 3)
+            report(Severity::Warning, at(path, "byteLength"),
+                   std::to_string(byteLength) + " leaves " + std::to_string(container_.bin->size() - byteLength) +
+                       " bytes of the BIN chunk unused (at most 3 bytes of padding expected)");
+        std::vector<uint8_t> data = *container_.bin;
+        data.resize(byteLength, 0);
+        return data;
     }
 
     // The bytes of image i's data URI; remote URIs and malformed data URIs are reported

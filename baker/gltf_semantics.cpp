@@ -20,8 +20,6 @@ namespace {
 
 using json = nlohmann::json;
 using Severity = SchemaIssue::Severity;
-constexpr Severity kError = Severity::Error;
-constexpr Severity kWarn = Severity::Warning;
 
 std::string at(const std::string& path, const std::string& key) { return path + "." + key; }
 std::string at(const std::string& path, size_t i) { return path + "[" + std::to_string(i) + "]"; }

@@ -19,8 +19,6 @@ namespace {
 
 using json = nlohmann::json;
 using Severity = SchemaIssue::Severity;
-constexpr Severity kError = Severity::Error;
-constexpr Severity kWarn = Severity::Warning;
 
 // How a value looks in a message: its JSON kind, and short scalars verbatim.
 std::string describe(const json& v)

@@ -35,6 +35,10 @@ struct SchemaIssue {
     std::string text() const { return path + ": " + message; }
 };
 
+// The severities the validation stages report with, by short name.
+inline constexpr SchemaIssue::Severity kError = SchemaIssue::Severity::Error;
+inline constexpr SchemaIssue::Severity kWarn = SchemaIssue::Severity::Warning;
+
 // Every violation in `document` (the glTF JSON), in document order.
 std::vector<SchemaIssue> validateGltfSchema(const nlohmann::json& document);
 

@@ -755,29 +755,77 @@ struct SplitShared {
 // earlier group's error is always the lower item's.
 struct Stopped {};
 
+// A group's triangle count and the range of vertices its triangles use.
+struct GroupRange {
+    size_t triangles = 0;
+    uint32_t firstVertex = kInvalid, lastVertex = 0;
+};
+
+GroupRange groupRange(const Scene& scene, const Group& group)
+{
+    GroupRange r;
+    for (uint32_t p : group.primitives) {
+        const Primitive& prim = scene.primitives[p];
+        r.triangles += prim.indexCount / 3;
+        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; ++i) {
+            r.firstVertex = std::min(r.firstVertex, scene.indices[i]);
+            r.lastVertex = std::max(r.lastVertex, scene.indices[i]);
+        }
+    }
+    return r;
+}
+
+// Books the pieces one cut face emitted from out[before]: counts and edge figures, and the
+// scene-wide total. That total only grows: once it is over the limit the bake is refused
+// whichever group notices, so stop now rather than let every group run up its own worst
+// case in memory.
+template <typename Position>
+void bookCutFace(const Position& position, const std::vector<uint32_t>& out, size_t before, const Group& group,
+                 SplitShared& shared, GroupResult& result)
+{
+    ++result.trianglesSplit;
+    const size_t added = (out.size() - before) / 3 - 1;
+    result.trianglesAdded += added;
+    EdgeSummary cut;
+    cut.add(position, out.data() + before, out.size() - before);
+    result.pieceEdgeSum += cut.sum * group.scale;
+    result.pieceEdgeCount += cut.count;
+    if (shared.used.fetch_add(added) + added > shared.available)
+        throw BakeError(kTooManyTriangles);
+}
+
+// The tessellator's figures into the group's result, and the group's log lines.
+void finishGroup(MeshTessellator& tessellator, GroupVertices& vertices, const std::string& label, size_t trianglesIn,
+                 size_t trianglesOut, GroupResult& result, const Log& log)
+{
+    result.added = std::move(vertices.added);
+    result.unresolved = tessellator.unresolved();
+    result.surfaceBuilt = tessellator.surfaceBuilt();
+    result.fallbacks = tessellator.fallbacks();
+    if (const std::string refusal = tessellator.surfaceRefusal(); !refusal.empty()) {
+        result.surfaceRefused = true;
+        log.info("tessellation: " + label + ": OpenSubdiv refused the mesh (" + refusal +
+                 "); its new points are placed by barycentric weights of the triangles' corners");
+    }
+    log.info("tessellation: " + label + ": " + std::to_string(trianglesIn) + " -> " + std::to_string(trianglesOut) +
+             " triangles (" + std::to_string(result.trianglesSplit) + " split)");
+}
+
 // Tessellates the oversized triangles of one group, primitive by primitive.
 void splitGroup(const Scene& scene, const Group& group, size_t groupIndex, const std::string& label,
                 SplitShared& shared, ThreadBudget& threads, GroupResult& result, std::vector<PrimitivePieces>& pieces,
                 const Log& log)
 {
-    size_t groupTriangles = 0;
-    uint32_t firstVertex = kInvalid, lastVertex = 0;
-    for (uint32_t p : group.primitives) {
-        const Primitive& prim = scene.primitives[p];
-        groupTriangles += prim.indexCount / 3;
-        for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; ++i) {
-            firstVertex = std::min(firstVertex, scene.indices[i]);
-            lastVertex = std::max(lastVertex, scene.indices[i]);
-        }
-    }
+    const GroupRange range = groupRange(scene, group);
+    const size_t groupTriangles = range.triangles;
     if (groupTriangles == 0)
         return;
     result.split = true;
 
     // Weld every vertex the group uses.
     GroupVertices vertices{scene.vertices, uint32_t(scene.vertices.size()), {}};
-    MeshTessellator tessellator(vertices, firstVertex, size_t(lastVertex - firstVertex) + 1, group.bound,
-                                groupTriangles);
+    MeshTessellator tessellator(vertices, range.firstVertex, size_t(range.lastVertex - range.firstVertex) + 1,
+                                group.bound, groupTriangles);
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
         for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; i += 3)
@@ -804,19 +852,8 @@ void splitGroup(const Scene& scene, const Group& group, size_t groupIndex, const
             for (size_t f = 0; f < faces; ++f) {
                 const size_t before = out.size();
                 if (tessellator.emit(f, out)) {
-                    ++result.trianglesSplit;
                     pieces[p].changed = true;
-                    const size_t added = (out.size() - before) / 3 - 1;
-                    result.trianglesAdded += added;
-                    EdgeSummary cut;
-                    cut.add(position, out.data() + before, out.size() - before);
-                    result.pieceEdgeSum += cut.sum * group.scale;
-                    result.pieceEdgeCount += cut.count;
-                    // The scene-wide total only grows: once it is over the limit the bake
-                    // is refused whichever group notices, so stop now rather than let
-                    // every group run up its own worst case in memory.
-                    if (shared.used.fetch_add(added) + added > shared.available)
-                        throw BakeError(kTooManyTriangles);
+                    bookCutFace(position, out, before, group, shared, result);
                 }
                 if (++done % kProgressInterval == 0)
                     log.info("tessellation: " + label + ": " + std::to_string(done) + " / " +
@@ -828,17 +865,7 @@ void splitGroup(const Scene& scene, const Group& group, size_t groupIndex, const
         if (!pieces[p].changed)
             std::vector<uint32_t>().swap(out); // unchanged: the original range is kept
     }
-    result.added = std::move(vertices.added);
-    result.unresolved = tessellator.unresolved();
-    result.surfaceBuilt = tessellator.surfaceBuilt();
-    result.fallbacks = tessellator.fallbacks();
-    if (const std::string refusal = tessellator.surfaceRefusal(); !refusal.empty()) {
-        result.surfaceRefused = true;
-        log.info("tessellation: " + label + ": OpenSubdiv refused the mesh (" + refusal +
-                 "); its new points are placed by barycentric weights of the triangles' corners");
-    }
-    log.info("tessellation: " + label + ": " + std::to_string(groupTriangles) + " -> " +
-             std::to_string(groupOut) + " triangles (" + std::to_string(result.trianglesSplit) + " split)");
+    finishGroup(tessellator, vertices, label, groupTriangles, groupOut, result, log);
 }
 
 // New index buffer: primitives in index order, changed ones replaced by their pieces;
@@ -883,30 +910,24 @@ Log serialisedLog(const Log& log, std::mutex& mutex)
     return out;
 }
 
-} // namespace
+// What the groups' results add up to, in group order (as a serial run would have: group
+// g's new vertices follow those of the groups before it).
+struct CombinedResults {
+    size_t vertexCount = 0, trianglesAdded = 0, pieceEdgeCount = 0, unresolved = 0;
+    double pieceEdgeSum = 0.0;
+};
 
-TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxEdgeObject,
-                                   const std::vector<float>& meshScale, const Log& log, unsigned threads)
+// Splits the groups that have an oversized edge (the others need no welding), each into
+// its own result: the scene is not touched until every group is done. Groups run side by
+// side; a group's face patterns use the threads other groups have finished with (a
+// scene's largest mesh is often most of its work).
+void splitGroups(const Scene& scene, const std::vector<Group>& groups, size_t trianglesIn, const Log& log,
+                 unsigned threads, std::vector<GroupResult>& results, std::vector<PrimitivePieces>& pieces)
 {
-    if (maxEdgeObject.size() != scene.meshes.size() || meshScale.size() != scene.meshes.size())
-        throw BakeError("tessellation: expected one bound and one scale per mesh");
-    validateScene(scene);
-    const std::vector<uint32_t> order = primitivesInIndexOrder(scene);
-    const std::vector<Group> groups = groupPrimitives(scene, maxEdgeObject, meshScale);
-
-    TessellationStats stats;
-    stats.trianglesIn = scene.triangleCount();
-
-    // Split the groups that have an oversized edge (the others need no welding), each
-    // into its own result: the scene is not touched until every group is done.
-    std::vector<GroupResult> results(groups.size());
-    std::vector<PrimitivePieces> pieces(scene.primitives.size());
     SplitShared shared;
-    shared.available = kMaxOutputTriangles - std::min(stats.trianglesIn, kMaxOutputTriangles);
+    shared.available = kMaxOutputTriangles - std::min(trianglesIn, kMaxOutputTriangles);
     std::mutex logMutex;
     const Log groupLog = serialisedLog(log, logMutex);
-    // Groups run side by side; a group's face patterns use the threads other groups
-    // have finished with (a scene's largest mesh is often most of its work).
     ThreadBudget pool(threads);
     parallelFor(groups.size(), pool, [&](size_t g) {
         try {
@@ -921,58 +942,64 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
             throw;
         }
     });
+}
 
-    // Combine in group order, as a serial run would have: group g's new vertices follow
-    // those of the groups before it.
-    const size_t vertexCountIn = scene.vertices.size();
-    size_t vertexCount = vertexCountIn, trianglesAdded = 0;
-    double pieceEdgeSum = 0.0;
-    size_t pieceEdgeCount = 0, unresolved = 0;
+// Shifts each group's new vertex indices past the groups before it and sums the results.
+CombinedResults combineResults(const std::vector<Group>& groups, const std::vector<GroupResult>& results,
+                               size_t vertexCountIn, std::vector<PrimitivePieces>& pieces, TessellationStats& stats)
+{
+    CombinedResults c;
+    c.vertexCount = vertexCountIn;
     for (size_t g = 0; g < groups.size(); ++g) {
         const GroupResult& r = results[g];
         stats.maxEdgeWorldBefore = std::max(stats.maxEdgeWorldBefore, r.longestBefore * groups[g].scale);
         if (!r.split)
             continue;
-        const auto shift = uint32_t(vertexCount - vertexCountIn);
+        const auto shift = uint32_t(c.vertexCount - vertexCountIn);
         if (shift > 0)
             for (uint32_t p : groups[g].primitives)
                 for (uint32_t& index : pieces[p].indices)
                     if (index >= vertexCountIn)
                         index += shift;
-        vertexCount += r.added.size();
-        if (vertexCount > kMaxVertices)
+        c.vertexCount += r.added.size();
+        if (c.vertexCount > kMaxVertices)
             throw BakeError(kTooManyVertices);
-        trianglesAdded += r.trianglesAdded;
+        c.trianglesAdded += r.trianglesAdded;
         stats.trianglesSplit += r.trianglesSplit;
-        pieceEdgeSum += r.pieceEdgeSum;
-        pieceEdgeCount += r.pieceEdgeCount;
-        unresolved += r.unresolved;
+        c.pieceEdgeSum += r.pieceEdgeSum;
+        c.pieceEdgeCount += r.pieceEdgeCount;
+        c.unresolved += r.unresolved;
         stats.surfaceMeshes += r.surfaceBuilt && !r.surfaceRefused ? 1 : 0;
         stats.surfaceMeshesRefused += r.surfaceRefused ? 1 : 0;
         stats.surfaceFallbacks += r.fallbacks;
     }
+    return c;
+}
 
-    if (stats.trianglesSplit > 0) {
-        try {
-            VertexStreams& v = scene.vertices;
-            v.positions.reserve(vertexCount);
-            v.normals.reserve(v.normals.empty() ? 0 : vertexCount);
-            v.tangents.reserve(v.tangents.empty() ? 0 : vertexCount);
-            v.uvs.reserve(v.uvs.empty() ? 0 : vertexCount);
-            for (GroupResult& r : results) {
-                appendStreams(v, r.added);
-                r.added = VertexStreams(); // free it before the next group is appended
-            }
-        } catch (...) {
-            // Leave the scene as it was: drop the vertices appended so far.
-            truncateStreams(scene.vertices, vertexCountIn);
-            throw;
+// Appends every group's new vertices; on failure the scene keeps the vertices it had.
+void appendGroupVertices(Scene& scene, std::vector<GroupResult>& results, size_t vertexCountIn, size_t vertexCount)
+{
+    try {
+        VertexStreams& v = scene.vertices;
+        v.positions.reserve(vertexCount);
+        v.normals.reserve(v.normals.empty() ? 0 : vertexCount);
+        v.tangents.reserve(v.tangents.empty() ? 0 : vertexCount);
+        v.uvs.reserve(v.uvs.empty() ? 0 : vertexCount);
+        for (GroupResult& r : results) {
+            appendStreams(v, r.added);
+            r.added = VertexStreams(); // free it before the next group is appended
         }
-        rebuildIndexBuffer(scene, order, pieces, stats.trianglesIn + trianglesAdded);
-        scene.triangleStats.clear(); // no longer lines up with the triangles
+    } catch (...) {
+        truncateStreams(scene.vertices, vertexCountIn);
+        throw;
     }
+}
 
-    // Report (sums in group order, so the figures do not depend on the thread count).
+// The edge figures after the split (sums in group order, so the figures do not depend on
+// the thread count), and the log lines.
+void reportEdges(const Scene& scene, const std::vector<Group>& groups, const CombinedResults& c, const Log& log,
+                 unsigned threads, TessellationStats& stats)
+{
     stats.trianglesOut = scene.triangleCount();
     std::vector<EdgeSummary> after(groups.size());
     parallelFor(groups.size(), threads, [&](size_t g) { after[g] = groupEdges(scene, groups[g]); });
@@ -984,9 +1011,9 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
         edgeCount += after[g].count;
     }
     stats.meanEdgeWorldAfter = edgeCount > 0 ? edgeSum / double(edgeCount) : 0.0;
-    stats.meanPieceEdgeWorld = pieceEdgeCount > 0 ? pieceEdgeSum / double(pieceEdgeCount) : 0.0;
-    if (unresolved > 0)
-        log.warn("tessellation: " + std::to_string(unresolved) +
+    stats.meanPieceEdgeWorld = c.pieceEdgeCount > 0 ? c.pieceEdgeSum / double(c.pieceEdgeCount) : 0.0;
+    if (c.unresolved > 0)
+        log.warn("tessellation: " + std::to_string(c.unresolved) +
                  " edges or triangles could not be cut within the bound (float precision); they exceed it");
     log.info("tessellation: " + std::to_string(stats.trianglesIn) + " -> " +
              std::to_string(stats.trianglesOut) + " triangles (" + std::to_string(stats.trianglesSplit) +
@@ -1000,6 +1027,33 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
                         "), split triangles placed by barycentric weights instead: " +
                         std::to_string(stats.surfaceFallbacks)
                   : std::string()));
+}
+
+} // namespace
+
+TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxEdgeObject,
+                                   const std::vector<float>& meshScale, const Log& log, unsigned threads)
+{
+    if (maxEdgeObject.size() != scene.meshes.size() || meshScale.size() != scene.meshes.size())
+        throw BakeError("tessellation: expected one bound and one scale per mesh");
+    validateScene(scene);
+    const std::vector<uint32_t> order = primitivesInIndexOrder(scene);
+    const std::vector<Group> groups = groupPrimitives(scene, maxEdgeObject, meshScale);
+
+    TessellationStats stats;
+    stats.trianglesIn = scene.triangleCount();
+    std::vector<GroupResult> results(groups.size());
+    std::vector<PrimitivePieces> pieces(scene.primitives.size());
+    splitGroups(scene, groups, stats.trianglesIn, log, threads, results, pieces);
+
+    const size_t vertexCountIn = scene.vertices.size();
+    const CombinedResults combined = combineResults(groups, results, vertexCountIn, pieces, stats);
+    if (stats.trianglesSplit > 0) {
+        appendGroupVertices(scene, results, vertexCountIn, combined.vertexCount);
+        rebuildIndexBuffer(scene, order, pieces, stats.trianglesIn + combined.trianglesAdded);
+        scene.triangleStats.clear(); // no longer lines up with the triangles
+    }
+    reportEdges(scene, groups, combined, log, threads, stats);
     return stats;
 }
 

@@ -3,7 +3,7 @@
 #   cmake -DSHADER_DIR=<dir> -DOUTPUT=<file.cpp> -P embed_shaders.cmake
 # Sources are written as byte arrays (not raw string literals) so that no shader text,
 # whatever it contains, can terminate the literal early. The table is declared in
-# player/shader_library.h; lookup by name happens there.
+# player/gl/shader_library.h; lookup by name happens there.
 if(NOT SHADER_DIR OR NOT OUTPUT)
   message(FATAL_ERROR "embed_shaders.cmake: SHADER_DIR and OUTPUT must be set")
 endif()

@@ -59,7 +59,9 @@ done | sort -u | while read -r name path; do
   cp -L "$path" "$tmp/lib/$name"
 done
 for name in libEGL.so.1 libGL.so.1 libOpenGL.so.0 libGLdispatch.so.0 libGLX.so.0; do
-  path=$(ldconfig -p | awk -v n="$name" '$1 == n && /x86-64/ {print $NF; exit}')
+  # awk reads to the end: exiting at the first match could kill ldconfig with SIGPIPE, and
+  # under pipefail that fails the assignment (exit 141) whenever ldconfig was still writing.
+  path=$(ldconfig -p | awk -v n="$name" '$1 == n && /x86-64/ && !found {print $NF; found = 1}')
   [ -n "$path" ] && cp -L "$path" "$tmp/lib/glvnd/$name"
 done
 

@@ -23,11 +23,7 @@
 //   view:    support of 2 view intervals (sigma 1/3, truncated at 3 sigma) around the
 //            subpixel's view coordinate phase * N, each sample the nearest view there;
 //   view-spatial: both at once (samples offset in x, y and view).
-#define EIA_MODE_NONE 0
-#define EIA_MODE_SPATIAL 1
-#define EIA_MODE_VIEW 2
-#define EIA_MODE_VIEW_SPATIAL 3
-#define EIA_SAMPLES 8
+#include "eia_bindings.glsl"
 // The mode is compiled in (C++ builds one program per mode, prepending "#define EIA_MODE
 // n"), not a uniform: llvmpipe runs an untaken branch under an all-off lane mask at full
 // cost, so a uniform `mode` made nearest-view EIAs pay for the 8-sample filter too.
@@ -35,27 +31,26 @@
 #define EIA_MODE EIA_MODE_NONE
 #endif
 
-#define EIA_LOCAL_SIZE 8
 layout(local_size_x = EIA_LOCAL_SIZE, local_size_y = EIA_LOCAL_SIZE) in;
 
 // N views, RGBA8 (sRGB-encoded values, passed through untouched), layer = view, GL row 0 =
 // bottom. Read with texelFetch: no filtering, so the result is bit-exact with the CPU.
-layout(binding = 0) uniform sampler2DArray views;
+layout(binding = EIA_UNIT_VIEWS) uniform sampler2DArray views;
 // Panel-size RGBA8 output, GL row 0 = bottom (panel row l = H - 1 - GL row).
-layout(binding = 0, rgba8) uniform writeonly image2D eia;
+layout(binding = EIA_IMAGE_EIA, rgba8) uniform writeonly image2D eia;
 
-uniform uvec2 panelSize;   // W, H in pixels
-uniform uvec2 viewSize;    // view width, height in pixels
-uniform uint viewCount;    // N
-uniform double perSubpixel; // SubpixelMapping
-uniform double perRow;
-uniform double phaseOffset;
-uniform bool invertPhase;
-uniform bool subpixelsBgr;
+layout(location = EIA_LOC_PANEL_SIZE) uniform uvec2 panelSize;     // W, H in pixels
+layout(location = EIA_LOC_VIEW_SIZE) uniform uvec2 viewSize;       // view width, height in pixels
+layout(location = EIA_LOC_VIEW_COUNT) uniform uint viewCount;      // N
+layout(location = EIA_LOC_PER_SUBPIXEL) uniform double perSubpixel; // SubpixelMapping
+layout(location = EIA_LOC_PER_ROW) uniform double perRow;
+layout(location = EIA_LOC_PHASE_OFFSET) uniform double phaseOffset;
+layout(location = EIA_LOC_INVERT_PHASE) uniform bool invertPhase;
+layout(location = EIA_LOC_SUBPIXELS_BGR) uniform bool subpixelsBgr;
 // Filter samples: x, y in view pixels (image order: +y down), z in view intervals.
-uniform vec3 samples[EIA_SAMPLES];
+layout(location = EIA_LOC_SAMPLES) uniform vec3 samples[EIA_SAMPLES];
 // sRGB-encoded byte -> linear value, from C++ (so the CPU reference decodes identically).
-uniform float linearFromByte[256];
+layout(location = EIA_LOC_LINEAR_FROM_BYTE) uniform float linearFromByte[256];
 
 // Same operations, in the same order, as lfd::subpixelPhase (formats/src/display_profile.cpp).
 double subpixelPhase(uint k, uint l)
@@ -127,11 +122,12 @@ float bilinear(vec2 p, uint view, uint channel)
     return mix(top, bottom, a.y);
 }
 
+#include "srgb.glsl"
+
 // Linear -> sRGB-encoded value, quantised to the 8-bit level the image stores.
 float encodeSrgb(float linear)
 {
-    const float c = clamp(linear, 0.0, 1.0);
-    const float e = c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+    const float e = linearToSrgb(vec3(linear)).x;
     return round(clamp(e, 0.0, 1.0) * 255.0) / 255.0;
 }
 

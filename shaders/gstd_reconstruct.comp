@@ -7,26 +7,20 @@
 // mean). Sub-views are averaged in linear light: the first stores its estimate in the
 // accumulator, the last adds its own, divides by the sub-view count, encodes sRGB and
 // writes the view layer (the values every renderer stores).
-// The C++ side dispatches with gl::dispatchCovering, which reads this local size back.
-layout(local_size_x = 8, local_size_y = 8) in;
+#include "gstd_bindings.glsl"
+layout(local_size_x = GSTD_LOCAL_SIZE, local_size_y = GSTD_LOCAL_SIZE) in;
 
-#define GSTD_MAX_SAMPLES 64
+layout(binding = GSTD_UNIT_HIGH_RES) uniform sampler2D u_highRes;             // linear filter, clamp
+layout(binding = GSTD_IMAGE_ACCUM, rgba32f) uniform image2D u_accum;         // view size, linear
+layout(binding = GSTD_IMAGE_VIEW, rgba8) uniform writeonly image2D u_view;   // one ViewTargets layer
 
-layout(binding = 5) uniform sampler2D u_highRes;                  // linear filter, clamp
-layout(binding = 0, rgba32f) uniform image2D u_accum;             // view size, linear
-layout(binding = 1, rgba8) uniform writeonly image2D u_view;      // one ViewTargets layer
+layout(location = GSTD_LOC_SIZE) uniform uvec2 u_size;
+layout(location = GSTD_LOC_SAMPLE_COUNT) uniform uint u_sampleCount;
+layout(location = GSTD_LOC_SUB_VIEW) uniform uint u_subView;
+layout(location = GSTD_LOC_SUB_VIEW_COUNT) uniform uint u_subViewCount;
+layout(location = GSTD_LOC_OFFSETS) uniform vec2 u_offsets[GSTD_MAX_SAMPLES];
 
-layout(location = 0) uniform uvec2 u_size;        // view size in pixels
-layout(location = 1) uniform uint u_sampleCount;
-layout(location = 2) uniform uint u_subView;      // 0 .. u_subViewCount - 1
-layout(location = 3) uniform uint u_subViewCount;
-layout(location = 4) uniform vec2 u_offsets[GSTD_MAX_SAMPLES]; // view pixels
-
-vec3 lfdEncodeSrgb(vec3 linear)
-{
-    vec3 c = clamp(linear, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
+#include "srgb.glsl"
 
 void main()
 {
@@ -47,5 +41,5 @@ void main()
     if (u_subView + 1u < u_subViewCount)
         imageStore(u_accum, p, vec4(estimate, 1.0));
     else
-        imageStore(u_view, p, vec4(lfdEncodeSrgb(estimate / float(u_subViewCount)), 1.0));
+        imageStore(u_view, p, vec4(linearToSrgb(estimate / float(u_subViewCount)), 1.0));
 }

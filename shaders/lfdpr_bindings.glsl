@@ -1,5 +1,7 @@
-// LFDPR buffers: binding points, uniform locations and std430/std140 layouts shared by the
-// point-generation and view-generation stages. This file is the only definition: the
+// LFDPR buffers: binding points, uniform locations and std430/std140 layouts of both LFDPR
+// pipelines (renderer_lfdpr.h): the paper's (LfdprPaper* structs, lfdpr_paper_*
+// shaders) and the visibility pipeline (LfdprVisibility* and the other Lfdpr*Gpu structs,
+// lfdpr_visibility_* shaders). This file is the only definition: the
 // build generates the C++ side from it (lfdpr_bindings_gpu.h: every #define as a constant,
 // every struct and fixed-member block as a C++ struct with these offsets; see
 // player/gl/gpu_layout_gen.cpp), and tests/player/gpu_layout_test.cpp checks every member
@@ -9,11 +11,13 @@
 // Requires scene_bindings.glsl first (LFD_SSBO_* 0..3 and LFD_UBO_FRAME 0 are taken).
 
 #define LFDPR_SSBO_POINTS 4
-#define LFDPR_SSBO_TRIANGLES 5    // TriangleRecordGpu: what view generation needs
-#define LFDPR_SSBO_SAMPLING 6     // TriangleSamplingGpu: what the point FS needs
+#define LFDPR_SSBO_TRIANGLES 5    // LfdprPaperTriangleGpu: what view generation needs
+#define LFDPR_SSBO_SAMPLING 6     // LfdprPaperSamplingGpu: what the point FS needs
 #define LFDPR_SSBO_COUNTERS 7
-#define LFDPR_SSBO_VIEW_DEPTH 8   // 32-bit path: depth words; 64-bit path: depth|colour
-#define LFDPR_SSBO_VIEW_COLOR 9   // 32-bit path: colour words
+#define LFDPR_SSBO_VIEW_DEPTH 8   // 32-bit path: depth words; 64-bit path: depth|payload
+// 32-bit path: per view pixel, the payload of the depth test's winner - its colour word
+// (paper pipeline) or its LfdprVisibilityRecordGpu index (visibility pipeline).
+#define LFDPR_SSBO_VIEW_WINNER 9
 #define LFDPR_SSBO_VIEW_INVERSE 10 // sceneFromClip per view
 #define LFDPR_UBO_FRAME 1
 #define LFDPR_IMAGE_VIEWS 0
@@ -28,7 +32,7 @@
 #define LFDPR_OPTION_TEXTURE_SPLATTING 2
 #define LFDPR_OPTION_MV_MIPMAPPING 4
 
-// TriangleRecordGpu flags.
+// LfdprPaperTriangleGpu flags.
 #define LFDPR_TRIANGLE_DOUBLE_SIDED 1
 #define LFDPR_TRIANGLE_MIRRORED 2     // node transform flips the winding (front = CW)
 #define LFDPR_TRIANGLE_FACE_NORMAL 4  // no normal stream: shade with the face normal
@@ -50,9 +54,9 @@
 // fetched at LOD_min and LOD_max (paper: tv_min, tv_max), packed 8 bits per channel.
 // Normal-mapped surfaces store the two perturbed normals instead of the two normal-map
 // texels (the tangent frame is applied at fetch time, so no frame is stored per point).
-struct PointGpu {
+struct LfdprPaperPointGpu {
     vec3 position;      // scene space (splat centre)
-    uint triangle;      // TriangleRecordGpu index
+    uint triangle;      // LfdprPaperTriangleGpu index
     uint normalMin;     // octahedral unit normal, 2 x snorm16 (LOD_min)
     uint normalMax;     // (LOD_max)
     uint baseColorMin;  // sRGB-encoded rgb, linear alpha (texture value, factor not applied)
@@ -66,7 +70,7 @@ struct PointGpu {
 // One triangle as view generation sees it (std430), indexed by draw record base
 // + gl_PrimitiveID: scene-space vertices for the inside-triangle test, the sampling axes
 // and spacings (the splat size), and the multiview-mipmapping range.
-struct TriangleRecordGpu {
+struct LfdprPaperTriangleGpu {
     vec4 p0;    // xyz scene position, w = uintBitsToFloat(material index)
     vec4 p1;    // xyz, w = A_ts / A_ws in scene units (texture area per world area)
     vec4 p2;    // xyz, w = uintBitsToFloat(LFDPR_TRIANGLE_* flags)
@@ -76,7 +80,7 @@ struct TriangleRecordGpu {
 };
 
 // What the point fragment shader needs besides the record (std430).
-struct TriangleSamplingGpu {
+struct LfdprPaperSamplingGpu {
     vec4 origin;   // xyz scene point of sampling coordinates (0, 0), w unused
     vec4 q01;      // sampling coordinates of p0 (xy) and p1 (zw)
     vec4 q2uv0;    // q2 (xy), uv0 (zw)
@@ -85,15 +89,15 @@ struct TriangleSamplingGpu {
     uvec4 tangents; // xyz octahedral vertex tangents (scene), w bit i: tangent i has w < 0
 };
 
-// Counters of the paper's pipeline (C++: LfdprCountersGpu, read back by name).
+// Counters of the paper's pipeline (C++: LfdprPaperCountersGpu, read back by name).
 #ifndef LFDPR_VISIBILITY_PIPELINE // the visibility pipeline has its own counters
-layout(std430, binding = LFDPR_SSBO_COUNTERS) coherent buffer LfdprCounters {
+layout(std430, binding = LFDPR_SSBO_COUNTERS) coherent buffer LfdprPaperCounters {
     uint pointCount;       // points generated (may exceed the capacity: overflow)
     uint triangleCount;    // triangles that emitted points
     uint oversizedCount;   // triangles larger than one sampling tile (tiled in the GS)
     uint coarsenedCount;   // ... larger than LFDPR_MAX_TILES tiles (sampled coarser)
     uint dispatchX;        // view-generation dispatch arguments (glDispatchComputeIndirect
-                           // at offsetof(LfdprCountersGpu, dispatchX))
+                           // at offsetof(LfdprPaperCountersGpu, dispatchX))
     uint dispatchY;
     uint dispatchZ;
     uint counterPad;
@@ -114,23 +118,23 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 
 // ---------------------------------------------------------------------------------------
 // The visibility pipeline (lfdpr's default; the paper's pipeline above stays selectable):
-// compute point generation (lfdpr_points.comp), visibility splatting of depth and point
-// index (lfdpr_visibility.comp), then shading once per visible view pixel
-// (lfdpr_shade.comp). A point is 8 bytes: its triangle record and its sampling cell.
-#define LFDPR_SSBO_RECORDS 11      // LfdprRecordGpu per emitting triangle
+// compute point generation (lfdpr_visibility_points.comp), visibility splatting of depth and point
+// index (lfdpr_visibility_splat.comp), then shading once per visible view pixel
+// (lfdpr_visibility_shade.comp). A point is 8 bytes: its triangle record and its sampling cell.
+#define LFDPR_SSBO_RECORDS 11      // LfdprVisibilityRecordGpu per emitting triangle
 #define LFDPR_SSBO_INDICES 12      // the scene's index buffer (uint)
 #define LFDPR_SSBO_POSITIONS 13    // the scene's position stream (float x 3 per vertex)
 #define LFDPR_SSBO_NORMALS 14      // normal stream (float x 3), or a dummy
 #define LFDPR_SSBO_TANGENTS 15     // tangent stream (vec4), or a dummy
 #define LFDPR_SSBO_UVS 16          // uv stream (vec2), or a dummy
-#define LFDPR_SSBO_DRAWS 17        // LfdprDrawGpu per draw
+#define LFDPR_SSBO_DRAWS 17        // LfdprVisibilityDrawGpu per draw
 #define LFDPR_SSBO_LARGE 18        // per dispatch class segment: uvec2 (draw, primitive) sampled by a workgroup
 #define LFDPR_SSBO_LARGE_DISPATCH 19 // per dispatch class: uvec4 indirect dispatch (w = triangles queued)
-#define LFDPR_SSBO_VIS_COUNTERS 20 // LfdprVisCounters
+#define LFDPR_SSBO_VIS_COUNTERS 20 // LfdprVisibilityCounters
 #define LFDPR_SSBO_SHADE_WORK 21   // LfdprShadeWork: per shading group, its tiles and dispatch
 #define LFDPR_SSBO_CHUNK_MASKS 22  // per shading group and tile chunk: the views splatted there
-#define LFDPR_SSBO_REPAIR 23       // LfdprRepairGpu: the 32-bit path's repair dispatches
-#define LFDPR_SSBO_WORKGROUPS 24   // LfdprWorkgroupGpu per point-generation workgroup
+#define LFDPR_SSBO_REPAIR 23       // LfdprVisibilityRepairGpu: the 32-bit path's repair dispatches
+#define LFDPR_SSBO_WORKGROUPS 24   // LfdprVisibilityWorkgroupGpu per point-generation workgroup
 #define LFDPR_UBO_CAMERA_LINE 2
 // The same buffers as buffer textures (texelFetch), for the passes that read them per
 // point or per pixel: on Mesa's llvmpipe a storage-buffer load at a per-invocation address
@@ -141,27 +145,27 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_UNIT_NORMALS 10      // RGB32F
 #define LFDPR_UNIT_TANGENTS 11     // RGBA32F
 #define LFDPR_UNIT_UVS 12          // RG32F
-#define LFDPR_UNIT_RECORDS 14      // RGBA32UI: LfdprRecordGpu (spacing as float bits)
-#define LFDPR_UNIT_DRAWS 15        // RGBA32UI: LfdprDrawGpu
+#define LFDPR_UNIT_RECORDS 14      // RGBA32UI: LfdprVisibilityRecordGpu (spacing as float bits)
+#define LFDPR_UNIT_DRAWS 15        // RGBA32UI: LfdprVisibilityDrawGpu
 #define LFDPR_UNIT_NODES 16        // RGBA32F: NodeGpu, 8 texels each
 #define LFDPR_UNIT_MATERIALS 17    // RGBA32F: MaterialGpu, 4 texels each (flags as float bits)
 #define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
 #define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI the winner's record (32-bit path)
 
-#define LFDPR_LOC_FIRST_WORKGROUP 7 // lfdpr_points.comp: the dispatch's first LfdprWorkgroupGpu
-#define LFDPR_LOC_WORKGROUPS 8     // lfdpr_points.comp: LfdprWorkgroupGpu entries it covers
-#define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_shade.comp: the material whose textures are bound
+#define LFDPR_LOC_FIRST_WORKGROUP 7 // lfdpr_visibility_points.comp: the dispatch's first LfdprVisibilityWorkgroupGpu
+#define LFDPR_LOC_WORKGROUPS 8     // lfdpr_visibility_points.comp: LfdprVisibilityWorkgroupGpu entries it covers
+#define LFDPR_LOC_SHADE_MATERIAL 9 // lfdpr_visibility_shade.comp: the material whose textures are bound
 #define LFDPR_LOC_LARGE_BASE 10    // first LFDPR_SSBO_LARGE slot of the dispatch class
-#define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_shade.comp: the shading group dispatched
-#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_shade_list.comp, lfdpr_repair_dispatch.comp: groups in use
-#define LFDPR_LOC_LARGE_CLASS 13   // lfdpr_points.comp: the dispatch class (its LFDPR_SSBO_LARGE_DISPATCH entry)
+#define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_visibility_shade.comp: the shading group dispatched
+#define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_visibility_shade_list.comp, lfdpr_visibility_repair_dispatch.comp: groups in use
+#define LFDPR_LOC_LARGE_CLASS 13   // lfdpr_visibility_points.comp: the dispatch class (its LFDPR_SSBO_LARGE_DISPATCH entry)
 
-// Shading (lfdpr_shade_list.comp, lfdpr_shade.comp): view pixels are shaded in tiles of
+// Shading (lfdpr_visibility_shade_list.comp, lfdpr_visibility_shade.comp): view pixels are shaded in tiles of
 // LFDPR_SHADE_TILE x LFDPR_SHADE_TILE pixels, a tile position over a chunk of views at a
 // time. Materials fall into shading groups - group 0 every untextured material, then one
 // group per textured material (whose textures are bound for its dispatch) - and each
 // group's dispatch visits only the tile chunks, and in them the views, where a point of
-// the group was splatted (lfdpr_visibility.comp marks them). Textured materials beyond
+// the group was splatted (lfdpr_visibility_splat.comp marks them). Textured materials beyond
 // LFDPR_MAX_SHADE_GROUPS - 1 share groups (each then visits its group's tiles and shades
 // only its own pixels).
 #define LFDPR_SHADE_TILE 8
@@ -176,15 +180,15 @@ uint lfdViewWord(uint view, uint x, uint y, uint width, uint viewCount)
 }
 
 // One point of the visibility pipeline (std430): its triangle record and its sampling cell.
-struct LfdprPointGpu {
-    uint record; // LfdprRecordGpu index
+struct LfdprVisibilityPointGpu {
+    uint record; // LfdprVisibilityRecordGpu index
     uint cell;   // sampling cell: x | y << 16
 };
 
 // One emitting triangle (std430): which triangle (the vertices, attributes,
 // node and material come from the scene) and its final sampling spacings.
-struct LfdprRecordGpu {
-    uint draw;       // LfdprDrawGpu index
+struct LfdprVisibilityRecordGpu {
+    uint draw;       // LfdprVisibilityDrawGpu index
     uint primitive;  // triangle within the draw
     vec2 spacing;    // along T_align's U and V (texture splatting, coarsening applied)
 };
@@ -193,15 +197,15 @@ struct LfdprRecordGpu {
 // triangles of one draw, so every draw is sampled by one dispatch per dispatch class (all
 // draws without an alpha test in one; each alpha-tested draw, whose textures must be
 // bound, in its own) and no invocation searches for its draw.
-struct LfdprWorkgroupGpu {
-    uint draw;           // LfdprDrawGpu index
+struct LfdprVisibilityWorkgroupGpu {
+    uint draw;           // LfdprVisibilityDrawGpu index
     uint firstPrimitive; // its first triangle within the draw
     uint primitives;     // triangles it samples (1..LFDPR_GROUP_SIZE)
     uint pad0;
 };
 
 // One draw (std430).
-struct LfdprDrawGpu {
+struct LfdprVisibilityDrawGpu {
     uint node;
     uint material;      // GPU material index
     uint firstTriangle; // scene triangle index of the draw's first triangle
@@ -209,29 +213,29 @@ struct LfdprDrawGpu {
 };
 
 // Counters of the visibility pipeline (std430). The splat's indirect dispatch is made from
-// them on the GPU (lfdpr_dispatch.comp); the renderer reads them back frames later behind a
+// them on the GPU (lfdpr_paper_dispatch.comp); the renderer reads them back frames later behind a
 // fence (gl::GpuReadback, by name), for the stats and to grow the point buffer after an
 // overflow - never waiting for them.
-struct LfdprVisCountersGpu {
+struct LfdprVisibilityCountersGpu {
     uint pointCount;     // points generated (may exceed the capacity: overflow)
     uint recordCount;    // emitting triangles
     uint oversizedCount; // larger than one sampling tile
     uint coarsenedCount; // larger than LFDPR_MAX_TILES tiles (sampled coarser)
     uint largeCount;     // sampled by a workgroup
     uint splatGroupsX;   // the splat's indirect dispatch (glDispatchComputeIndirect at
-    uint splatGroupsY;   // offsetof(LfdprVisCountersGpu, splatGroupsX)): workgroups of
+    uint splatGroupsY;   // offsetof(LfdprVisibilityCountersGpu, splatGroupsX)): workgroups of
     uint splatGroupsZ;   // LFDPR_GROUP_SIZE points, x at most 65535
 };
 
 // The 32-bit path's repair, made on the GPU from the shading's first pass
-// (lfdpr_repair_dispatch.comp, std430): three indirect dispatches, each of zero workgroups
+// (lfdpr_visibility_repair_dispatch.comp, std430): three indirect dispatches, each of zero workgroups
 // when it has nothing to do, so the frame never waits to learn whether to repair.
-struct LfdprRepairGpu {
-    uvec4 indexPass;  // xyz: lfdpr_visibility.comp LFDPR_INDEX_PASS over every point (0 without
+struct LfdprVisibilityRepairGpu {
+    uvec4 indexPass;  // xyz: lfdpr_visibility_splat.comp LFDPR_INDEX_PASS over every point (0 without
                       // repairs); w: view pixels to repair (the first pass's repairCount)
-    uvec4 listRepair; // xyz: lfdpr_shade_list.comp LFDPR_REPAIR_LIST over the repair list,
+    uvec4 listRepair; // xyz: lfdpr_visibility_shade_list.comp LFDPR_REPAIR_LIST over the repair list,
                       // when the list holds every repair; w 0
-    uvec4 listAll;    // xyz: lfdpr_shade_list.comp over every marked chunk again, when more
+    uvec4 listAll;    // xyz: lfdpr_visibility_shade_list.comp over every marked chunk again, when more
                       // pixels raced than the list holds; w 0
 };
 
@@ -240,7 +244,7 @@ struct LfdprRepairGpu {
 // group its list of tile chunk entries (LFDPR_SHADE_ENTRY_WORDS words each, from
 // groupTiles[group * lfdShadeEntryCount * 3]), then the repair list (32-bit path): the
 // tile chunk index of each repaired pixel, at groupTiles[repairBase + i].
-struct LfdprShadeCountersGpu {
+struct LfdprVisibilityShadeCountersGpu {
     uint repairCount;    // 32-bit path: view pixels whose record lost a race
     uint repairBase;     // groupTiles index of the repair list: the tile chunk of each such pixel
     uint repairCapacity; // entries the repair list holds
@@ -248,7 +252,7 @@ struct LfdprShadeCountersGpu {
 };
 #define LFDPR_SHADE_WORK_BUFFER \
     buffer ShadeWork { \
-        LfdprShadeCountersGpu shadeCounters; \
+        LfdprVisibilityShadeCountersGpu shadeCounters; \
         uvec4 groupDispatch[LFDPR_MAX_SHADE_GROUPS]; \
         uint groupTiles[]; \
     }

@@ -48,7 +48,7 @@ LfdLinePoint lfdProjectForCulling(vec3 p, vec2 viewSize)
 
 // Pixel-centre culling (beyond the paper; LfdprOptions::pixelCentreCulling): false when
 // triangle (p0, p1, p2) holds no view pixel centre in any view, so no point of it could
-// win a pixel - lfdpr_visibility.comp writes only pixels whose centre lies inside the
+// win a pixel - lfdpr_visibility_splat.comp writes only pixels whose centre lies inside the
 // point's own triangle. Tested on the window bounding box: its rows are the same in every
 // view, and its columns move with the camera offset e, where the smallest vertex x is
 // concave in e and the largest convex, so over the whole view cone they reach their

@@ -2,7 +2,7 @@
 // written in the common subset of GLSL 4.50 and C++/glm: plain functions over float,
 // vec2, vec3, vec4 and small structs; no inout/out parameters, no swizzles, no
 // constructors of structs, float literals with the f suffix. The shaders #include it;
-// player/lfdpr_math.h includes it inside namespace lfd::player::lfdpr_math with
+// player/render/lfdpr/lfdpr_math.h includes it inside namespace lfd::player::lfdpr_math with
 // `using namespace glm`, so tests/player/lfdpr_math_test.cpp tests the code the GPU runs.
 //
 // Notation (paper): size_xy = world area of one reverse-projected view pixel; size_uv =

@@ -4,7 +4,7 @@
 // record and sampling cell; everything else about it is derived from here.
 // Needs scene_bindings.glsl and lfdpr_bindings.glsl first.
 
-// LFDPR_SCENE_TEXELS (lfdpr_shade.comp): the reads go through buffer textures over the
+// LFDPR_SCENE_TEXELS (lfdpr_visibility_shade.comp): the reads go through buffer textures over the
 // same buffers (LFDPR_UNIT_*): Mesa's llvmpipe turns a storage-buffer load at a
 // per-invocation address into a loop over the SIMD lanes, once per component and with a
 // bounds check per lane, while texelFetch is one vectorised gather of a whole texel. That
@@ -46,20 +46,20 @@ MaterialGpu lfdMaterial(uint material)
     return m;
 }
 
-LfdprDrawGpu lfdDraw(uint draw)
+LfdprVisibilityDrawGpu lfdDraw(uint draw)
 {
     uvec4 d = texelFetch(t_draws, int(draw));
-    return LfdprDrawGpu(d.x, d.y, d.z, d.w);
+    return LfdprVisibilityDrawGpu(d.x, d.y, d.z, d.w);
 }
 
-LfdprRecordGpu lfdRecord(uint record)
+LfdprVisibilityRecordGpu lfdRecord(uint record)
 {
     uvec4 r = texelFetch(t_records, int(record));
-    return LfdprRecordGpu(r.x, r.y, uintBitsToFloat(r.zw));
+    return LfdprVisibilityRecordGpu(r.x, r.y, uintBitsToFloat(r.zw));
 }
 
 // Vertex indices of triangle `primitive` of draw `draw`.
-uvec3 lfdTriangleVertices(LfdprDrawGpu draw, uint primitive)
+uvec3 lfdTriangleVertices(LfdprVisibilityDrawGpu draw, uint primitive)
 {
     return texelFetch(t_sceneTriangles, int(draw.firstTriangle + primitive)).xyz;
 }
@@ -86,16 +86,16 @@ layout(std430, binding = LFDPR_SSBO_POSITIONS) readonly buffer ScenePositions {
     float scenePositions[];
 };
 layout(std430, binding = LFDPR_SSBO_DRAWS) readonly buffer Draws {
-    LfdprDrawGpu draws[];
+    LfdprVisibilityDrawGpu draws[];
 };
 
-LfdprDrawGpu lfdDraw(uint draw)
+LfdprVisibilityDrawGpu lfdDraw(uint draw)
 {
     return draws[draw];
 }
 
 // Vertex indices of triangle `primitive` of draw `draw`.
-uvec3 lfdTriangleVertices(LfdprDrawGpu draw, uint primitive)
+uvec3 lfdTriangleVertices(LfdprVisibilityDrawGpu draw, uint primitive)
 {
     uint first = 3u * (draw.firstTriangle + primitive);
     return uvec3(sceneIndices[first], sceneIndices[first + 1u], sceneIndices[first + 2u]);
@@ -109,7 +109,7 @@ vec3 lfdObjectPosition(uint vertex)
 
 // Scene-space positions of a triangle (the node transform applied as the raster vertex
 // shaders apply it).
-void lfdTrianglePositions(LfdprDrawGpu draw, uvec3 vertices, out vec3 p0, out vec3 p1, out vec3 p2)
+void lfdTrianglePositions(LfdprVisibilityDrawGpu draw, uvec3 vertices, out vec3 p0, out vec3 p1, out vec3 p2)
 {
     mat4 sceneFromObject = lfdNode(draw.node).sceneFromObject;
     p0 = (sceneFromObject * vec4(lfdObjectPosition(vertices.x), 1.0)).xyz;
@@ -141,7 +141,7 @@ LfdSamplingFrame lfdRecordFrame(vec3 p0, vec3 p1, vec3 p2, vec2 spacing)
 }
 
 // A compact point: (record, sampling cell x | y << 16).
-vec2 lfdPointCell(uvec2 point)
+vec2 lfdPointCell(LfdprVisibilityPointGpu point)
 {
-    return vec2(float(point.y & 0xFFFFu), float(point.y >> 16)) + vec2(0.5);
+    return vec2(float(point.cell & 0xFFFFu), float(point.cell >> 16)) + vec2(0.5);
 }

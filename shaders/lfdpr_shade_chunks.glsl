@@ -1,5 +1,5 @@
-// Tile chunks of the visibility pipeline's shading (lfdpr_visibility.comp marks them,
-// lfdpr_shade_list.comp lists them, lfdpr_shade.comp shades them): LFDPR_SHADE_TILE-square
+// Tile chunks of the visibility pipeline's shading (lfdpr_visibility_splat.comp marks them,
+// lfdpr_visibility_shade_list.comp lists them, lfdpr_visibility_shade.comp shades them): LFDPR_SHADE_TILE-square
 // tile positions, each over a run of up to LFDPR_VIEW_CHUNK views. The one definition of
 // the tile grid, the chunk index and the mask layout for all three.
 // Needs lfdpr_bindings.glsl first.

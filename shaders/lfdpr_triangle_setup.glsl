@@ -1,6 +1,6 @@
 // LFDPR per-triangle sampling setup (paper section 3.1), shared by both point generators:
-// the geometry shader of the paper's pipeline (lfdpr_points.geom) and the compute path
-// (lfdpr_points.comp). One function, so both sample every triangle identically and emit
+// the geometry shader of the paper's pipeline (lfdpr_paper_points.geom) and the compute path
+// (lfdpr_visibility_points.comp). One function, so both sample every triangle identically and emit
 // the same point set. Needs scene_bindings.glsl, lfdpr_bindings.glsl and lfdpr_math.glsl.
 //
 // Steps: cull; find the triangle's point closest to the viewing line; reverse-project one
@@ -25,6 +25,66 @@ struct LfdTriangleSetup {
     float texPerWorld;  // A_ts / A_ws in scene units
     bool coarsened;     // larger than LFDPR_MAX_TILES tiles: sampled coarser
 };
+
+// The finest reverse-projected view-pixel edges (horizontal, vertical) at `closest` over
+// every view that sees the triangle, and the least and greatest pixel footprint area;
+// finest* stay >= 1e29 when the triangle is edge-on in every view that faces it.
+struct LfdPixelEdges {
+    float finestH, finestV, pixelAreaMin, pixelAreaMax;
+};
+
+LfdPixelEdges lfdFinestPixelEdges(vec3 p0, vec3 closest, vec3 faceNormal, vec3 frontNormal, bool doubleSided,
+                                  uint viewCount)
+{
+    vec3 displayZ = u_lfd.displayZ.xyz;
+    vec3 edgeH = u_lfd.displayX.xyz * u_lfd.displayX.w;
+    vec3 edgeV = u_lfd.displayY.xyz * u_lfd.displayY.w;
+    LfdPixelEdges e = LfdPixelEdges(1e30, 1e30, 1e30, 0.0);
+    for (uint v = 0u; v < viewCount; ++v) {
+        vec3 eye = views[v].eyeScene.xyz;
+        if (!doubleSided && dot(frontNormal, eye - p0) <= 0.0)
+            continue;
+        vec3 eh = lfdReverseProjectEdge(closest, faceNormal, eye, u_lfd.screenCenter.xyz, displayZ, edgeH);
+        vec3 ev = lfdReverseProjectEdge(closest, faceNormal, eye, u_lfd.screenCenter.xyz, displayZ, edgeV);
+        float lh = length(eh), lv = length(ev);
+        if (lh >= 1e29 || lv >= 1e29)
+            continue; // grazing in this view
+        e.finestH = min(e.finestH, lh);
+        e.finestV = min(e.finestV, lv);
+        float pixelArea = length(cross(eh, ev));
+        e.pixelAreaMin = min(e.pixelAreaMin, pixelArea);
+        e.pixelAreaMax = max(e.pixelAreaMax, pixelArea);
+    }
+    return e;
+}
+
+// T_align and S_ortho: the vertices' sampling coordinates in s.frame (p0 at the origin),
+// with one pixel of margin on each side for the conservative pixels; beyond
+// LFDPR_MAX_TILES tiles the triangle is sampled coarser (spacing grows, s.coarsened).
+void lfdPlaceSampling(vec3 p0, vec3 p1, vec3 p2, inout vec2 spacing, inout LfdTriangleSetup s)
+{
+    vec2 q0 = lfdSamplingFromScene(p0, p0, s.frame, spacing);
+    vec2 q1 = lfdSamplingFromScene(p1, p0, s.frame, spacing);
+    vec2 q2 = lfdSamplingFromScene(p2, p0, s.frame, spacing);
+    vec2 lo = min(min(q0, q1), q2), hi = max(max(q0, q1), q2);
+    float coarsening = lfdCoarsening(hi - lo, float(LFDPR_TILE_SIZE), float(LFDPR_MAX_TILES));
+    if (coarsening > 1.0) {
+        spacing *= coarsening;
+        q0 /= coarsening;
+        q1 /= coarsening;
+        q2 /= coarsening;
+        lo /= coarsening;
+        hi /= coarsening;
+        s.coarsened = true;
+    }
+    vec2 shift = vec2(1.0) - lo;
+    s.q0 = q0 + shift;
+    s.q1 = q1 + shift;
+    s.q2 = q2 + shift;
+    s.extent = ceil(hi - lo + vec2(2.0));
+    s.origin = lfdSceneFromSampling(-shift, p0, s.frame, spacing);
+    s.spacing = spacing;
+}
 
 // False when the triangle is culled: outside every view (all vertices outside one hull
 // plane), degenerate, facing away from every camera (single-sided), or edge-on in every
@@ -61,24 +121,9 @@ bool lfdSetupTriangle(vec3 p0, vec3 p1, vec3 p2, uint outside0, uint outside1, u
     // Step 3: reverse-project one view pixel's horizontal and vertical edges onto the
     // triangle plane there, in every view that sees the triangle: the finest edge per axis
     // sets the spacings; the pixel's area per view gives size_xy^v for size_vpuv.
-    vec3 edgeH = displayX * u_lfd.displayX.w;
-    vec3 edgeV = displayY * u_lfd.displayY.w;
-    float finestH = 1e30, finestV = 1e30, pixelAreaMin = 1e30, pixelAreaMax = 0.0;
-    for (uint v = 0u; v < viewCount; ++v) {
-        vec3 eye = views[v].eyeScene.xyz;
-        if (!s.doubleSided && dot(frontNormal, eye - p0) <= 0.0)
-            continue;
-        vec3 eh = lfdReverseProjectEdge(closest, faceNormal, eye, u_lfd.screenCenter.xyz, displayZ, edgeH);
-        vec3 ev = lfdReverseProjectEdge(closest, faceNormal, eye, u_lfd.screenCenter.xyz, displayZ, edgeV);
-        float lh = length(eh), lv = length(ev);
-        if (lh >= 1e29 || lv >= 1e29)
-            continue; // grazing in this view
-        finestH = min(finestH, lh);
-        finestV = min(finestV, lv);
-        float pixelArea = length(cross(eh, ev));
-        pixelAreaMin = min(pixelAreaMin, pixelArea);
-        pixelAreaMax = max(pixelAreaMax, pixelArea);
-    }
+    LfdPixelEdges edges = lfdFinestPixelEdges(p0, closest, faceNormal, frontNormal, s.doubleSided, viewCount);
+    float finestH = edges.finestH, finestV = edges.finestV;
+    float pixelAreaMin = edges.pixelAreaMin, pixelAreaMax = edges.pixelAreaMax;
     if (finestH >= 1e29 || finestV >= 1e29)
         return false; // edge-on in every view that faces it
 
@@ -116,28 +161,7 @@ bool lfdSetupTriangle(vec3 p0, vec3 p1, vec3 p2, uint outside0, uint outside1, u
     // Step 6: T_align and S_ortho: sampling coordinates of the vertices (p0 at the origin);
     // beyond LFDPR_MAX_TILES tiles the triangle is sampled coarser.
     s.frame = lfdAlignFrame(faceNormal, displayX, displayY, displayZ);
-    vec2 q0 = lfdSamplingFromScene(p0, p0, s.frame, spacing);
-    vec2 q1 = lfdSamplingFromScene(p1, p0, s.frame, spacing);
-    vec2 q2 = lfdSamplingFromScene(p2, p0, s.frame, spacing);
-    vec2 lo = min(min(q0, q1), q2), hi = max(max(q0, q1), q2);
-    float coarsening = lfdCoarsening(hi - lo, float(LFDPR_TILE_SIZE), float(LFDPR_MAX_TILES));
-    if (coarsening > 1.0) {
-        spacing *= coarsening;
-        q0 /= coarsening;
-        q1 /= coarsening;
-        q2 /= coarsening;
-        lo /= coarsening;
-        hi /= coarsening;
-        s.coarsened = true;
-    }
-    // One pixel of margin on each side for the conservative pixels.
-    vec2 shift = vec2(1.0) - lo;
-    s.q0 = q0 + shift;
-    s.q1 = q1 + shift;
-    s.q2 = q2 + shift;
-    s.extent = ceil(hi - lo + vec2(2.0));
-    s.origin = lfdSceneFromSampling(-shift, p0, s.frame, spacing);
-    s.spacing = spacing;
+    lfdPlaceSampling(p0, p1, p2, spacing, s);
 
     // Step 7: multiview mipmapping setup (eqs. minVPUVSize, maxVPUVSize).
     s.vpuvMin = lfdVpuvSize(pixelAreaMin, s.texPerWorld);

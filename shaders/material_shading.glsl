@@ -1,12 +1,12 @@
 // The glTF metallic-roughness material at one surface point, shaded for one view's eye:
-// one function shared by mvr.frag (per fragment) and lfdpr_shade.comp (per visible view
+// one function shared by mvr.frag (per fragment) and lfdpr_visibility_shade.comp (per visible view
 // pixel of the visibility pipeline), so both evaluate the same material the same way.
 // The includer defines LFD_SAMPLE(sampler, uv): texture() with the rasteriser's implicit
 // derivatives in a fragment shader, textureGrad() with analytic gradients in compute.
 // Needs scene_bindings.glsl and pbr_shading.glsl first.
 
 // The textures a program can sample (LFD_MATERIAL_*_TEXTURE bits): a program compiled for
-// a known set (lfdpr_shade.comp, per shading group) contains no code for the others.
+// a known set (lfdpr_visibility_shade.comp, per shading group) contains no code for the others.
 // note: Mesa's llvmpipe runs every `if` under a lane mask - a texture fetch no lane takes
 // still costs its full price - so leaving the code out is the only way to skip it there.
 #ifndef LFD_TEXTURE_MASK

@@ -15,14 +15,7 @@ struct SurfacePbr {
     vec3 emissive;   // linear
 };
 
-// IEC 61966-2-1 sRGB transfer function (linear -> encoded), per channel.
-vec3 linearToSrgb(vec3 c)
-{
-    c = clamp(c, 0.0, 1.0);
-    vec3 low = c * 12.92;
-    vec3 high = 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055;
-    return mix(high, low, lessThanEqual(c, vec3(0.0031308)));
-}
+#include "srgb.glsl" // linearToSrgb
 
 vec3 shadePbr(SurfacePbr s, vec3 position, vec3 eye)
 {

@@ -7,29 +7,19 @@
 //   2x angular (VIEW_DOWNSAMPLE_ANGULAR): view v pixel (x, y) = mean of source views 2v and
 //     2v + 1 (the two cameras at random positions inside view v's interval) at (x, y).
 // One invocation per output pixel and view (z = view).
-#define VIEW_DOWNSAMPLE_SPATIAL 1
-#define VIEW_DOWNSAMPLE_ANGULAR 2
+#include "view_downsample_bindings.glsl"
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+layout(local_size_x = VIEW_DOWNSAMPLE_LOCAL_SIZE, local_size_y = VIEW_DOWNSAMPLE_LOCAL_SIZE, local_size_z = 1) in;
 
 // Supersampled views, RGBA8 sRGB-encoded values (layer = view, GL row 0 = bottom).
-layout(binding = 0) uniform sampler2DArray source;
+layout(binding = VIEW_DOWNSAMPLE_UNIT_SOURCE) uniform sampler2DArray source;
 // The display's views, same encoding.
-layout(binding = 0, rgba8) uniform writeonly image2DArray target;
+layout(binding = VIEW_DOWNSAMPLE_IMAGE_TARGET, rgba8) uniform writeonly image2DArray target;
 
-uniform uvec3 targetSize; // width, height, views
-uniform uint mode;        // VIEW_DOWNSAMPLE_*
+layout(location = VIEW_DOWNSAMPLE_LOC_TARGET_SIZE) uniform uvec3 targetSize; // width, height, views
+layout(location = VIEW_DOWNSAMPLE_LOC_MODE) uniform uint mode;               // VIEW_DOWNSAMPLE_*
 
-vec3 linearFromSrgb(vec3 c)
-{
-    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), greaterThan(c, vec3(0.04045)));
-}
-
-vec3 srgbFromLinear(vec3 c)
-{
-    c = clamp(c, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, greaterThan(c, vec3(0.0031308)));
-}
+#include "srgb.glsl"
 
 void main()
 {
@@ -42,10 +32,10 @@ void main()
     if (mode == VIEW_DOWNSAMPLE_SPATIAL) {
         for (int j = 0; j < 2; ++j)
             for (int i = 0; i < 2; ++i)
-                sum += 0.25 * linearFromSrgb(texelFetch(source, ivec3(2 * p + ivec2(i, j), v), 0).rgb);
+                sum += 0.25 * srgbToLinear(texelFetch(source, ivec3(2 * p + ivec2(i, j), v), 0).rgb);
     } else {
-        sum = 0.5 * (linearFromSrgb(texelFetch(source, ivec3(p, 2 * v), 0).rgb) +
-                     linearFromSrgb(texelFetch(source, ivec3(p, 2 * v + 1), 0).rgb));
+        sum = 0.5 * (srgbToLinear(texelFetch(source, ivec3(p, 2 * v), 0).rgb) +
+                     srgbToLinear(texelFetch(source, ivec3(p, 2 * v + 1), 0).rgb));
     }
-    imageStore(target, ivec3(p, v), vec4(srgbFromLinear(sum), 1.0));
+    imageStore(target, ivec3(p, v), vec4(linearToSrgb(sum), 1.0));
 }

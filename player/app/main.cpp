@@ -11,6 +11,7 @@
 #include "quilt.h"
 #include "quilt_input.h"
 #include "quilt_video.h"
+#include "tool_flags.h"
 #include "window_app.h"
 
 #include "lfd/display_profile.h"
@@ -46,13 +47,14 @@ const char* kFooter =
 
 // Flag values parsed after CLI11 (sizes, pairs, names).
 struct RawFlags {
-    std::string pack, viewSize, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility",
-        lfdprWork = "auto";
+    std::string pack, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility";
+    std::string aa = "none", ss = "1"; // --aa, --ss: typed into PlayOptions once
+    lfd::player::SharedFlags shared;   // the flags lfd-bench takes too
     uint32_t views = 0, frame = 0;
     bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false, noTurntable = false;
     bool noPixelCulling = false;
     bool listMonitors = false;
-    CLI::Option *viewsOpt = nullptr, *sizeOpt = nullptr, *framesOpt = nullptr, *frameOpt = nullptr;
+    CLI::Option *viewsOpt = nullptr, *framesOpt = nullptr, *frameOpt = nullptr;
     CLI::Option *monitorOpt = nullptr, *windowSizeOpt = nullptr;
 };
 
@@ -68,8 +70,7 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
 {
     app.add_option("PACK", f.pack, "packed scene from lfd-bake (or --quilt-in instead)");
     app.add_flag("--headless", o.headless, "render without a window (EGL)");
-    app.add_flag("--gl-debug", o.glDebug,
-                 "debug GL context: print every KHR_debug message; a GL error fails the frame naming the call");
+    addSharedFlags(app, f.shared);
     app.add_option("--renderer", o.renderer, "renderer: " + rendererList())->capture_default_str();
     app.add_flag("--no-lfd-sampling", f.noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
     app.add_flag("--no-texture-splatting", f.noTextureSplatting, "lfdpr: no density reduction by texture");
@@ -83,31 +84,18 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
         ->check(CLI::Range(1u, 8u))
         ->capture_default_str();
     app.add_option("--atomics", f.atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
-    app.add_option("--lfdpr-work", f.lfdprWork,
-                   "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
-                   "short invocations) | cpu (long invocations); the views are the same")
-        ->capture_default_str();
     app.add_option("--lfdpr-pipeline", f.pipeline,
                    "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
         ->capture_default_str();
-    app.add_option("--gstd-factor", o.rendererOptions.gstd.factor,
-                   "gstd: sub-views render at this many times the view resolution (slow gold standard)")
-        ->capture_default_str();
-    app.add_option("--display", o.displayProfile,
-                   "display profile JSON or Looking Glass visual.json (default: the paper's prototype)");
     f.viewsOpt = app.add_option("--views", f.views, "number of views (overrides the profile)");
-    f.sizeOpt = app.add_option("--view-size", f.viewSize, "view size WxH (overrides the profile)");
     f.framesOpt = app.add_option("--frames", o.frames,
                                  "frames to render (timing; windowed: exit after them; with --quilt: a sequence)")
                       ->capture_default_str();
     f.frameOpt = app.add_option("--frame", f.frame, "frame whose outputs are written (default: the last)");
-    app.add_option("--fps", o.fps, "frame k is at time k / fps")->capture_default_str();
-    app.add_option("--turntable-period", o.turntablePeriod, "seconds per turntable revolution (0 = still)")
-        ->capture_default_str();
-    app.add_option("--aa,--reconstruction", o.reconstruction,
+    app.add_option("--aa,--reconstruction", f.aa,
                    "EIA reconstruction: none|spatial|view|view-spatial (Gaussian, 8 seeded samples)")
         ->capture_default_str();
-    app.add_option("--ss", o.supersampling,
+    app.add_option("--ss", f.ss,
                    "supersampling: 1 | 2s (views at twice the resolution) | 2v (twice the views, random "
                    "angles in each view interval), averaged down")
         ->capture_default_str();
@@ -184,20 +172,22 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
             throw UsageError("--views: expected 1..2048, got " + std::to_string(f.views));
         o.views = f.views;
     }
-    if (*f.sizeOpt) {
-        const auto [w, h] = parseSize("--view-size", f.viewSize);
-        o.viewWidth = w;
-        o.viewHeight = h;
-    }
+    lfd::player::SharedFlags shared = f.shared;
+    lfd::player::finishSharedFlags(shared);
+    if (shared.viewSize)
+        std::tie(o.viewWidth, o.viewHeight) = *shared.viewSize;
+    o.displayProfile = shared.displayProfile;
+    o.fps = shared.fps;
+    o.turntablePeriod = shared.turntablePeriod;
+    o.glDebug = shared.glDebug;
+    lfd::player::applySharedFlags(shared, o.rendererOptions);
+    o.reconstruction = lfd::player::parseReconstructionFlag("--aa", f.aa);
+    o.supersampling = lfd::player::parseSupersamplingFlag("--ss", f.ss);
     if (o.frames == 0)
         throw UsageError("--frames: must be at least 1");
     o.framesGiven = bool(*f.framesOpt);
     if (*f.frameOpt)
         o.outputFrame = f.frame;
-    if (!std::isfinite(o.fps) || o.fps <= 0.0)
-        throw UsageError("--fps: must be a positive number");
-    if (!std::isfinite(o.turntablePeriod) || o.turntablePeriod < 0.0)
-        throw UsageError("--turntable-period: must be >= 0");
     lfd::player::LfdprOptions& lfdpr = o.rendererOptions.lfdpr;
     lfdpr.lfdBiasedSampling = !f.noLfdSampling;
     lfdpr.textureSplatting = !f.noTextureSplatting;
@@ -206,27 +196,11 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
     try {
         lfdpr.atomics = lfd::player::parseLfdprAtomics(f.atomics);
         lfdpr.pipeline = lfd::player::parseLfdprPipeline(f.pipeline);
-        lfdpr.workShape = lfd::player::parseLfdprWorkShape(f.lfdprWork);
     } catch (const std::exception& e) {
         throw UsageError(e.what());
     }
-    try {
-        lfd::player::validateGstdOptions(o.rendererOptions.gstd);
-    } catch (const std::exception& e) {
-        throw UsageError(std::string("--gstd-factor: ") + e.what());
-    }
     if (!lfd::player::isKnownRenderer(o.renderer))
         throw UsageError("--renderer: unknown renderer '" + o.renderer + "' (known: " + rendererList() + ")");
-    try {
-        lfd::player::parseReconstruction(o.reconstruction);
-    } catch (const std::exception& e) {
-        throw UsageError(std::string("--aa: ") + e.what());
-    }
-    try {
-        lfd::player::parseSupersampling(o.supersampling);
-    } catch (const std::exception& e) {
-        throw UsageError(std::string("--ss: ") + e.what());
-    }
 }
 
 void validateWindowFlags(PlayOptions& o, const RawFlags& f)
@@ -302,7 +276,7 @@ void validateInputFlags(PlayOptions& o, const RawFlags& f)
         throw UsageError(o.pack.empty() ? "PACK: give a pack file or --quilt-in (see --help)"
                                         : "--quilt-in: give either a pack or --quilt-in, not both");
     if (!o.quiltIn.empty()) {
-        if (*f.viewsOpt || *f.sizeOpt)
+        if (*f.viewsOpt || *f.shared.viewSizeOpt)
             throw UsageError(std::string(*f.viewsOpt ? "--views" : "--view-size") +
                              ": the quilt's layout gives the views with --quilt-in");
         if (!std::isfinite(o.slideSeconds) || o.slideSeconds <= 0.0)
@@ -401,8 +375,8 @@ lfd::player::RunInfo runInfo(lfd::player::PlayerSession& session, const PlayOpti
     info.gpu = c.caps().renderer + " / " + c.caps().version;
     info.profile = profile.name;
     info.pack = session.packName();
-    info.reconstruction = o.reconstruction;
-    info.supersampling = o.supersampling;
+    info.reconstruction = lfd::player::reconstructionName(o.reconstruction);
+    info.supersampling = lfd::player::supersamplingName(o.supersampling);
     info.views = profile.viewCount;
     info.viewWidth = profile.viewWidth;
     info.viewHeight = profile.viewHeight;
@@ -434,6 +408,109 @@ struct PackInput {
     bool present() const { return scene || mapped; }
 };
 
+using StageMap = std::map<std::string, lfd::player::StageTimes>;
+
+// One headless run's state, shared by its steps.
+struct HeadlessRun {
+    const PlayOptions& options;
+    lfd::player::PlayerSession& session;
+    lfd::gl::GlErrorWatch& glErrors;
+    lfd::player::FrameQuality quality;
+    Sequence sequence;
+    PlayOptions single;      // the options of the one-frame outputs (no quilt for a sequence)
+    bool wantOutputs = false;
+    uint32_t outputFrame = 0;
+    double firstFrameMs = -1.0, residentMs = -1.0; // loading figures (README "Streaming")
+    lfd::player::FrameOutputs outputs;
+    lfd::DisplayProfile outputProfile;
+    std::vector<fs::path> written; // removed again if the run fails
+};
+
+// Streaming: one untimed frame as soon as the geometry and the coarsest mips are in (time
+// to first frame), then everything is made resident before the timed frames, so no
+// benchmark times a half-resident scene.
+void measureLoading(HeadlessRun& run, const PackInput& input, const std::string& packName)
+{
+    if (!input.present())
+        return;
+    if (lfd::player::TextureStreamer* streamer = run.session.streamer()) {
+        streamer->untilRenderable();
+        run.session.renderUntimedFrame(0.0);
+        run.firstFrameMs = msSince(input.start);
+        streamer->untilResident();
+    }
+    glFinish();
+    run.residentMs = msSince(input.start);
+    run.glErrors.check("the streamed upload of " + packName);
+}
+
+void readOutputs(HeadlessRun& run, uint32_t frame)
+{
+    run.session.completeLastFrame();
+    run.outputs = run.session.readOutputs(frame);
+    run.outputProfile = run.session.profile();
+}
+
+// Renders F frames, reads the outputs back right after frame K (K after the timed frames:
+// rendered once more, not counted in the stats); a sequence keeps every quilt. Returns the
+// timed frames' stages.
+StageMap renderFrames(HeadlessRun& run, lfd::player::GpuTimer& timer, const PackInput& input)
+{
+    const PlayOptions& options = run.options;
+    for (uint32_t k = 0; k < options.frames; ++k) {
+        run.session.renderFrame(double(k) / options.fps, run.quality);
+        run.glErrors.check("frame " + std::to_string(k));
+        if (k == 0 && run.firstFrameMs < 0.0 && input.present()) {
+            glFinish();
+            run.firstFrameMs = msSince(input.start);
+        }
+        if (k == run.outputFrame && run.wantOutputs)
+            readOutputs(run, k);
+        if (run.sequence.active) {
+            Sequence& sequence = run.sequence;
+            run.session.completeLastFrame();
+            sequence.profile = run.session.profile();
+            sequence.frames.push_back(writeQuiltFrame(sequence.base, sequence.profile, run.session.readOutputs(k), k));
+            if (sequence.tempFolder.empty())
+                run.written.push_back(sequence.frames.back());
+        }
+    }
+    timer.finish();
+    run.session.completeLastFrame(); // the renderer's stats of the last frame
+    StageMap stages = timer.stages();
+    if (run.outputFrame >= options.frames && run.wantOutputs) {
+        run.session.renderFrame(double(run.outputFrame) / options.fps, run.quality);
+        readOutputs(run, run.outputFrame);
+        timer.finish();
+    }
+    return stages;
+}
+
+void printSummary(const HeadlessRun& run, const StageMap& stages)
+{
+    std::string summary = stageSummary(stages);
+    if (!run.session.quiltInput())
+        for (const auto& [name, value] : run.session.renderer().extraStats())
+            if (name == "points")
+                summary += ", " + std::to_string(uint64_t(value)) + " points";
+    const lfd::DisplayProfile& shown = run.session.profile();
+    std::printf("lfd-play: %s%s, %u views of %ux%u, %u frame(s), mean GPU time: %s\n",
+                run.session.rendererName().c_str(), run.quality == lfd::player::FrameQuality::Preview ? " (preview)" : "",
+                shown.viewCount, shown.viewWidth, shown.viewHeight, run.options.frames, summary.c_str());
+}
+
+lfd::player::PlayerSession openSession(const PlayOptions& options, const lfd::DisplayProfile& profile,
+                                       PackInput& input, std::vector<fs::path> quilts)
+{
+    using lfd::player::PlayerSession;
+    const std::string packName = options.pack.filename().string();
+    if (input.mapped)
+        return PlayerSession(options, profile, input.mapped, packName);
+    if (input.scene)
+        return PlayerSession(options, profile, std::move(*input.scene), packName);
+    return PlayerSession(options, profile, std::move(quilts));
+}
+
 int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, PackInput input,
                 std::vector<fs::path> quilts)
 {
@@ -448,105 +525,42 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
     const uint64_t triangles = cpuScene ? cpuScene->triangleCount() : 0;
     const uint64_t drawnTriangles = cpuScene ? cpuScene->drawnTriangleCount() : 0;
     const std::string packName = options.pack.filename().string();
-    PlayerSession session = input.mapped ? PlayerSession(options, profile, input.mapped, packName)
-                            : input.scene ? PlayerSession(options, profile, std::move(*input.scene), packName)
-                                          : PlayerSession(options, profile, std::move(quilts));
+    PlayerSession session = openSession(options, profile, input, std::move(quilts));
     glErrors.check("the upload of " + (input.present() ? packName : std::string("the quilts")));
-    // Loading figures (README "Streaming"). Streaming: one untimed frame as soon as the
-    // geometry and the coarsest mips are in (time to first frame), then everything is
-    // made resident before the timed frames, so no benchmark times a half-resident scene.
-    double firstFrameMs = -1.0, residentMs = -1.0;
-    if (input.present()) {
-        if (TextureStreamer* streamer = session.streamer()) {
-            streamer->untilRenderable();
-            session.renderUntimedFrame(0.0);
-            firstFrameMs = msSince(input.start);
-            streamer->untilResident();
-            glFinish();
-            residentMs = msSince(input.start);
-        } else {
-            glFinish();
-            residentMs = msSince(input.start);
-        }
-        glErrors.check("the streamed upload of " + packName);
-    }
-    const FrameQuality quality =
-        options.preview == PreviewMode::Always ? FrameQuality::Preview : FrameQuality::Full;
-    GpuTimer& timer = quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
 
-    // Render F frames; read the outputs back right after frame K; a sequence keeps every quilt.
-    Sequence sequence = planSequence(options);
-    const uint32_t outputFrame = options.outputFrame.value_or(options.frames - 1);
-    PlayOptions single = options;
-    if (sequence.active)
-        single.quiltOut.clear();
-    const bool wantOutputs = !single.eiaOut.empty() || !single.quiltOut.empty() || !single.viewsOut.empty() ||
-                             !single.viewerOut.empty();
-    std::vector<fs::path> written;
-    FrameOutputs outputs;
-    lfd::DisplayProfile outputProfile = profile;
+    HeadlessRun run{options, session, glErrors,
+                    options.preview == PreviewMode::Always ? FrameQuality::Preview : FrameQuality::Full,
+                    planSequence(options), options};
+    measureLoading(run, input, packName);
+    GpuTimer& timer = run.quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
+    run.outputFrame = options.outputFrame.value_or(options.frames - 1);
+    if (run.sequence.active)
+        run.single.quiltOut.clear();
+    run.wantOutputs = !run.single.eiaOut.empty() || !run.single.quiltOut.empty() || !run.single.viewsOut.empty() ||
+                      !run.single.viewerOut.empty();
+    run.outputProfile = profile;
     try {
-        for (uint32_t k = 0; k < options.frames; ++k) {
-            session.renderFrame(double(k) / options.fps, quality);
-            glErrors.check("frame " + std::to_string(k));
-            if (k == 0 && firstFrameMs < 0.0 && input.present()) {
-                glFinish();
-                firstFrameMs = msSince(input.start);
-            }
-            if (k == outputFrame && wantOutputs) {
-                session.completeLastFrame();
-                outputs = session.readOutputs(k);
-                outputProfile = session.profile();
-            }
-            if (sequence.active) {
-                session.completeLastFrame();
-                sequence.profile = session.profile();
-                sequence.frames.push_back(writeQuiltFrame(sequence.base, sequence.profile, session.readOutputs(k), k));
-                if (sequence.tempFolder.empty())
-                    written.push_back(sequence.frames.back());
-            }
-        }
-        timer.finish();
-        session.completeLastFrame(); // the renderer's stats of the last frame
-        const auto stages = timer.stages(); // timing frames only
-        if (outputFrame >= options.frames && wantOutputs) {
-            // Frame K after the timed frames: rendered once more, not counted in the stats.
-            session.renderFrame(double(outputFrame) / options.fps, quality);
-            session.completeLastFrame();
-            outputs = session.readOutputs(outputFrame);
-            outputProfile = session.profile();
-            timer.finish();
-        }
-
+        const StageMap stages = renderFrames(run, timer, input);
         // Outputs: each file atomic; if one fails, remove the others written by this run.
-        if (wantOutputs)
-            writeFrameOutputs(single, outputProfile, outputs, written);
+        if (run.wantOutputs)
+            writeFrameOutputs(run.single, run.outputProfile, run.outputs, run.written);
         if (!options.statsOut.empty()) {
             RunInfo info = runInfo(session, options, *context, triangles, drawnTriangles);
             info.streaming = input.mapped != nullptr;
-            info.timeToFirstFrameMs = firstFrameMs;
-            info.timeToResidentMs = residentMs;
+            info.timeToFirstFrameMs = run.firstFrameMs;
+            info.timeToResidentMs = run.residentMs;
             writeStats(options.statsOut, info, stages);
-            written.push_back(options.statsOut);
+            run.written.push_back(options.statsOut);
         }
-
-        std::string summary = stageSummary(stages);
-        if (!session.quiltInput())
-            for (const auto& [name, value] : session.renderer().extraStats())
-                if (name == "points")
-                    summary += ", " + std::to_string(uint64_t(value)) + " points";
-        const lfd::DisplayProfile& shown = session.profile();
-        std::printf("lfd-play: %s%s, %u views of %ux%u, %u frame(s), mean GPU time: %s\n",
-                    session.rendererName().c_str(), quality == FrameQuality::Preview ? " (preview)" : "",
-                    shown.viewCount, shown.viewWidth, shown.viewHeight, options.frames, summary.c_str());
+        printSummary(run, stages);
     } catch (...) {
-        for (const auto& path : written)
+        for (const auto& path : run.written)
             fs::remove(path);
-        if (!sequence.tempFolder.empty())
-            fs::remove_all(sequence.tempFolder);
+        if (!run.sequence.tempFolder.empty())
+            fs::remove_all(run.sequence.tempFolder);
         throw;
     }
-    return encodeVideo(options, sequence);
+    return encodeVideo(options, run.sequence);
 }
 
 } // namespace

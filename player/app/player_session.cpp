@@ -1,6 +1,6 @@
 #include "player_session.h"
 
-#include "image_output.h"
+#include "image.h"
 #include "quilt.h"
 #include "simulated_viewer.h"
 
@@ -61,8 +61,8 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
 
 void PlayerSession::applyRenderOptions(const PlayOptions& options)
 {
-    reconstruction_ = parseReconstruction(options.reconstruction);
-    pipeline_->setSupersampling(parseSupersampling(options.supersampling));
+    reconstruction_ = options.reconstruction;
+    pipeline_->setSupersampling(options.supersampling);
     pipeline_->setViewControls(options.controls);
     pipeline_->setPreviewShape(options.previewShape);
     switchRenderer(options.renderer);
@@ -76,7 +76,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
       quilts_(std::make_unique<QuiltSlideshow>(profile, std::move(quilts), options.quiltViews, options.slideSeconds)),
       rendererName_("quilt-in")
 {
-    reconstruction_ = parseReconstruction(options.reconstruction);
+    reconstruction_ = options.reconstruction;
 }
 
 const DisplayProfile& PlayerSession::profile() const
@@ -181,7 +181,7 @@ std::filesystem::path writeQuiltFrame(const std::filesystem::path& base, const D
     const QuiltLayout layout = chooseQuiltLayout(profile);
     const std::vector<uint8_t> quilt = assembleQuilt(layout, outputs.views);
     const std::filesystem::path path = quiltSequenceFileName(base, layout, frame);
-    writeImage(path, quilt.data(), layout.width(), layout.height(), 4);
+    metrics::writeImage(path, quilt.data(), layout.width(), layout.height(), 4);
     return path;
 }
 
@@ -189,14 +189,14 @@ void writeFrameOutputs(const PlayOptions& options, const DisplayProfile& profile
                        const FrameOutputs& outputs, std::vector<std::filesystem::path>& written)
 {
     if (!options.eiaOut.empty()) {
-        writeImage(options.eiaOut, outputs.eia.data(), profile.panelWidth, profile.panelHeight, 4);
+        metrics::writeImage(options.eiaOut, outputs.eia.data(), profile.panelWidth, profile.panelHeight, 4);
         written.push_back(options.eiaOut);
     }
     if (!options.quiltOut.empty()) {
         const QuiltLayout layout = chooseQuiltLayout(profile);
         const std::vector<uint8_t> quilt = assembleQuilt(layout, outputs.views);
         const std::filesystem::path path = quiltFileName(options.quiltOut, layout);
-        writeImage(path, quilt.data(), layout.width(), layout.height(), 4);
+        metrics::writeImage(path, quilt.data(), layout.width(), layout.height(), 4);
         written.push_back(path);
     }
     if (!options.viewsOut.empty()) {
@@ -204,7 +204,7 @@ void writeFrameOutputs(const PlayOptions& options, const DisplayProfile& profile
         for (size_t i = 0; i < outputs.views.size(); ++i) {
             char name[32];
             std::snprintf(name, sizeof(name), "view_%03zu.png", i);
-            writeImage(options.viewsOut / name, outputs.views[i].data(), profile.viewWidth,
+            metrics::writeImage(options.viewsOut / name, outputs.views[i].data(), profile.viewWidth,
                        profile.viewHeight, 4);
             written.push_back(options.viewsOut / name);
         }
@@ -212,7 +212,7 @@ void writeFrameOutputs(const PlayOptions& options, const DisplayProfile& profile
     if (!options.viewerOut.empty()) {
         const double t = options.viewerPosition >= 0.0 ? options.viewerPosition : 0.5 * profile.viewCount;
         const std::vector<uint8_t> seen = simulateViewer(profile, outputs.eia, t);
-        writeImage(options.viewerOut, seen.data(), profile.viewWidth, profile.viewHeight, 4);
+        metrics::writeImage(options.viewerOut, seen.data(), profile.viewWidth, profile.viewHeight, 4);
         written.push_back(options.viewerOut);
     }
 }

@@ -44,8 +44,8 @@ struct PlayOptions {
     std::optional<uint32_t> outputFrame;   // frame whose outputs are written (default: last)
     double fps = 60.0;                     // frame k is at time k / fps
     double turntablePeriod = 10.0;         // seconds per revolution, 0 = still
-    std::string reconstruction = "none";   // --aa: none|spatial|view|view-spatial
-    std::string supersampling = "1";       // --ss: 1|2s|2v
+    Reconstruction reconstruction = Reconstruction::None; // --aa: none|spatial|view|view-spatial
+    Supersampling supersampling = Supersampling::None;    // --ss: 1|2s|2v
     std::filesystem::path eiaOut, quiltOut, viewsOut, statsOut, viewerOut, screenshot;
     std::filesystem::path quiltVideoOut;   // --quilt-video: every frame's quilt encoded by ffmpeg
     double viewerPosition = -1.0;          // simulated viewer t in [0, N); < 0: centre

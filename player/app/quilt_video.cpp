@@ -1,5 +1,7 @@
 #include "quilt_video.h"
 
+#include "atomic_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -119,23 +121,16 @@ void encodeQuiltVideo(const fs::path& pattern, double fps, const fs::path& video
     if (ffmpeg.empty())
         throw VideoError("cannot write " + video.string() +
                          ": ffmpeg is missing (not on PATH; install the Debian package 'ffmpeg')");
-    const std::string tag = ".partial-" + std::to_string(getpid());
-    const fs::path temp = video.parent_path() / ("." + video.filename().string() + tag);
-    const fs::path log = video.parent_path() / ("." + video.filename().string() + tag + ".log");
-    const int status = runProcess(ffmpeg, ffmpegArguments(pattern, fps, temp, container), log);
-    const std::string message = lastLine(log);
-    std::error_code ec;
-    fs::remove(log, ec);
-    if (status != 0) {
-        fs::remove(temp, ec);
-        throw VideoError("ffmpeg failed to write " + video.string() + " (exit " + std::to_string(status) + ")" +
-                         (message.empty() ? "" : ": " + message));
-    }
-    fs::rename(temp, video, ec);
-    if (ec) {
-        fs::remove(temp, ec);
-        throw VideoError("cannot rename the encoded video to " + video.string());
-    }
+    io::replaceFileAtomically(video, [&](const fs::path& temporary) {
+        const fs::path log = temporary.string() + ".log";
+        const int status = runProcess(ffmpeg, ffmpegArguments(pattern, fps, temporary, container), log);
+        const std::string message = lastLine(log);
+        std::error_code ec;
+        fs::remove(log, ec);
+        if (status != 0)
+            throw VideoError("ffmpeg failed to write " + video.string() + " (exit " + std::to_string(status) + ")" +
+                             (message.empty() ? "" : ": " + message));
+    });
 }
 
 } // namespace lfd::player

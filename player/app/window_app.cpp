@@ -4,7 +4,7 @@
 #include "gl_context.h"
 #include "gl_debug_output.h"
 #include "gl_handles.h"
-#include "image_output.h"
+#include "image.h"
 #include "monitor_selection.h"
 #include "quilt.h"
 #include "simulated_viewer.h"
@@ -232,7 +232,7 @@ void saveScreenshot(const std::filesystem::path& path, int w, int h)
     const size_t row = size_t(w) * 4;
     for (int y = 0; y < h; ++y)
         std::memcpy(&image[size_t(y) * row], &glOrder[size_t(h - 1 - y) * row], row);
-    writeImage(path, image.data(), uint32_t(w), uint32_t(h), 4);
+    metrics::writeImage(path, image.data(), uint32_t(w), uint32_t(h), 4);
 }
 
 // Mean of a timer's samples per stage since the last call, remembered so that a quality
@@ -401,7 +401,7 @@ LoopState initialLoopState(PlayerSession& session, const PlayOptions& options)
     // The cycle ends with the current one.
     state.rendererIndex = state.renderers.empty() ? 0 : state.renderers.size() - 1;
     state.reconstructions = reconstructionNames();
-    state.reconstructionIndex = size_t(parseReconstruction(session.options().reconstruction));
+    state.reconstructionIndex = size_t(session.options().reconstruction);
     state.shown = options.show == "quilt"    ? Shown::Quilt
                   : options.show == "view"   ? Shown::SingleView
                   : options.show == "viewer" ? Shown::Viewer

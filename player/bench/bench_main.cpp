@@ -9,6 +9,7 @@
 #include "frame_pipeline.h"
 #include "gl_context.h"
 #include "gl_debug_output.h"
+#include "tool_flags.h"
 
 #include "lfd/display_profile.h"
 #include "lfd/pack.h"
@@ -45,34 +46,29 @@ std::vector<std::string> parseRendererList(const std::string& text)
 std::atomic<bool> gStop{false};
 extern "C" void onSignal(int) { gStop = true; }
 
-// "none,view" -> names checked with `parse`.
+// "none,view" -> the modes, typed once by `parse` (tool_flags.h's --aa / --ss parsers).
 template <class Parse>
-std::vector<std::string> parseModeList(const std::string& flag, const std::string& text, Parse parse)
+auto parseModeList(const std::string& flag, const std::string& text, Parse parse)
 {
     const std::vector<std::string> names = lfd::cli::splitList(text);
     if (names.empty())
         throw UsageError(flag + ": empty list");
-    for (const std::string& n : names) {
-        try {
-            parse(n);
-        } catch (const std::exception& e) {
-            throw UsageError(flag + ": " + e.what());
-        }
-    }
-    return names;
+    std::vector<decltype(parse(flag, text))> modes;
+    for (const std::string& n : names)
+        modes.push_back(parse(flag, n));
+    return modes;
 }
 
 // Raw flag values as CLI11 fills them (options bound straight into BenchOptions are not here).
 struct BenchFlags {
     std::vector<std::string> packs;
-    std::string renderers = "mvr,mvr-layered,lfdpr", viewSize, displayProfile, views, aaList = "none", ssList = "1";
+    std::string renderers = "mvr,mvr-layered,lfdpr", views, aaList = "none", ssList = "1";
     bool variants = false;
-    std::string gstdCache, lfdprWork = "auto";
+    std::string gstdCache;
     bool noGstdCache = false;
     std::string outDir;
-    bool glDebug = false;
+    lfd::player::SharedFlags shared; // the flags lfd-play takes too
     CLI::Option* viewsOpt = nullptr;
-    CLI::Option* sizeOpt = nullptr;
 };
 
 // What the validated flags add to BenchOptions: the view counts and an optional view size.
@@ -97,30 +93,22 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
                  "also time the paper's pipeline (lfdpr-paper) and lfdpr with each innovation "
                  "disabled (lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting, lfdpr-no-pixel-culling, "
                  "lfdpr-no-cell-scaling, lfdpr-no-mv-mipmapping)");
-    app.add_option("--lfdpr-work", flags.lfdprWork,
-                   "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
-                   "short invocations) | cpu (long invocations); the views are the same")
-        ->capture_default_str();
-    app.add_option("--display", flags.displayProfile, "display profile JSON (default: the paper's prototype)");
+    flags.shared.fps = options.fps;
+    flags.shared.turntablePeriod = options.turntablePeriod;
+    flags.shared.gstdFactor = options.rendererOptions.gstd.factor;
+    addSharedFlags(app, flags.shared);
     flags.viewsOpt = app.add_option("--views", flags.views, "number of views (overrides the profile); a "
                                                             "comma-separated list runs the matrix once per view count");
-    flags.sizeOpt = app.add_option("--view-size", flags.viewSize, "view size WxH (overrides the profile)");
     app.add_option("--frames", options.frames, "timed frames per renderer")->capture_default_str();
     app.add_option("--warmup", options.warmup, "untimed frames before them")->capture_default_str();
     app.add_flag("!--sequential", options.interleave,
                  "time each renderer's frames in one block, one renderer after the other (default: the "
                  "renderers take turns frame by frame, so a machine whose speed drifts slows them alike)");
-    app.add_option("--fps", options.fps, "frame k is at time k / fps")->capture_default_str();
-    app.add_option("--turntable-period", options.turntablePeriod, "seconds per turntable revolution (0 = still)")
-        ->capture_default_str();
     app.add_option("--quality-frame", options.qualityFrame, "frame whose views and EIA are compared")
         ->capture_default_str();
     app.add_option("--reference", options.reference,
                    "quality reference renderer (rendered untimed if not in --renderers; gstd is the "
                    "slow gold standard, mvr the fast raster baseline)")
-        ->capture_default_str();
-    app.add_option("--gstd-factor", options.rendererOptions.gstd.factor,
-                   "gstd: sub-views render at this many times the view resolution")
         ->capture_default_str();
     app.add_option("--gstd-cache", flags.gstdCache,
                    "directory caching gstd's quality-frame views (default $XDG_CACHE_HOME/lfdpr/gstd, "
@@ -131,8 +119,6 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
                    "bench.csv, speed_vs_error.svg and PNGs (in DIR itself for one pack and view count, else in "
                    "DIR/<scene>-<N>v/)");
     app.add_flag("--quiet", options.quiet, "no progress lines");
-    app.add_flag("--gl-debug", flags.glDebug,
-                 "debug GL context: print every KHR_debug message (GL errors fail the run either way)");
 }
 
 // --renderers, --lfdpr-variants, --aa, --ss, --reference, --gstd-*: into `options`.
@@ -140,8 +126,8 @@ void validateRendererFlags(const BenchFlags& flags, lfd::player::BenchOptions& o
 {
     using namespace lfd::player;
     options.renderers = parseRendererList(flags.renderers);
-    options.aa = parseModeList("--aa", flags.aaList, lfd::player::parseReconstruction);
-    options.ss = parseModeList("--ss", flags.ssList, lfd::player::parseSupersampling);
+    options.aa = parseModeList("--aa", flags.aaList, lfd::player::parseReconstructionFlag);
+    options.ss = parseModeList("--ss", flags.ssList, lfd::player::parseSupersamplingFlag);
     if (flags.variants)
         for (const std::string& v : lfdprVariantNames())
             if (std::find(options.renderers.begin(), options.renderers.end(), v) == options.renderers.end())
@@ -149,29 +135,19 @@ void validateRendererFlags(const BenchFlags& flags, lfd::player::BenchOptions& o
     if (!isKnownRenderer(options.reference))
         throw UsageError("--reference: unknown renderer '" + options.reference + "' (known: " +
                          joinNames(allRendererNames()) + ")");
-    try {
-        lfd::player::validateGstdOptions(options.rendererOptions.gstd);
-    } catch (const std::exception& e) {
-        throw UsageError(std::string("--gstd-factor: ") + e.what());
-    }
     options.gstdCache = flags.gstdCache;
     options.gstdCacheEnabled = !flags.noGstdCache;
-    try {
-        options.rendererOptions.lfdpr.workShape = parseLfdprWorkShape(flags.lfdprWork);
-    } catch (const std::exception& e) {
-        throw UsageError(e.what());
-    }
 }
 
-// --frames, --fps, --turntable-period: in range.
-void validateTimingFlags(const lfd::player::BenchOptions& options)
+// The flags lfd-play takes too (tool_flags.h), typed, into `options` and `shape`.
+void applyShared(const BenchFlags& flags, lfd::player::BenchOptions& options, MatrixShape& shape)
 {
-    if (options.frames == 0)
-        throw UsageError("--frames: must be at least 1");
-    if (!std::isfinite(options.fps) || options.fps <= 0.0)
-        throw UsageError("--fps: must be a positive number");
-    if (!std::isfinite(options.turntablePeriod) || options.turntablePeriod < 0.0)
-        throw UsageError("--turntable-period: must be >= 0");
+    lfd::player::SharedFlags shared = flags.shared;
+    lfd::player::finishSharedFlags(shared);
+    options.fps = shared.fps;
+    options.turntablePeriod = shared.turntablePeriod;
+    lfd::player::applySharedFlags(shared, options.rendererOptions);
+    shape.size = shared.viewSize;
 }
 
 // --views "24,48" -> {24, 48}; empty when the flag is not given (the profile's count is used).
@@ -211,12 +187,12 @@ void prepareOutDir(const BenchFlags& flags, lfd::player::BenchOptions& options)
 // Step 1: every flag checked (and --out created) before touching pack files or the GPU.
 MatrixShape validateFlags(const BenchFlags& flags, lfd::player::BenchOptions& options)
 {
-    validateRendererFlags(flags, options);
-    validateTimingFlags(options);
     MatrixShape shape;
+    applyShared(flags, options, shape);
+    validateRendererFlags(flags, options);
+    if (options.frames == 0)
+        throw UsageError("--frames: must be at least 1");
     shape.viewCounts = parseViewCounts(flags);
-    if (*flags.sizeOpt)
-        shape.size = lfd::cli::parseSize("--view-size", flags.viewSize);
     prepareOutDir(flags, options);
     return shape;
 }
@@ -224,9 +200,9 @@ MatrixShape validateFlags(const BenchFlags& flags, lfd::player::BenchOptions& op
 // Step 2: the display profile (filling in the default view count); every pack must exist.
 lfd::DisplayProfile loadProfileAndCheckPacks(const BenchFlags& flags, MatrixShape& shape)
 {
-    const lfd::DisplayProfile baseProfile = flags.displayProfile.empty()
+    const lfd::DisplayProfile baseProfile = flags.shared.displayProfile.empty()
                                                 ? lfd::prototypeDisplayProfile()
-                                                : lfd::loadDisplayProfile(flags.displayProfile);
+                                                : lfd::loadDisplayProfile(flags.shared.displayProfile);
     if (shape.viewCounts.empty())
         shape.viewCounts.push_back(baseProfile.viewCount);
     for (const std::string& pack : flags.packs)
@@ -344,8 +320,8 @@ int main(int argc, char** argv)
         const lfd::DisplayProfile baseProfile = loadProfileAndCheckPacks(flags, shape);
 
         // Step 3: one GL context for every renderer and run.
-        std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless(flags.glDebug);
-        lfd::gl::GlErrorWatch glErrors("lfd-bench", flags.glDebug); // messages printed as they arrive
+        std::unique_ptr<lfd::gl::GlContext> context = lfd::gl::GlContext::createHeadless(flags.shared.glDebug);
+        lfd::gl::GlErrorWatch glErrors("lfd-bench", flags.shared.glDebug); // messages printed as they arrive
         prepareContext(*context, options);
 
         const std::vector<BenchReport> reports = runMatrix(options, baseProfile, flags.packs, shape, *context);

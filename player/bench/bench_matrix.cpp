@@ -2,6 +2,7 @@
 
 #include "bench_report.h"
 #include "frame_stages.h"
+#include "atomic_file.h"
 #include "frame_stats.h"
 
 #include <cmath>
@@ -130,8 +131,12 @@ nlohmann::json matrixJson(const std::vector<BenchReport>& reports)
     nlohmann::json runs = nlohmann::json::array();
     for (const BenchReport& rep : reports) {
         nlohmann::json run = benchJson(rep);
-        run["aa"] = rep.options.aa;
-        run["ss"] = rep.options.ss;
+        run["aa"] = nlohmann::json::array();
+        for (const Reconstruction a : rep.options.aa)
+            run["aa"].push_back(reconstructionName(a));
+        run["ss"] = nlohmann::json::array();
+        for (const Supersampling x : rep.options.ss)
+            run["ss"].push_back(supersamplingName(x));
         run["interrupted"] = rep.interrupted;
         const std::vector<bool> front = paretoFront(rep);
         for (size_t i = 0; i < rep.results.size(); ++i) {
@@ -154,76 +159,86 @@ nlohmann::json matrixJson(const std::vector<BenchReport>& reports)
     return j;
 }
 
-std::string matrixTable(const std::vector<BenchReport>& reports)
+namespace {
+
+// The run's settings, from the first report (every report of a matrix shares them).
+void tableHeader(std::ostringstream& s, const std::vector<BenchReport>& reports)
 {
-    std::ostringstream s;
     s << "# lfd-bench matrix\n\n";
-    if (!reports.empty()) {
-        const BenchReport& first = reports.front();
-        s << "GL: " << first.gl << "  \n";
-        s << "Frames: " << first.options.warmup << " warm-up + " << first.options.frames
-          << " timed per configuration (frame k at k/" << first.options.fps << " s, turntable period "
-          << first.options.turntablePeriod << " s); quality at frame " << first.options.qualityFrame << " against "
-          << first.options.reference;
-        if (first.options.reference == "gstd")
-            s << " (factor " << first.options.rendererOptions.gstd.factor << ", "
-              << first.options.rendererOptions.gstd.samples << " samples, 2x views)";
-        s << ".\n\n";
+    if (reports.empty())
+        return;
+    const BenchReport& first = reports.front();
+    s << "GL: " << first.gl << "  \n";
+    s << "Frames: " << first.options.warmup << " warm-up + " << first.options.frames
+      << " timed per configuration (frame k at k/" << first.options.fps << " s, turntable period "
+      << first.options.turntablePeriod << " s); quality at frame " << first.options.qualityFrame << " against "
+      << first.options.reference;
+    if (first.options.reference == "gstd")
+        s << " (factor " << first.options.rendererOptions.gstd.factor << ", "
+          << first.options.rendererOptions.gstd.samples << " samples, 2x views)";
+    s << ".\n\n";
+}
+
+// The timing cells of one result: point generation (points), view generation with the
+// resolve, EIA with the downsample, total (ratio to mvr); "-" where untimed.
+struct TimingCells {
+    std::string pointGen = "-", viewGen = "-", eia = "-", total = "-";
+};
+
+TimingCells timingCells(const BenchReport& rep, const RendererResult& r)
+{
+    TimingCells c;
+    if (!r.timed)
+        return c;
+    if (const double pg = stageMs(r, stage::kPointGeneration); !std::isnan(pg)) {
+        c.pointGen = fmt("%.1f", pg);
+        if (const auto points = r.extraValue("points"))
+            c.pointGen += " (" + count(*points) + ")";
     }
-    s << "Mean GPU ms per stage (on Mesa llvmpipe GPU time is CPU time). *view gen* includes lfdpr's "
-         "per-pixel shading (resolve); *EIA* includes the supersampling downsample. *total* is followed by "
-         "the ratio mvr total / this total (mvr with the same supersampling, no reconstruction; > 1: faster). "
-         "Error against the reference: EIA (centre view in parentheses); *lens* = the simulated viewer's "
-         "image at the centre view position, through the lenses, against the reference's. RMSE 0..255, FLIP "
-         "0..1 (lower is better), SSIM on luma (1 = identical). **Bold**: on the scene's Pareto front of "
-         "total time against EIA RMSE.\n\n";
-    s << "| scene (tris) | views | method | AA | SS | point gen ms (points) | view gen ms | EIA ms | total ms "
-         "(vs mvr) | RMSE | FLIP | SSIM | lens RMSE / FLIP / SSIM |\n";
-    s << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-    for (const BenchReport& rep : reports) {
-        const std::vector<bool> front = paretoFront(rep);
-        const std::string scene = sceneName(rep) + " (" + count(double(rep.drawnTriangles)) + ")";
-        const std::string views = std::to_string(rep.profile.viewCount) + " x " +
-                                  std::to_string(rep.profile.viewWidth) + "x" + std::to_string(rep.profile.viewHeight);
-        for (size_t i = 0; i < rep.results.size(); ++i) {
-            const RendererResult& r = rep.results[i];
-            std::string pointGen = "-", viewGen = "-", eia = "-", total = "-";
-            if (r.timed) {
-                if (const double pg = stageMs(r, stage::kPointGeneration); !std::isnan(pg)) {
-                    pointGen = fmt("%.1f", pg);
-                    if (const auto points = r.extraValue("points"))
-                        pointGen += " (" + count(*points) + ")";
-                }
-                double vg = stageMs(r, stage::kViewGeneration);
-                if (const double rs = stageMs(r, stage::kResolve); !std::isnan(rs))
-                    vg += rs;
-                viewGen = fmt("%.1f", vg);
-                double e = stageMs(r, stage::kEia);
-                if (const double ds = stageMs(r, stage::kDownsample); !std::isnan(ds))
-                    e += ds;
-                eia = fmt("%.1f", e);
-                const double t = stageMs(r, stage::kTotal);
-                total = fmt("%.1f", t);
-                if (const RendererResult* base = rep.mvrBaseline(r); base && t > 0.0)
-                    total += " (" + fmt("%.2f", base->stageMean(std::string(stage::kTotal)) / t) + "x)";
-            }
-            const bool ref = r.name == rep.options.reference && !r.timed;
-            std::string method = r.renderer + (ref ? " (reference)" : "");
-            if (front[i])
-                method = "**" + method + "**";
-            s << "| " << scene << " | " << views << " | " << method << " | " << r.aa << " | " << r.ss << " | "
-              << pointGen << " | " << viewGen << " | " << eia << " | " << total << " | ";
-            if (ref) {
-                s << "- | - | - | - |\n";
-                continue;
-            }
-            s << fmt("%.2f", r.eia.rmse) << " (" << fmt("%.2f", r.centreView.rmse) << ") | "
-              << fmt("%.4f", r.eia.flip) << " (" << fmt("%.4f", r.centreView.flip) << ") | "
-              << fmt("%.4f", r.eia.ssim) << " (" << fmt("%.4f", r.centreView.ssim) << ") | "
-              << fmt("%.2f", r.lens.rmse) << " / " << fmt("%.4f", r.lens.flip) << " / " << fmt("%.4f", r.lens.ssim)
-              << " |\n";
+    double vg = stageMs(r, stage::kViewGeneration);
+    if (const double rs = stageMs(r, stage::kResolve); !std::isnan(rs))
+        vg += rs;
+    c.viewGen = fmt("%.1f", vg);
+    double e = stageMs(r, stage::kEia);
+    if (const double ds = stageMs(r, stage::kDownsample); !std::isnan(ds))
+        e += ds;
+    c.eia = fmt("%.1f", e);
+    const double t = stageMs(r, stage::kTotal);
+    c.total = fmt("%.1f", t);
+    if (const RendererResult* base = rep.mvrBaseline(r); base && t > 0.0)
+        c.total += " (" + fmt("%.2f", base->stageMean(std::string(stage::kTotal)) / t) + "x)";
+    return c;
+}
+
+void tableRows(std::ostringstream& s, const BenchReport& rep)
+{
+    const std::vector<bool> front = paretoFront(rep);
+    const std::string scene = sceneName(rep) + " (" + count(double(rep.drawnTriangles)) + ")";
+    const std::string views = std::to_string(rep.profile.viewCount) + " x " + std::to_string(rep.profile.viewWidth) +
+                              "x" + std::to_string(rep.profile.viewHeight);
+    for (size_t i = 0; i < rep.results.size(); ++i) {
+        const RendererResult& r = rep.results[i];
+        const TimingCells c = timingCells(rep, r);
+        const bool ref = r.name == rep.options.reference && !r.timed;
+        std::string method = r.renderer + (ref ? " (reference)" : "");
+        if (front[i])
+            method = "**" + method + "**";
+        s << "| " << scene << " | " << views << " | " << method << " | " << r.aa << " | " << r.ss << " | "
+          << c.pointGen << " | " << c.viewGen << " | " << c.eia << " | " << c.total << " | ";
+        if (ref) {
+            s << "- | - | - | - |\n";
+            continue;
         }
+        s << fmt("%.2f", r.eia.rmse) << " (" << fmt("%.2f", r.centreView.rmse) << ") | "
+          << fmt("%.4f", r.eia.flip) << " (" << fmt("%.4f", r.centreView.flip) << ") | "
+          << fmt("%.4f", r.eia.ssim) << " (" << fmt("%.4f", r.centreView.ssim) << ") | "
+          << fmt("%.2f", r.lens.rmse) << " / " << fmt("%.4f", r.lens.flip) << " / " << fmt("%.4f", r.lens.ssim)
+          << " |\n";
     }
+}
+
+void paretoSection(std::ostringstream& s, const std::vector<BenchReport>& reports)
+{
     s << "\n## Pareto front (total time against EIA RMSE)\n\n";
     for (const BenchReport& rep : reports) {
         const std::vector<bool> front = paretoFront(rep);
@@ -238,15 +253,36 @@ std::string matrixTable(const std::vector<BenchReport>& reports)
             }
         s << (any ? "" : "none timed") << (rep.interrupted ? " (run interrupted: partial)" : "") << "\n";
     }
+}
+
+} // namespace
+
+std::string matrixTable(const std::vector<BenchReport>& reports)
+{
+    std::ostringstream s;
+    tableHeader(s, reports);
+    s << "Mean GPU ms per stage (on Mesa llvmpipe GPU time is CPU time). *view gen* includes lfdpr's "
+         "per-pixel shading (resolve); *EIA* includes the supersampling downsample. *total* is followed by "
+         "the ratio mvr total / this total (mvr with the same supersampling, no reconstruction; > 1: faster). "
+         "Error against the reference: EIA (centre view in parentheses); *lens* = the simulated viewer's "
+         "image at the centre view position, through the lenses, against the reference's. RMSE 0..255, FLIP "
+         "0..1 (lower is better), SSIM on luma (1 = identical). **Bold**: on the scene's Pareto front of "
+         "total time against EIA RMSE.\n\n";
+    s << "| scene (tris) | views | method | AA | SS | point gen ms (points) | view gen ms | EIA ms | total ms "
+         "(vs mvr) | RMSE | FLIP | SSIM | lens RMSE / FLIP / SSIM |\n";
+    s << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const BenchReport& rep : reports)
+        tableRows(s, rep);
+    paretoSection(s, reports);
     return s.str();
 }
 
 void writeMatrixTables(const fs::path& dir, const std::vector<BenchReport>& reports)
 {
     fs::create_directories(dir);
-    writeTextFileAtomic(dir / "results.csv", matrixCsv(reports));
-    writeTextFileAtomic(dir / "results.json", matrixJson(reports).dump(2) + "\n");
-    writeTextFileAtomic(dir / "table.md", matrixTable(reports));
+    io::writeFileAtomically(dir / "results.csv", matrixCsv(reports));
+    io::writeFileAtomically(dir / "results.json", matrixJson(reports).dump(2) + "\n");
+    io::writeFileAtomically(dir / "table.md", matrixTable(reports));
 }
 
 fs::path chartScriptPath()

@@ -1,8 +1,9 @@
 #include "bench_report.h"
 
 #include "frame_stages.h"
+#include "atomic_file.h"
 #include "frame_stats.h"
-#include "image_output.h"
+#include "image_metrics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -288,93 +289,115 @@ std::string benchCsv(const BenchReport& report)
     return s.str();
 }
 
-std::string speedErrorSvg(const BenchReport& report)
-{
-    // Step 1: the plottable points (timed renderers; the x axis is total GPU ms, log scale
-    // because renderers differ by factors, y is EIA RMSE against the reference).
+namespace {
+
+// The speed-vs-error plot: its points (timed renderers; x is total GPU ms on a log scale,
+// since renderers differ by factors, y is EIA RMSE against the reference) and its axes.
+struct SpeedErrorPlot {
     struct Point {
         std::string name;
         double ms, rmse;
     };
+    static constexpr double W = 720, H = 460, left = 80, right = 40, top = 56, bottom = 64;
+    static constexpr double plotW = W - left - right, plotH = H - top - bottom;
     std::vector<Point> points;
+    double msLo = 1.0, msHi = 10.0, yStep = 1.0, yHi = 1.0;
+
+    double xOf(double ms) const { return left + plotW * std::log(ms / msLo) / std::log(msHi / msLo); }
+    double yOf(double e) const { return top + plotH * (1.0 - e / yHi); }
+};
+
+SpeedErrorPlot speedErrorPlot(const BenchReport& report)
+{
+    SpeedErrorPlot plot;
     for (const RendererResult& r : report.results)
         if (r.timed && r.stageMean(stageKey(stage::kTotal)) > 0.0)
-            points.push_back({r.name, r.stageMean(stageKey(stage::kTotal)), r.eia.rmse});
-
-    constexpr double W = 720, H = 460, left = 80, right = 40, top = 56, bottom = 64;
-    const double plotW = W - left - right, plotH = H - top - bottom;
-    double msLo = 1.0, msHi = 10.0, rmseHi = 1.0;
-    if (!points.empty()) {
-        msLo = msHi = points.front().ms;
-        for (const Point& pt : points) {
-            msLo = std::min(msLo, pt.ms);
-            msHi = std::max(msHi, pt.ms);
+            plot.points.push_back({r.name, r.stageMean(stageKey(stage::kTotal)), r.eia.rmse});
+    double rmseHi = 1.0;
+    if (!plot.points.empty()) {
+        plot.msLo = plot.msHi = plot.points.front().ms;
+        for (const SpeedErrorPlot::Point& pt : plot.points) {
+            plot.msLo = std::min(plot.msLo, pt.ms);
+            plot.msHi = std::max(plot.msHi, pt.ms);
             rmseHi = std::max(rmseHi, pt.rmse);
         }
     }
     // Pad the x range by a factor of 1.5 each way (at least one decade shown).
-    msLo /= 1.5;
-    msHi *= 1.5;
-    if (msHi / msLo < 10.0) {
-        const double grow = std::sqrt(10.0 / (msHi / msLo));
-        msLo /= grow;
-        msHi *= grow;
+    plot.msLo /= 1.5;
+    plot.msHi *= 1.5;
+    if (plot.msHi / plot.msLo < 10.0) {
+        const double grow = std::sqrt(10.0 / (plot.msHi / plot.msLo));
+        plot.msLo /= grow;
+        plot.msHi *= grow;
     }
-    const double yStep = niceStep(rmseHi * 1.1, 5);
-    const double yHi = std::ceil(rmseHi * 1.1 / yStep) * yStep;
-    auto xOf = [&](double ms) { return left + plotW * std::log(ms / msLo) / std::log(msHi / msLo); };
-    auto yOf = [&](double e) { return top + plotH * (1.0 - e / yHi); };
+    plot.yStep = niceStep(rmseHi * 1.1, 5);
+    plot.yHi = std::ceil(rmseHi * 1.1 / plot.yStep) * plot.yStep;
+    return plot;
+}
 
-    std::ostringstream s;
+void svgTitle(std::ostringstream& s, const BenchReport& report)
+{
+    using P = SpeedErrorPlot;
     char buf[512];
     std::snprintf(buf, sizeof(buf),
                   "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\" "
                   "font-family=\"sans-serif\" font-size=\"12\">\n",
-                  W, H, W, H);
+                  P::W, P::H, P::W, P::H);
     s << buf << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     const DisplayProfile& p = report.profile;
-    s << "<text x=\"" << W / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
+    s << "<text x=\"" << P::W / 2 << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
       << xmlEscape(report.packName) << ": speed vs error</text>\n";
-    s << "<text x=\"" << W / 2 << "\" y=\"40\" text-anchor=\"middle\" fill=\"#555\">"
+    s << "<text x=\"" << P::W / 2 << "\" y=\"40\" text-anchor=\"middle\" fill=\"#555\">"
       << xmlEscape(std::to_string(p.viewCount) + " views of " + std::to_string(p.viewWidth) + "x" +
                    std::to_string(p.viewHeight) + ", " + std::to_string(report.options.frames) +
                    " timed frames, error against " + report.options.reference)
       << "</text>\n";
+}
 
-    // Step 2: grid and ticks.
-    for (double t : logTicks(msLo, msHi)) {
+void svgGrid(std::ostringstream& s, const SpeedErrorPlot& plot)
+{
+    using P = SpeedErrorPlot;
+    char buf[512];
+    for (double t : logTicks(plot.msLo, plot.msHi)) {
         std::snprintf(buf, sizeof(buf),
                       "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n"
                       "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">%s</text>\n",
-                      xOf(t), top, xOf(t), top + plotH, xOf(t), top + plotH + 18, tickLabel(t).c_str());
+                      plot.xOf(t), P::top, plot.xOf(t), P::top + P::plotH, plot.xOf(t), P::top + P::plotH + 18,
+                      tickLabel(t).c_str());
         s << buf;
     }
-    for (double e = 0.0; e <= yHi + 1e-9; e += yStep) {
+    for (double e = 0.0; e <= plot.yHi + 1e-9; e += plot.yStep) {
         std::snprintf(buf, sizeof(buf),
                       "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ddd\"/>\n"
                       "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"end\">%s</text>\n",
-                      left, yOf(e), left + plotW, yOf(e), left - 8, yOf(e) + 4, tickLabel(e).c_str());
+                      P::left, plot.yOf(e), P::left + P::plotW, plot.yOf(e), P::left - 8, plot.yOf(e) + 4,
+                      tickLabel(e).c_str());
         s << buf;
     }
     std::snprintf(buf, sizeof(buf),
                   "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"none\" stroke=\"#333\"/>\n"
                   "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"middle\">total GPU time per frame, ms (log scale)</text>\n"
                   "<text transform=\"translate(%.1f %.1f) rotate(-90)\" text-anchor=\"middle\">EIA RMSE (0..255)</text>\n",
-                  left, top, plotW, plotH, left + plotW / 2, H - 18, 22.0, top + plotH / 2);
+                  P::left, P::top, P::plotW, P::plotH, P::left + P::plotW / 2, P::H - 18, 22.0, P::top + P::plotH / 2);
     s << buf;
+}
 
-    // Step 3: one labelled point per renderer. Labels sit above their point, every second
-    // one a line higher so close points stay readable, below it near the top edge, and
-    // left of it near the right edge (about 6.5 px per character at 12 px).
+// One labelled point per renderer. Labels sit above their point, every second one a line
+// higher so close points stay readable, below it near the top edge, and left of it near
+// the right edge (about 6.5 px per character at 12 px).
+void svgPoints(std::ostringstream& s, const SpeedErrorPlot& plot)
+{
+    using P = SpeedErrorPlot;
+    char buf[512];
     const char* colours[] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2"};
-    for (size_t i = 0; i < points.size(); ++i) {
-        const Point& pt = points[i];
-        const double x = xOf(pt.ms), y = yOf(pt.rmse);
+    for (size_t i = 0; i < plot.points.size(); ++i) {
+        const P::Point& pt = plot.points[i];
+        const double x = plot.xOf(pt.ms), y = plot.yOf(pt.rmse);
         const std::string label = pt.name + format(" (%.1f ms, ", pt.ms) + format("%.2f)", pt.rmse);
         double labelY = y - 8.0 - 14.0 * double(i % 2);
-        if (labelY < top + 12.0)
+        if (labelY < P::top + 12.0)
             labelY = y + 16.0 + 14.0 * double(i % 2);
-        const bool leftOfPoint = x + 8.0 + 6.5 * double(label.size()) > W - 4.0;
+        const bool leftOfPoint = x + 8.0 + 6.5 * double(label.size()) > P::W - 4.0;
         std::snprintf(buf, sizeof(buf),
                       "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"5\" fill=\"%s\"/>\n"
                       "<text x=\"%.1f\" y=\"%.1f\" text-anchor=\"%s\" fill=\"%s\">",
@@ -382,8 +405,19 @@ std::string speedErrorSvg(const BenchReport& report)
                       leftOfPoint ? "end" : "start", colours[i % 7]);
         s << buf << xmlEscape(label) << "</text>\n";
     }
-    if (points.empty())
-        s << "<text x=\"" << W / 2 << "\" y=\"" << H / 2 << "\" text-anchor=\"middle\">no timed renderers</text>\n";
+    if (plot.points.empty())
+        s << "<text x=\"" << P::W / 2 << "\" y=\"" << P::H / 2 << "\" text-anchor=\"middle\">no timed renderers</text>\n";
+}
+
+} // namespace
+
+std::string speedErrorSvg(const BenchReport& report)
+{
+    const SpeedErrorPlot plot = speedErrorPlot(report);
+    std::ostringstream s;
+    svgTitle(s, report);
+    svgGrid(s, plot);
+    svgPoints(s, plot);
     s << "</svg>\n";
     return s.str();
 }
@@ -403,22 +437,22 @@ std::vector<fs::path> writeBenchOutputs(const fs::path& dir, const BenchReport& 
             if (it == images.end())
                 continue;
             const FrameImages& img = it->second;
-            writeImage(dir / (r.name + "_eia.png"), img.eia.data(), p.panelWidth, p.panelHeight, 4);
+            metrics::writeImage(dir / (r.name + "_eia.png"), img.eia.data(), p.panelWidth, p.panelHeight, 4);
             written.push_back(dir / (r.name + "_eia.png"));
-            writeImage(dir / (r.name + "_view_centre.png"), img.centre.data(), p.viewWidth, p.viewHeight, 4);
+            metrics::writeImage(dir / (r.name + "_view_centre.png"), img.centre.data(), p.viewWidth, p.viewHeight, 4);
             written.push_back(dir / (r.name + "_view_centre.png"));
             if (reference && r.name != report.options.reference) {
-                const Image a{p.panelWidth, p.panelHeight, 4, img.eia};
-                const Image b{p.panelWidth, p.panelHeight, 4, reference->eia};
-                writeDiffImage(dir / (r.name + "_diff_eia.png"), a, b, 4.0f);
+                const metrics::Image a{p.panelWidth, p.panelHeight, 4, img.eia};
+                const metrics::Image b{p.panelWidth, p.panelHeight, 4, reference->eia};
+                metrics::writeDiffImage(dir / (r.name + "_diff_eia.png"), a, b, 4.0f);
                 written.push_back(dir / (r.name + "_diff_eia.png"));
             }
         }
-        writeTextFileAtomic(dir / "bench.csv", benchCsv(report));
+        io::writeFileAtomically(dir / "bench.csv", benchCsv(report));
         written.push_back(dir / "bench.csv");
-        writeTextFileAtomic(dir / "speed_vs_error.svg", speedErrorSvg(report));
+        io::writeFileAtomically(dir / "speed_vs_error.svg", speedErrorSvg(report));
         written.push_back(dir / "speed_vs_error.svg");
-        writeTextFileAtomic(dir / "bench.json", benchJson(report).dump(2) + "\n");
+        io::writeFileAtomically(dir / "bench.json", benchJson(report).dump(2) + "\n");
         written.push_back(dir / "bench.json");
     } catch (...) {
         for (const fs::path& path : written) {

@@ -6,12 +6,10 @@
 #include "frame_pipeline.h"
 #include "frame_stages.h"
 #include "gstd_cache.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "simulated_viewer.h"
 
 #include "lfd/framing.h"
-
-#include "image_metrics.h"
 
 #include <epoxy/gl.h>
 
@@ -29,8 +27,8 @@ namespace lfd::player {
 namespace {
 
 struct CapturedFrame {
-    std::vector<Image> views; // image order
-    Image eia;
+    std::vector<metrics::Image> views; // image order
+    metrics::Image eia;
 };
 
 CapturedFrame capture(const FramePipeline& pipeline)
@@ -45,24 +43,18 @@ CapturedFrame capture(const FramePipeline& pipeline)
     return out;
 }
 
-Quality compare(const Image& a, const Image& reference)
+Quality compare(const metrics::Image& a, const metrics::Image& reference)
 {
-    const auto rgb = [](const Image& image) {
-        return metrics::rgbFromPixels8(image.pixels.data(), int(image.width), int(image.height),
-                                       int(image.channels));
-    };
-    return {rmse(a, reference), psnr(a, reference), ssimLuma(a, reference),
-            metrics::flip(rgb(reference), rgb(a))};
-}
-
-double psnrFromRmse(double e)
-{
-    return e == 0.0 ? std::numeric_limits<double>::infinity() : 20.0 * std::log10(255.0 / e);
+    const metrics::RgbImage test = metrics::rgbFromImage(a), ref = metrics::rgbFromImage(reference);
+    const double rmse = metrics::rmse(ref, test);
+    return {rmse, metrics::psnrFromRmse(rmse), metrics::ssim(ref, test), metrics::flip(ref, test)};
 }
 
 struct Config {
-    std::string renderer, aa, ss;
-    std::string name() const { return configName(renderer, aa, ss); }
+    std::string renderer;
+    Reconstruction aa = Reconstruction::None;
+    Supersampling ss = Supersampling::None;
+    std::string name() const { return configName(renderer, reconstructionName(aa), supersamplingName(ss)); }
 };
 
 // Configuration lists and ordering.
@@ -85,7 +77,7 @@ struct BenchRun {
     std::optional<GstdCache> gstdCache;
     std::string gstdKey;
     CapturedFrame reference;
-    Image referenceLens;
+    metrics::Image referenceLens;
     std::vector<RendererResult> results;
     BenchReport& report;
     // The configurations timed round-robin (timeRoundRobin), by name: their stages and
@@ -138,20 +130,16 @@ ConfigPlan planConfigs(const BenchOptions& options)
 {
     if (options.aa.empty() || options.ss.empty())
         throw std::invalid_argument("aa, ss: the lists must not be empty");
-    for (const std::string& a : options.aa)
-        parseReconstruction(a);
-    for (const std::string& x : options.ss)
-        parseSupersampling(x);
     ConfigPlan plan;
     for (const std::string& r : options.renderers)
-        for (const std::string& x : options.ss)
-            for (const std::string& a : options.aa)
+        for (const Supersampling x : options.ss)
+            for (const Reconstruction a : options.aa)
                 plan.configs.push_back({r, a, x});
     const std::string referenceName = options.reference;
     plan.referenceTimed = std::any_of(plan.configs.begin(), plan.configs.end(), [&](const Config& c) {
         return c.name() == referenceName;
     });
-    plan.order.push_back({options.reference, "none", "1"});
+    plan.order.push_back({options.reference, Reconstruction::None, Supersampling::None});
     for (const Config& c : plan.configs)
         if (c.name() != referenceName)
             plan.order.push_back(c);
@@ -249,11 +237,11 @@ bool timeFrames(BenchRun& run, Renderer& renderer, Reconstruction aa, RendererRe
 bool timeRoundRobin(BenchRun& run)
 {
     const BenchOptions& options = run.options;
-    std::vector<std::string> modes; // supersampling modes in run order (one target size at a time)
+    std::vector<Supersampling> modes; // supersampling modes in run order (one target size at a time)
     for (const Config& c : run.plan.order)
         if (std::find(modes.begin(), modes.end(), c.ss) == modes.end())
             modes.push_back(c.ss);
-    for (const std::string& mode : modes) {
+    for (const Supersampling mode : modes) {
         struct Turn {
             Config config;
             Reconstruction aa;
@@ -263,13 +251,13 @@ bool timeRoundRobin(BenchRun& run)
         std::vector<Turn> turns;
         for (const Config& c : run.plan.order)
             if (c.ss == mode && (c.name() != options.reference || run.plan.referenceTimed))
-                turns.push_back({c, parseReconstruction(c.aa), createRenderer(c.renderer, options.rendererOptions),
+                turns.push_back({c, c.aa, createRenderer(c.renderer, options.rendererOptions),
                                  std::make_unique<GpuTimer>()});
         if (turns.empty())
             continue;
-        run.pipeline.setSupersampling(parseSupersampling(mode));
+        run.pipeline.setSupersampling(mode);
         if (!options.quiet)
-            progressLine(run) << "--ss " << mode << ": " << turns.size()
+            progressLine(run) << "--ss " << supersamplingName(mode) << ": " << turns.size()
                               << " configuration(s) taking turns: warm-up " << options.warmup << " frame(s), then "
                               << options.frames << " timed frame(s) each" << std::endl;
         GpuTimer warmTimer;
@@ -282,7 +270,7 @@ bool timeRoundRobin(BenchRun& run)
                 run.pipeline.renderFrame(*t.renderer, double(k) / options.fps, *t.timer, t.aa);
         if (stopRequested(options))
             return false;
-        gl::checkGlError("timing --ss " + mode);
+        gl::checkGlError("timing --ss " + supersamplingName(mode));
         for (Turn& t : turns) {
             t.timer->finish();
             BenchRun::Timed& timed = run.roundRobin[t.config.name()];
@@ -366,12 +354,12 @@ Quality compareAllViews(const CapturedFrame& frame, const CapturedFrame& referen
 {
     double mse = 0.0, ssim = 0.0;
     for (size_t v = 0; v < frame.views.size(); ++v) {
-        const double e = rmse(frame.views[v], reference.views[v]);
+        const double e = metrics::rmse(frame.views[v], reference.views[v]);
         mse += e * e;
-        ssim += ssimLuma(frame.views[v], reference.views[v]);
+        ssim += metrics::ssim(frame.views[v], reference.views[v]);
     }
     const double n = double(frame.views.size());
-    return {std::sqrt(mse / n), psnrFromRmse(std::sqrt(mse / n)), ssim / n, std::numeric_limits<double>::quiet_NaN()};
+    return {std::sqrt(mse / n), metrics::psnrFromRmse(std::sqrt(mse / n)), ssim / n, std::numeric_limits<double>::quiet_NaN()};
 }
 
 // The captured frame's quality against the reference; configuration 0 is the reference
@@ -381,7 +369,7 @@ void compareWithReference(BenchRun& run, size_t i, CapturedFrame& frame, Rendere
     const DisplayProfile& profile = run.profile;
     // Through the lens: what an eye at the centre view position sees of this EIA.
     const double eyePosition = 0.5 * double(profile.viewCount);
-    const Image lens{profile.viewWidth, profile.viewHeight, 4,
+    const metrics::Image lens{profile.viewWidth, profile.viewHeight, 4,
                      simulateViewer(profile, frame.eia.pixels, eyePosition)};
     if (i == 0) {
         // The reference against itself: identical.
@@ -412,14 +400,14 @@ bool runConfig(BenchRun& run, size_t i)
     const BenchOptions& options = run.options;
     const Config& config = run.plan.order[i];
     const std::string name = config.name();
-    const Reconstruction aa = parseReconstruction(config.aa);
-    run.pipeline.setSupersampling(parseSupersampling(config.ss));
+    const Reconstruction aa = config.aa;
+    run.pipeline.setSupersampling(config.ss);
     const Clock::time_point start = Clock::now();
     RendererResult result;
     result.name = name;
     result.renderer = config.renderer;
-    result.aa = config.aa;
-    result.ss = config.ss;
+    result.aa = reconstructionName(config.aa);
+    result.ss = supersamplingName(config.ss);
     result.timed = name != options.reference || run.plan.referenceTimed;
     const Say say = progressFor(run, i, name);
     std::unique_ptr<Renderer> renderer;

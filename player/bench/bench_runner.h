@@ -6,6 +6,8 @@
 // Speed and error are reported together (bench_report.h formats them).
 #pragma once
 
+#include "eia_builder.h"    // Reconstruction
+#include "frame_pipeline.h" // Supersampling
 #include "gpu_timer.h"
 #include "renderer_registry.h"
 
@@ -50,8 +52,8 @@ struct BenchOptions {
     // The matrix (paper section 5, Tables 1 and 2): every renderer runs with every
     // reconstruction (--aa) and supersampling (--ss) listed; the reference runs once, with
     // neither. A configuration other than (none, 1) is named configName(...).
-    std::vector<std::string> aa{"none"};
-    std::vector<std::string> ss{"1"};
+    std::vector<Reconstruction> aa{Reconstruction::None};
+    std::vector<Supersampling> ss{Supersampling::None};
     // Called after each finished configuration with the report so far (incremental,
     // interrupt-safe outputs); checked before each configuration and frame: true stops
     // the run, keeping what finished.
@@ -62,7 +64,7 @@ struct BenchOptions {
 // "lfdpr" for (lfdpr, none, 1), else e.g. "lfdpr+aa-view-spatial+ss-2v".
 std::string configName(const std::string& renderer, const std::string& aa, const std::string& ss);
 
-// Quality of one image set against the reference's (image_output.h metrics).
+// Quality of one image set against the reference's (image_metrics.h).
 struct Quality {
     double rmse = 0.0; // 0..255
     double psnr = 0.0; // dB, +inf when identical

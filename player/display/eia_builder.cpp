@@ -6,6 +6,8 @@
 // arithmetic step by step (within one 8-bit level, see eia_builder.h).
 #include "eia_builder.h"
 
+#include "eia_bindings_gpu.h"
+
 #include "frame_stages.h"
 #include "gl_context.h"
 #include "gpu_timer.h"
@@ -74,13 +76,10 @@ uint8_t encodeSrgb(float linear) {
 // GLSL mix(x, y, a) = x * (1 - a) + y * a.
 inline float mixf(float x, float y, float a) { return x * (1.0f - a) + y * a; }
 
-GLint uniformLocation(GLuint program, const char* name) {
-    const GLint location = glGetUniformLocation(program, name);
-    if (location < 0)
-        throw gl::GlError(std::string("shaders/eia_construct.comp: uniform '") + name +
-                          "' not found (removed or optimised out)");
-    return location;
-}
+namespace eb = eia_bindings;
+static_assert(uint32_t(Reconstruction::None) == eb::kModeNone && uint32_t(Reconstruction::Spatial) == eb::kModeSpatial &&
+              uint32_t(Reconstruction::View) == eb::kModeView &&
+              uint32_t(Reconstruction::ViewSpatial) == eb::kModeViewSpatial);
 
 } // namespace
 
@@ -162,48 +161,41 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
                                     "' needs " + std::to_string(profile_.viewCount));
     const SubpixelMapping& m = profile_.mapping;
 
-    // Step 1: the mode's program and its uniforms (looked up by name, so nothing is
-    // mirrored by hand).
+    // Step 1: the mode's program and its uniforms (locations from eia_bindings.glsl).
     const unsigned prog = program(mode);
     glUseProgram(prog);
-    glUniform2ui(uniformLocation(prog, "panelSize"), profile_.panelWidth, profile_.panelHeight);
-    glUniform2ui(uniformLocation(prog, "viewSize"), views.width(), views.height());
-    glUniform1ui(uniformLocation(prog, "viewCount"), profile_.viewCount);
-    glUniform1d(uniformLocation(prog, "perSubpixel"), m.perSubpixel);
-    glUniform1d(uniformLocation(prog, "perRow"), m.perRow);
-    glUniform1d(uniformLocation(prog, "phaseOffset"), m.offset);
-    glUniform1i(uniformLocation(prog, "invertPhase"), m.invert ? 1 : 0);
-    glUniform1i(uniformLocation(prog, "subpixelsBgr"),
-                profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
+    glUniform2ui(eb::kLocPanelSize, profile_.panelWidth, profile_.panelHeight);
+    glUniform2ui(eb::kLocViewSize, views.width(), views.height());
+    glUniform1ui(eb::kLocViewCount, profile_.viewCount);
+    glUniform1d(eb::kLocPerSubpixel, m.perSubpixel);
+    glUniform1d(eb::kLocPerRow, m.perRow);
+    glUniform1d(eb::kLocPhaseOffset, m.offset);
+    glUniform1i(eb::kLocInvertPhase, m.invert ? 1 : 0);
+    glUniform1i(eb::kLocSubpixelsBgr, profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
     if (mode != Reconstruction::None) {
         const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed_);
-        glUniform3fv(uniformLocation(prog, "samples"), GLsizei(samples.size()), &samples[0].x);
-        glUniform1fv(uniformLocation(prog, "linearFromByte"), 256, linearFromByte().data());
+        glUniform3fv(eb::kLocSamples, GLsizei(samples.size()), &samples[0].x);
+        glUniform1fv(eb::kLocLinearFromByte, 256, linearFromByte().data());
     }
 
-    // Step 2: inputs and output on the units the shader declares. A nearest-filter sampler
-    // object keeps the view array complete whatever its own filter state (texelFetch does
-    // not filter, but an incomplete texture would read as zero).
-    GLint textureUnit = 0, imageUnit = 0;
-    glGetUniformiv(prog, uniformLocation(prog, "views"), &textureUnit);
-    glGetUniformiv(prog, uniformLocation(prog, "eia"), &imageUnit);
-    glBindTextureUnit(GLuint(textureUnit), views.colorArray());
-    glBindSampler(GLuint(textureUnit), nearest_);
-    glBindImageTexture(GLuint(imageUnit), eia_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    // Step 2: inputs and output on the shader's units. A nearest-filter sampler object
+    // keeps the view array complete whatever its own filter state (texelFetch does not
+    // filter, but an incomplete texture would read as zero).
+    glBindTextureUnit(eb::kUnitViews, views.colorArray());
+    glBindSampler(eb::kUnitViews, nearest_);
+    glBindImageTexture(eb::kImageEia, eia_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
 
     // Step 3: one invocation per panel pixel.
-    GLint localSize[3] = {1, 1, 1};
-    glGetProgramiv(prog, GL_COMPUTE_WORK_GROUP_SIZE, localSize);
     timer.begin(stage::kEia);
-    glDispatchCompute((profile_.panelWidth + GLuint(localSize[0]) - 1) / GLuint(localSize[0]),
-                      (profile_.panelHeight + GLuint(localSize[1]) - 1) / GLuint(localSize[1]), 1);
+    glDispatchCompute((profile_.panelWidth + eb::kLocalSize - 1) / eb::kLocalSize,
+                      (profile_.panelHeight + eb::kLocalSize - 1) / eb::kLocalSize, 1);
     timer.end();
     // Later consumers: texture reads (display, quilt), readback, blits.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 
-    glBindSampler(GLuint(textureUnit), 0);
-    glBindImageTexture(GLuint(imageUnit), 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindSampler(eb::kUnitViews, 0);
+    glBindImageTexture(eb::kImageEia, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glUseProgram(0);
 }
 
@@ -223,12 +215,11 @@ std::vector<uint8_t> EiaBuilder::read() const {
     return image;
 }
 
-std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
-                                 const std::vector<std::vector<uint8_t>>& views,
-                                 uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode,
-                                 uint64_t seed) {
-    const uint32_t W = profile.panelWidth, H = profile.panelHeight;
-    if (W == 0 || H == 0 || profile.viewCount == 0)
+namespace {
+
+void requireEiaInputs(const DisplayProfile& profile, const std::vector<std::vector<uint8_t>>& views,
+                      uint32_t viewWidth, uint32_t viewHeight) {
+    if (profile.panelWidth == 0 || profile.panelHeight == 0 || profile.viewCount == 0)
         throw std::invalid_argument("EIA: display profile '" + profile.name +
                                     "' has an empty panel or no views");
     if (views.size() != profile.viewCount)
@@ -243,55 +234,64 @@ std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
                                         std::to_string(viewBytes) + " (" +
                                         std::to_string(viewWidth) + "x" +
                                         std::to_string(viewHeight) + " RGBA8)");
+}
 
+// The filtered modes, step for step as eia_construct.comp's filtered().
+void filteredEiaCpu(const DisplayProfile& profile, const std::vector<std::vector<uint8_t>>& views,
+                    uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode, uint64_t seed,
+                    std::vector<uint8_t>& eia) {
+    const uint32_t W = profile.panelWidth, H = profile.panelHeight;
     const bool bgr = profile.subpixelOrder == SubpixelOrder::BGR;
-    std::vector<uint8_t> eia(size_t(W) * H * 4);
-    if (mode != Reconstruction::None) {
-        // The filtered modes, step for step as eia_construct.comp's filtered().
-        const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed);
-        const std::array<float, 256>& linear = linearFromByte();
-        const uint32_t N = profile.viewCount;
-        auto viewAt = [&](double c) { return uint32_t(std::clamp(std::floor(c), 0.0, double(N - 1))); };
-        auto texel = [&](int x, int y, uint32_t view, uint32_t channel) {
-            x = std::clamp(x, 0, int(viewWidth) - 1);
-            y = std::clamp(y, 0, int(viewHeight) - 1);
-            return linear[views[view][(size_t(y) * viewWidth + size_t(x)) * 4 + channel]];
-        };
-        for (uint32_t l = 0; l < H; ++l) {
-            const int imageRow = int(viewRowUnder(l, H, viewHeight));
-            const float py = float((2u * l + 1u) * viewHeight) / float(2u * H);
-            for (uint32_t x = 0; x < W; ++x) {
-                uint8_t* out = &eia[(size_t(l) * W + x) * 4];
-                for (uint32_t i = 0; i < 3; ++i) {
-                    const uint32_t k = 3 * x + i;
-                    const uint32_t channel = bgr ? 2 - i : i;
-                    const double c = subpixelPhase(profile, k, l) * double(N);
-                    const float px = float((2u * k + 1u) * viewWidth) / float(6u * W);
-                    const int column = int(viewColumnUnder(k, W, viewWidth));
-                    float sum = 0.0f;
-                    for (const glm::vec3& o : samples) {
-                        const uint32_t view = mode == Reconstruction::Spatial ? viewAt(c) : viewAt(c + double(o.z));
-                        if (mode == Reconstruction::View) {
-                            sum += texel(column, imageRow, view, channel);
-                            continue;
-                        }
-                        // Bilinear in linear light at (px, py) + (o.x, o.y).
-                        const float fx = (px + o.x) - 0.5f, fy = (py + o.y) - 0.5f;
-                        const float bx = std::floor(fx), by = std::floor(fy);
-                        const float ax = fx - bx, ay = fy - by;
-                        const int x0 = int(bx), y0 = int(by);
-                        const float top = mixf(texel(x0, y0, view, channel), texel(x0 + 1, y0, view, channel), ax);
-                        const float bottom =
-                            mixf(texel(x0, y0 + 1, view, channel), texel(x0 + 1, y0 + 1, view, channel), ax);
-                        sum += mixf(top, bottom, ay);
+    const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed);
+    const std::array<float, 256>& linear = linearFromByte();
+    const uint32_t N = profile.viewCount;
+    auto viewAt = [&](double c) { return uint32_t(std::clamp(std::floor(c), 0.0, double(N - 1))); };
+    auto texel = [&](int x, int y, uint32_t view, uint32_t channel) {
+        x = std::clamp(x, 0, int(viewWidth) - 1);
+        y = std::clamp(y, 0, int(viewHeight) - 1);
+        return linear[views[view][(size_t(y) * viewWidth + size_t(x)) * 4 + channel]];
+    };
+    for (uint32_t l = 0; l < H; ++l) {
+        const int imageRow = int(viewRowUnder(l, H, viewHeight));
+        const float py = float((2u * l + 1u) * viewHeight) / float(2u * H);
+        for (uint32_t x = 0; x < W; ++x) {
+            uint8_t* out = &eia[(size_t(l) * W + x) * 4];
+            for (uint32_t i = 0; i < 3; ++i) {
+                const uint32_t k = 3 * x + i;
+                const uint32_t channel = bgr ? 2 - i : i;
+                const double c = subpixelPhase(profile, k, l) * double(N);
+                const float px = float((2u * k + 1u) * viewWidth) / float(6u * W);
+                const int column = int(viewColumnUnder(k, W, viewWidth));
+                float sum = 0.0f;
+                for (const glm::vec3& o : samples) {
+                    const uint32_t view = mode == Reconstruction::Spatial ? viewAt(c) : viewAt(c + double(o.z));
+                    if (mode == Reconstruction::View) {
+                        sum += texel(column, imageRow, view, channel);
+                        continue;
                     }
-                    out[channel] = encodeSrgb(sum / float(ReconstructionFilter::kSamples));
+                    // Bilinear in linear light at (px, py) + (o.x, o.y).
+                    const float fx = (px + o.x) - 0.5f, fy = (py + o.y) - 0.5f;
+                    const float bx = std::floor(fx), by = std::floor(fy);
+                    const float ax = fx - bx, ay = fy - by;
+                    const int x0 = int(bx), y0 = int(by);
+                    const float top = mixf(texel(x0, y0, view, channel), texel(x0 + 1, y0, view, channel), ax);
+                    const float bottom =
+                        mixf(texel(x0, y0 + 1, view, channel), texel(x0 + 1, y0 + 1, view, channel), ax);
+                    sum += mixf(top, bottom, ay);
                 }
-                out[3] = 255;
+                out[channel] = encodeSrgb(sum / float(ReconstructionFilter::kSamples));
             }
+            out[3] = 255;
         }
-        return eia;
     }
+}
+
+// Subpixel k = 3x + i shows channel i (RGB) or 2 - i (BGR) of view floor(phase * N) at its
+// own screen position.
+void nearestEiaCpu(const DisplayProfile& profile, const std::vector<std::vector<uint8_t>>& views,
+                   uint32_t viewWidth, uint32_t viewHeight, std::vector<uint8_t>& eia) {
+    const uint32_t W = profile.panelWidth, H = profile.panelHeight;
+    const bool bgr = profile.subpixelOrder == SubpixelOrder::BGR;
     for (uint32_t l = 0; l < H; ++l) {
         const uint32_t viewRow = viewRowUnder(l, H, viewHeight);
         for (uint32_t x = 0; x < W; ++x) {
@@ -308,6 +308,20 @@ std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
             out[3] = 255;
         }
     }
+}
+
+} // namespace
+
+std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
+                                 const std::vector<std::vector<uint8_t>>& views,
+                                 uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode,
+                                 uint64_t seed) {
+    requireEiaInputs(profile, views, viewWidth, viewHeight);
+    std::vector<uint8_t> eia(size_t(profile.panelWidth) * profile.panelHeight * 4);
+    if (mode != Reconstruction::None)
+        filteredEiaCpu(profile, views, viewWidth, viewHeight, mode, seed, eia);
+    else
+        nearestEiaCpu(profile, views, viewWidth, viewHeight, eia);
     return eia;
 }
 

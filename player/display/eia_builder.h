@@ -8,6 +8,7 @@
 // offsets for every subpixel, averaged in linear light.
 #pragma once
 
+#include "eia_bindings_gpu.h"
 #include "gl_handles.h"
 
 #include "lfd/display_profile.h"
@@ -23,7 +24,7 @@ namespace lfd::player {
 class ViewTargets;
 class GpuTimer;
 
-// Values match EIA_MODE_* in shaders/eia_construct.comp (tested).
+// Values are EIA_MODE_* of shaders/eia_bindings.glsl (static_assert in eia_builder.cpp).
 enum class Reconstruction : uint32_t { None = 0, Spatial = 1, View = 2, ViewSpatial = 3 };
 // "none", "spatial", "view", "view-spatial"; throws invalid_argument naming the choices.
 Reconstruction parseReconstruction(const std::string& name);
@@ -32,7 +33,7 @@ std::vector<std::string> reconstructionNames(); // in enum order (the window's C
 
 // The reconstruction filters (paper section 4).
 struct ReconstructionFilter {
-    static constexpr uint32_t kSamples = 8;         // EIA_SAMPLES
+    static constexpr uint32_t kSamples = eia_bindings::kSamples;
     static constexpr double kSpatialDiameter = 2.25; // view pixels, = 6 sigma
     static constexpr double kViewSupport = 2.0;      // view intervals, = 6 sigma
     static constexpr uint64_t kDefaultSeed = 0x5eed'0e1a'0000'0001ull;

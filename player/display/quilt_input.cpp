@@ -40,7 +40,7 @@ bool hasQuiltName(const fs::path& path)
 
 // Bilinear RGBA sample of the quilt at pixel-space (x, y) (pixel centres at integers),
 // neighbours clamped to [x0, x1] x [y0, y1] so a tile never reads its neighbour.
-void sampleBilinear(const Image& q, double x, double y, int x0, int x1, int y0, int y1, uint8_t out[4])
+void sampleBilinear(const metrics::Image& q, double x, double y, int x0, int x1, int y0, int y1, uint8_t out[4])
 {
     x = std::clamp(x, double(x0), double(x1));
     y = std::clamp(y, double(y0), double(y1));
@@ -58,7 +58,7 @@ void sampleBilinear(const Image& q, double x, double y, int x0, int x1, int y0, 
 // Tile (col, rowFromTop) of the quilt as a tileW x tileH view. The view pixel (x, y) centre
 // sits at quilt pixel ((col * tileW + x + 0.5) * W / (cols * tileW)) - 0.5, written so it
 // is an exact integer when W = cols * tileW.
-std::vector<uint8_t> cutTile(const Image& q, const QuiltName& name, uint32_t col, uint32_t rowFromTop,
+std::vector<uint8_t> cutTile(const metrics::Image& q, const QuiltName& name, uint32_t col, uint32_t rowFromTop,
                              uint32_t tileW, uint32_t tileH)
 {
     const double sx = double(q.width) / (double(name.cols) * tileW);
@@ -133,7 +133,7 @@ std::vector<fs::path> listQuiltFiles(const fs::path& fileOrDirectory)
     return files;
 }
 
-QuiltViews extractQuiltViews(const Image& quilt, const QuiltName& name, uint32_t viewCount, double screenAspect)
+QuiltViews extractQuiltViews(const metrics::Image& quilt, const QuiltName& name, uint32_t viewCount, double screenAspect)
 {
     const uint32_t tiles = name.cols * name.rows;
     const uint32_t count = viewCount == 0 ? tiles : viewCount;
@@ -175,7 +175,7 @@ QuiltViews loadQuiltViews(const fs::path& file, uint32_t viewCount, double scree
 {
     const QuiltName name = parseQuiltName(file);
     try {
-        return extractQuiltViews(readImage(file, 4), name, viewCount, screenAspect);
+        return extractQuiltViews(metrics::readImage(file, 4), name, viewCount, screenAspect);
     } catch (const QuiltInputError& e) {
         throw QuiltInputError(file.string() + ": " + e.what());
     }

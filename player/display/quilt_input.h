@@ -6,7 +6,7 @@
 // views: each subpixel takes the view its lens phase selects among the 45.
 #pragma once
 
-#include "image_output.h"
+#include "image.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -52,7 +52,7 @@ struct QuiltViews {
 // aspect differs from `screenAspect` by more than 1%, each view is padded with black,
 // centred and unscaled, to the screen's aspect, so nothing is stretched (Looking Glass
 // players letterbox the same way). Throws QuiltInputError.
-QuiltViews extractQuiltViews(const Image& quilt, const QuiltName& name, uint32_t viewCount, double screenAspect);
+QuiltViews extractQuiltViews(const metrics::Image& quilt, const QuiltName& name, uint32_t viewCount, double screenAspect);
 
 // Reads a quilt file (as RGBA8) and extracts its views; errors name the file.
 QuiltViews loadQuiltViews(const std::filesystem::path& file, uint32_t viewCount, double screenAspect);

@@ -75,7 +75,7 @@ int main(int argc, char** argv)
         const RgbImage reference = readRgbImage(referencePath);
         const RgbImage test = readRgbImage(testPath);
         if (reference.width != test.width || reference.height != test.height)
-            throw MetricsIoError("'" + testPath + "': size " + sizeText(test) +
+            throw ImageError("'" + testPath + "': size " + sizeText(test) +
                                  " differs from the reference '" + referencePath + "' (" +
                                  sizeText(reference) + ")");
 

@@ -68,7 +68,7 @@ void writeHeatMap(const std::filesystem::path& path, std::span<const float> valu
                   int height)
 {
     if (width <= 0 || height <= 0 || values.size() != size_t(width) * size_t(height))
-        throw MetricsIoError("'" + path.string() + "': heat map of " +
+        throw ImageError("'" + path.string() + "': heat map of " +
                              std::to_string(values.size()) + " values does not fill " +
                              std::to_string(width) + "x" + std::to_string(height));
     writeRgb8Image(path, heatMapRgb8(values), width, height);

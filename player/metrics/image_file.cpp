@@ -1,6 +1,7 @@
 #include "image_file.h"
 
-#include "image_metrics.h" // MetricsIoError
+#include "atomic_file.h"
+#include "image.h" // ImageError
 
 // stb's implementations, private to this file (STB_*_STATIC), from Debian's libstb-dev
 // headers: the player's only image codec.
@@ -27,14 +28,11 @@
 #endif
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <system_error>
-
-#include <unistd.h>
 
 namespace lfd::metrics {
 
@@ -46,7 +44,7 @@ namespace fs = std::filesystem;
 {
     std::string line = "'" + path.string() + "': " + problem;
     std::replace_if(line.begin(), line.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-    throw MetricsIoError(line);
+    throw ImageError(line);
 }
 
 std::string lowerExtension(const fs::path& path)
@@ -141,35 +139,10 @@ void encodeImageFile(const fs::path& path, const uint8_t* pixels, int width, int
         fail(path, "cannot write this image format '" + ext + "' (write .png, .jpg, .bmp or .tga)");
     if (!ok)
         fail(path, "encoding failed");
-    writeFileAtomically(path, bytes);
-}
-
-void writeFileAtomically(const fs::path& path, std::span<const uint8_t> bytes)
-{
-    static std::atomic<unsigned> counter{0};
-    const fs::path temporary = path.parent_path() / ("." + path.filename().string() + ".tmp-" +
-                                                     std::to_string(::getpid()) + "-" + std::to_string(counter++));
-    auto removeTemporary = [&] {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-    };
-    {
-        const std::unique_ptr<FILE, FileCloser> out(std::fopen(temporary.c_str(), "wb"));
-        if (!out)
-            fail(path, "cannot open for writing (" + std::error_code(errno, std::generic_category()).message() + ")");
-        const bool written = bytes.empty() || std::fwrite(bytes.data(), 1, bytes.size(), out.get()) == bytes.size();
-        const bool flushed = std::fflush(out.get()) == 0;
-        if (!written || !flushed) {
-            const std::string why = std::error_code(errno, std::generic_category()).message();
-            removeTemporary();
-            fail(path, "write failed (" + why + ")");
-        }
-    }
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        removeTemporary();
-        fail(path, "cannot move the written file into place: " + ec.message());
+    try {
+        io::writeFileAtomically(path, bytes);
+    } catch (const io::AtomicWriteError& e) {
+        throw ImageError(e.what());
     }
 }
 

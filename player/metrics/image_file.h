@@ -6,8 +6,8 @@
 //
 // Read: PNG (8 and 16 bits), JPEG (baseline and progressive), BMP, TGA, GIF (first frame),
 // PSD (composited), HDR and PNM. Write: PNG, JPEG (quality 95), BMP, TGA, by extension.
-// Every error is one line naming the file and the problem (MetricsIoError); writes are
-// atomic (writeFileAtomically), so a failed write leaves nothing at the target or beside it.
+// Every error is one line naming the file and the problem (ImageError); writes are
+// atomic (atomic_file.h), so a failed write leaves nothing at the target or beside it.
 #pragma once
 
 #include <cstdint>
@@ -36,10 +36,5 @@ DecodedImage decodeImageFile(const std::filesystem::path& path, bool keepDepth =
 // extension names, atomically.
 void encodeImageFile(const std::filesystem::path& path, const uint8_t* pixels, int width, int height,
                      int channels);
-
-// Writes `bytes` to a uniquely named temporary file in `path`'s directory (rename is atomic
-// only within one file system) and renames it over `path`; on failure the temporary is
-// removed and MetricsIoError names `path` and the problem.
-void writeFileAtomically(const std::filesystem::path& path, std::span<const uint8_t> bytes);
 
 } // namespace lfd::metrics

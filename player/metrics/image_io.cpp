@@ -30,7 +30,7 @@ RgbImage readRgbImage(const std::filesystem::path& path)
 void writeRgb8Image(const std::filesystem::path& path, std::span<const uint8_t> rgb, int width, int height)
 {
     if (width > 0 && height > 0 && rgb.size() != size_t(width) * size_t(height) * 3)
-        throw MetricsIoError("'" + path.string() + "': pixel buffer does not hold " + std::to_string(width) +
+        throw ImageError("'" + path.string() + "': pixel buffer does not hold " + std::to_string(width) +
                              "x" + std::to_string(height) + "x3 bytes");
     encodeImageFile(path, rgb.data(), width, height, 3);
 }

@@ -10,12 +10,17 @@
 //
 // Every metric takes (reference, test) and throws std::invalid_argument when the images
 // differ in size or a mask does not match; masked metrics also throw when the mask selects
-// nothing. File functions throw MetricsIoError with one line naming the file and the problem.
+// nothing. File functions throw ImageError with one line naming the file and the problem.
+//
+// Every metric also takes the player's 8-bit Image (image.h: views, EIAs, image files),
+// converted exactly to RgbImage: one implementation serves the player, lfd-bench, the
+// tests and lfd-compare.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include "image.h"
 #include <span>
 #include <stdexcept>
 #include <vector>
@@ -35,15 +40,12 @@ struct RgbImage {
 // From interleaved 8-bit pixels with 1..4 channels (1 = grey, 2 = grey + alpha, 3 = RGB,
 // 4 = RGBA; alpha dropped). Throws std::invalid_argument for a bad size or channel count.
 RgbImage rgbFromPixels8(const uint8_t* pixels, int width, int height, int channels);
+// From the 8-bit Image (values exact); throws std::invalid_argument like rgbFromPixels8, and
+// when the pixel buffer does not hold width x height x channels bytes.
+RgbImage rgbFromImage(const Image& image);
 // From interleaved float pixels with 1..4 channels where 1.0 is full scale (multiplied by
 // 255; values outside 0..1 are kept, see each metric for how it treats them).
 RgbImage rgbFromPixelsFloat(const float* pixels, int width, int height, int channels);
-
-// One line naming the file and the problem.
-class MetricsIoError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 // Reads any image image_file.h decodes. 8-bit files convert exactly; 16-bit and HDR files are read
 // as float with 1.0 = 255.
@@ -64,6 +66,13 @@ double rmse(const RgbImage& reference, const RgbImage& test, std::span<const uin
 // infinity: lfd-compare prints "inf" in text and null in JSON.
 double psnrFromRmse(double rmse);
 double psnr(const RgbImage& reference, const RgbImage& test);
+double rmse(const Image& reference, const Image& test);
+double psnr(const Image& reference, const Image& test);
+// The largest difference of one colour value, 0..255.
+int maxAbsDiff(const Image& reference, const Image& test);
+// Writes |a - b| per colour value, multiplied by `gain` and clamped, as an RGB8 image
+// (black = identical), for inspecting golden-image failures.
+void writeDiffImage(const std::filesystem::path& path, const Image& a, const Image& b, float gain = 8.0f);
 
 // ---- SSIM (Wang, Bovik, Sheikh & Simoncelli 2004, "Image quality assessment: from error
 // visibility to structural similarity", IEEE TIP 13(4)) -------------------------------
@@ -75,14 +84,14 @@ double psnr(const RgbImage& reference, const RgbImage& test);
 // Colour: computed on Rec. 601 luma Y' = 0.299 R + 0.587 G + 0.114 B of the stored values.
 // Why luma and not an average over R, G, B: the paper defines and evaluates SSIM on
 // greyscale images, and colour images are usually reduced to exactly this luma (MATLAB's
-// rgb2gray) before applying it; luma also keeps these numbers the same as the SSIM
-// lfd-bench has reported all along, and weights channels as the eye does.
+// rgb2gray) before applying it; luma also weights channels as the eye does.
 // Windows: only positions where the whole window lies inside the image (no padding, as the
 // paper's reference code), and no automatic downsampling; images smaller than 11 pixels
 // use the largest odd window that fits (same sigma, renormalised).
 double ssim(const RgbImage& reference, const RgbImage& test);
 // Mean SSIM over the window positions whose centre pixel has a non-zero mask byte.
 double ssim(const RgbImage& reference, const RgbImage& test, std::span<const uint8_t> mask);
+double ssim(const Image& reference, const Image& test);
 
 // ---- LDR FLIP (Andersson, Nilsson, Akenine-Moller, Oskarsson, Astrom & Fairchild 2020,
 // "FLIP: A Difference Evaluator for Alternating Images", Proc. ACM CGIT 3(2), HPG) ------

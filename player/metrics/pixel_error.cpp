@@ -2,6 +2,7 @@
 // over all R, G and B values.
 #include "image_checks.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -57,6 +58,36 @@ double psnrFromRmse(double rmse)
 double psnr(const RgbImage& reference, const RgbImage& test)
 {
     return psnrFromRmse(rmse(reference, test));
+}
+
+double rmse(const Image& reference, const Image& test)
+{
+    return rmse(rgbFromImage(reference), rgbFromImage(test));
+}
+
+double psnr(const Image& reference, const Image& test)
+{
+    return psnr(rgbFromImage(reference), rgbFromImage(test));
+}
+
+int maxAbsDiff(const Image& reference, const Image& test)
+{
+    const RgbImage a = rgbFromImage(reference), b = rgbFromImage(test);
+    detail::requireSameSize(a, b, "maxAbsDiff");
+    float worst = 0.0f;
+    for (size_t i = 0; i < a.rgb.size(); ++i)
+        worst = std::max(worst, std::abs(a.rgb[i] - b.rgb[i]));
+    return int(worst); // exact: both hold whole 8-bit levels
+}
+
+void writeDiffImage(const std::filesystem::path& path, const Image& a, const Image& b, float gain)
+{
+    const RgbImage x = rgbFromImage(a), y = rgbFromImage(b);
+    detail::requireSameSize(x, y, "writeDiffImage");
+    std::vector<uint8_t> diff(x.rgb.size());
+    for (size_t i = 0; i < diff.size(); ++i)
+        diff[i] = uint8_t(std::min(255.0f, std::round(std::abs(x.rgb[i] - y.rgb[i]) * gain)));
+    writeRgb8Image(path, diff, x.width, x.height);
 }
 
 } // namespace lfd::metrics

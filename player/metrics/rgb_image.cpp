@@ -48,6 +48,14 @@ RgbImage rgbFromPixels8(const uint8_t* pixels, int width, int height, int channe
     return convert(pixels, width, height, channels, [](uint8_t v) { return float(v); });
 }
 
+RgbImage rgbFromImage(const Image& image)
+{
+    if (image.pixels.size() != size_t(image.width) * image.height * image.channels)
+        throw std::invalid_argument("pixel buffer does not match " + sizeText(int(image.width), int(image.height)) +
+                                    "x" + std::to_string(image.channels));
+    return rgbFromPixels8(image.pixels.data(), int(image.width), int(image.height), int(image.channels));
+}
+
 RgbImage rgbFromPixelsFloat(const float* pixels, int width, int height, int channels)
 {
     return convert(pixels, width, height, channels, [](float v) { return v * 255.0f; });

@@ -137,4 +137,9 @@ double ssim(const RgbImage& reference, const RgbImage& test, std::span<const uin
     return sum / double(count);
 }
 
+double ssim(const Image& reference, const Image& test)
+{
+    return ssim(rgbFromImage(reference), rgbFromImage(test));
+}
+
 } // namespace lfd::metrics

@@ -1,6 +1,7 @@
 #include "frame_pipeline.h"
 
 #include "frame_stages.h"
+#include "view_downsample_bindings_gpu.h"
 #include "shader_library.h"
 
 #include <epoxy/gl.h>
@@ -135,20 +136,18 @@ void FramePipeline::renderFrame(Renderer& renderer, double time, GpuTimer& timer
         const FrameSetup frame = supersampledFrame(frame_, ss_, ssSeed_);
         renderer.render(*scene_, frame, *ssTargets_, timer);
         timer.begin(stage::kDownsample);
+        namespace db = downsample_bindings;
         glUseProgram(downsample_);
-        glUniform3ui(glGetUniformLocation(downsample_, "targetSize"), targets_->width(), targets_->height(),
-                     targets_->viewCount());
-        glUniform1ui(glGetUniformLocation(downsample_, "mode"),
-                     uint32_t(gl::shaderDefineValue("view_downsample.comp",
-                                                    ss_ == Supersampling::Spatial2x ? "VIEW_DOWNSAMPLE_SPATIAL"
-                                                                                     : "VIEW_DOWNSAMPLE_ANGULAR")));
-        glBindTextureUnit(0, ssTargets_->colorArray());
-        glBindImageTexture(0, targets_->colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        glDispatchCompute((targets_->width() + 7) / 8, (targets_->height() + 7) / 8, targets_->viewCount());
+        glUniform3ui(db::kLocTargetSize, targets_->width(), targets_->height(), targets_->viewCount());
+        glUniform1ui(db::kLocMode, ss_ == Supersampling::Spatial2x ? db::kSpatial : db::kAngular);
+        glBindTextureUnit(db::kUnitSource, ssTargets_->colorArray());
+        glBindImageTexture(db::kImageTarget, targets_->colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glDispatchCompute((targets_->width() + db::kLocalSize - 1) / db::kLocalSize,
+                          (targets_->height() + db::kLocalSize - 1) / db::kLocalSize, targets_->viewCount());
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                         GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-        glBindImageTexture(0, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        glBindTextureUnit(0, 0);
+        glBindImageTexture(db::kImageTarget, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glBindTextureUnit(db::kUnitSource, 0);
         glUseProgram(0);
         timer.end();
     }

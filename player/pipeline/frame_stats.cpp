@@ -1,14 +1,11 @@
 #include "frame_stats.h"
 
+#include "atomic_file.h"
 #include "frame_stages.h"
 
 #include <cstdio>
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
-#include <system_error>
 #include <sys/resource.h>
-#include <unistd.h>
 
 namespace lfd::player {
 
@@ -81,30 +78,6 @@ std::string statsCsv(const std::map<std::string, StageTimes>& stages)
     return csv.str();
 }
 
-void writeTextFileAtomic(const std::filesystem::path& path, const std::string& text)
-{
-    const std::filesystem::path tmp =
-        path.parent_path() / ("." + path.filename().string() + ".tmp" + std::to_string(::getpid()));
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw std::runtime_error(path.string() + ": cannot write (directory missing or not writable)");
-        out << text;
-        out.flush();
-        if (!out) {
-            out.close();
-            std::filesystem::remove(tmp);
-            throw std::runtime_error(path.string() + ": write failed");
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp);
-        throw std::runtime_error(path.string() + ": cannot rename temporary file: " + ec.message());
-    }
-}
-
 void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
                 const std::map<std::string, StageTimes>& stages)
 {
@@ -112,8 +85,8 @@ void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
     csvPath.replace_extension(".csv");
     if (csvPath == jsonPath)
         csvPath += ".csv";
-    writeTextFileAtomic(jsonPath, statsJson(info, stages).dump(2) + "\n");
-    writeTextFileAtomic(csvPath, statsCsv(stages));
+    io::writeFileAtomically(jsonPath, statsJson(info, stages).dump(2) + "\n");
+    io::writeFileAtomically(csvPath, statsCsv(stages));
 }
 
 } // namespace lfd::player

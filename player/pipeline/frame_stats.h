@@ -43,11 +43,9 @@ nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageT
 // "frame,stage,ms" header, then one row per recorded sample.
 std::string statsCsv(const std::map<std::string, StageTimes>& stages);
 
-// Writes `jsonPath` and its .csv sibling atomically (temporary file + rename). Throws
-// std::runtime_error naming the file.
+// Writes `jsonPath` and its .csv sibling atomically (atomic_file.h). Throws
+// io::AtomicWriteError (a std::runtime_error) naming the file.
 void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
                 const std::map<std::string, StageTimes>& stages);
-// Atomic text file write used above.
-void writeTextFileAtomic(const std::filesystem::path& path, const std::string& text);
 
 } // namespace lfd::player

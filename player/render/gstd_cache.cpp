@@ -1,5 +1,6 @@
 #include "gstd_cache.h"
 
+#include "atomic_file.h"
 #include "view_targets.h"
 
 #include <epoxy/gl.h>
@@ -10,7 +11,6 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -147,29 +147,11 @@ void GstdCache::store(const std::string& key, const ViewTargets& targets) const
     const uint8_t* c = reinterpret_cast<const uint8_t*>(&checksum);
     bytes.insert(bytes.end(), c, c + 8);
 
-    // Atomic: a uniquely named temporary file beside the entry, renamed over it.
     std::error_code ec;
     fs::create_directories(dir_, ec);
     if (ec)
         throw std::runtime_error(dir_.string() + ": cannot create the gstd cache directory: " + ec.message());
-    std::random_device entropy;
-    char suffix[32];
-    std::snprintf(suffix, sizeof(suffix), ".tmp%08x", unsigned(entropy()));
-    const fs::path temporary = target.string() + suffix;
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-        out.close();
-        if (!out) {
-            fs::remove(temporary, ec);
-            throw std::runtime_error(temporary.string() + ": cannot write the gstd cache entry");
-        }
-    }
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw std::runtime_error(target.string() + ": cannot rename the gstd cache entry into place");
-    }
+    io::writeFileAtomically(target, bytes); // readers never see a partial entry
 }
 
 } // namespace lfd::player

@@ -65,6 +65,7 @@ void RasterDraw::endFrame() const
     glFrontFace(GL_CCW);
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 } // namespace lfd::player

@@ -18,6 +18,7 @@ public:
     void beginFrame(const GpuScene& scene, const FrameSetup& frame);
     // Issues every DrawItem with `instances` instances (1 for mvr, N for mvr-layered).
     void drawScene(const GpuScene& scene, unsigned instances) const;
+    // Restores what beginFrame and the draws changed, and binds the default framebuffer.
     void endFrame() const;
 
 private:

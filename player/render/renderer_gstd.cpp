@@ -9,6 +9,7 @@
 #include "renderer_gstd.h"
 
 #include "frame_stages.h"
+#include "gstd_bindings_gpu.h"
 #include "gl_context.h"
 #include "gl_handles.h"
 #include "gpu_timer.h"
@@ -31,8 +32,7 @@ namespace lfd::player {
 
 namespace {
 
-constexpr int kMaxSamples = 64; // GSTD_MAX_SAMPLES in gstd_reconstruct.comp
-constexpr GLuint kHighResUnit = 5; // after the five material units (LFD_UNIT_*)
+namespace gb = gstd_bindings;
 
 // splitmix64 (Steele, Lea & Flood 2014): a tiny, fully specified generator, so a seed
 // gives the same offsets with every compiler and standard library.
@@ -142,28 +142,28 @@ public:
                 draw_.drawScene(scene, 1);
                 glBindSamplers(bindings::kUnitBaseColor, 5, nullptr);
                 draw_.endFrame();
-                glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
                 // Step 2: Gaussian reconstruction at view resolution, averaged over sub-views.
                 glUseProgram(reconstruct_);
-                glBindTextureUnit(kHighResUnit, highRes_);
-                glBindImageTexture(0, accum_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-                glBindImageTexture(1, targets.colorArray(), 0, GL_FALSE, GLint(view), GL_WRITE_ONLY,
+                glBindTextureUnit(gb::kUnitHighRes, highRes_);
+                glBindImageTexture(gb::kImageAccum, accum_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+                glBindImageTexture(gb::kImageView, targets.colorArray(), 0, GL_FALSE, GLint(view), GL_WRITE_ONLY,
                                    GL_RGBA8);
-                glUniform2ui(0, width, height);
-                glUniform1ui(1, options_.samples);
-                glUniform1ui(2, s);
-                glUniform1ui(3, GstdOptions::kSubViews);
-                glUniform2fv(4, GLsizei(options_.samples), &offsets_[size_t(s) * options_.samples].x);
-                gl::dispatchCovering(reconstruct_, width, height, 1); // one invocation per view pixel
+                glUniform2ui(gb::kLocSize, width, height);
+                glUniform1ui(gb::kLocSampleCount, options_.samples);
+                glUniform1ui(gb::kLocSubView, s);
+                glUniform1ui(gb::kLocSubViewCount, GstdOptions::kSubViews);
+                glUniform2fv(gb::kLocOffsets, GLsizei(options_.samples), &offsets_[size_t(s) * options_.samples].x);
+                glDispatchCompute((width + gb::kLocalSize - 1) / gb::kLocalSize, // one invocation per view pixel
+                                  (height + gb::kLocalSize - 1) / gb::kLocalSize, 1);
                 // The accumulator is read by the next dispatch; the high-res texture is
                 // drawn into again next (ordered by GL for framebuffer writes).
                 glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
             }
         }
-        glBindTextureUnit(kHighResUnit, 0);
-        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-        glBindImageTexture(1, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glBindTextureUnit(gb::kUnitHighRes, 0);
+        glBindImageTexture(gb::kImageAccum, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+        glBindImageTexture(gb::kImageView, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
         glUseProgram(0);
         // The views are read next by the EIA pass, readbacks and blits.
         glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
@@ -237,8 +237,8 @@ void validateGstdOptions(const GstdOptions& options)
 {
     if (options.factor == 0 || options.factor > 16)
         throw std::invalid_argument("gstd: factor must be 1..16, got " + std::to_string(options.factor));
-    if (options.samples == 0 || options.samples > uint32_t(kMaxSamples))
-        throw std::invalid_argument("gstd: samples must be 1.." + std::to_string(kMaxSamples) + ", got " +
+    if (options.samples == 0 || options.samples > uint32_t(gb::kMaxSamples))
+        throw std::invalid_argument("gstd: samples must be 1.." + std::to_string(gb::kMaxSamples) + ", got " +
                                     std::to_string(options.samples));
     if (!(options.filterDiameter > 0.0) || !std::isfinite(options.filterDiameter))
         throw std::invalid_argument("gstd: the filter diameter must be positive");

@@ -30,7 +30,6 @@ public:
             draw_.drawScene(scene, 1);
         }
         draw_.endFrame();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         timer.end();
     }
 

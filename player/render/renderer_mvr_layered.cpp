@@ -54,7 +54,6 @@ public:
         glBindFramebuffer(GL_FRAMEBUFFER, targets.layeredFramebuffer());
         draw_.drawScene(scene, targets.viewCount());
         draw_.endFrame();
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
         timer.end();
     }
 

@@ -69,8 +69,8 @@ TEST(HeatMap, WritesAPngOfTheMapSizeAtomically)
     // Only the target: the temporary file was renamed, not left beside it.
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
 
-    EXPECT_THROW(writeHeatMap(dir / "bad.png", values, 7, 4), MetricsIoError);
-    EXPECT_THROW(writeHeatMap(dir / "missing_dir" / "map.png", values, 7, 3), MetricsIoError);
+    EXPECT_THROW(writeHeatMap(dir / "bad.png", values, 7, 4), ImageError);
+    EXPECT_THROW(writeHeatMap(dir / "missing_dir" / "map.png", values, 7, 3), ImageError);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
     fs::remove_all(dir);
 }

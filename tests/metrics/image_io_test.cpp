@@ -74,7 +74,7 @@ TEST_F(ImageIo, ErrorsAreOneLineNamingTheFile)
         try {
             readRgbImage(path);
             ADD_FAILURE() << "no error for " << path;
-        } catch (const MetricsIoError& e) {
+        } catch (const ImageError& e) {
             const std::string what = e.what();
             EXPECT_NE(what.find(path.string()), std::string::npos) << what;
             EXPECT_NE(what.find(problem), std::string::npos) << what;

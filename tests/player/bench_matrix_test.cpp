@@ -43,8 +43,8 @@ player::BenchOptions matrixOptions()
     o.pack = "scene.lfdpack";
     o.renderers = {"mvr", "lfdpr"};
     o.reference = "mvr";
-    o.aa = {"none", "view"};
-    o.ss = {"1", "2v"};
+    o.aa = {player::Reconstruction::None, player::Reconstruction::View};
+    o.ss = {player::Supersampling::None, player::Supersampling::Angular2x};
     o.frames = 1;
     o.warmup = 0;
     o.quiet = true;

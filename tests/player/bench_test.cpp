@@ -7,7 +7,7 @@
 
 #include "bench_report.h"
 #include "bench_runner.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "renderer_lfdpr.h"
 #include "renderer_registry.h"
 
@@ -107,7 +107,7 @@ TEST_F(BenchTest, TimesEveryRendererAndComparesWithReference)
     EXPECT_LT(layered.allViews.rmse, 1.0);
     EXPECT_GT(layered.centreView.ssim, 0.99);
     // The images differ between renderers only as much as the metrics say.
-    EXPECT_LT(player::rmse({profile.panelWidth, profile.panelHeight, 4, images["mvr"].eia},
+    EXPECT_LT(metrics::rmse({profile.panelWidth, profile.panelHeight, 4, images["mvr"].eia},
                            {profile.panelWidth, profile.panelHeight, 4, images["mvr-layered"].eia}),
               1.0);
     // Speed-ups are ratios of the mean totals.
@@ -291,8 +291,8 @@ TEST_F(BenchTest, WritesJsonCsvSvgAndImages)
     for (const fs::path& path : written)
         EXPECT_TRUE(fs::is_regular_file(path)) << path;
     EXPECT_FALSE(fs::exists(dir / "mvr_diff_eia.png"));
-    EXPECT_EQ(player::readImage(dir / "mvr-layered_eia.png").width, profile.panelWidth);
-    const player::Image centre = player::readImage(dir / "mvr_view_centre.png", 4);
+    EXPECT_EQ(metrics::readImage(dir / "mvr-layered_eia.png").width, profile.panelWidth);
+    const metrics::Image centre = metrics::readImage(dir / "mvr_view_centre.png", 4);
     EXPECT_EQ(centre.width, profile.viewWidth);
     EXPECT_EQ(centre.pixels, images["mvr"].centre);
 

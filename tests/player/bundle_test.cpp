@@ -5,7 +5,7 @@
 #include "gl_test_support.h"
 #include "test_scenes.h"
 
-#include "image_output.h"
+#include "image_metrics.h"
 #include "lfd/pack.h"
 
 #include <gtest/gtest.h>
@@ -122,8 +122,8 @@ TEST_F(BundleTest, BundleIsSelfContainedSmallAndRendersLikeTheBuild)
     ASSERT_EQ(a, 0) << aOut;
     const auto [b, bOut] = run("'" + play.string() + "'" + flags + "'" + (dir / "build.png").string() + "'");
     ASSERT_EQ(b, 0) << bOut;
-    const player::Image fromBundle = player::readImage(dir / "bundle.png", 4);
-    const player::Image fromBuild = player::readImage(dir / "build.png", 4);
+    const metrics::Image fromBundle = metrics::readImage(dir / "bundle.png", 4);
+    const metrics::Image fromBuild = metrics::readImage(dir / "build.png", 4);
     EXPECT_EQ(fromBundle.pixels, fromBuild.pixels);
 }
 

@@ -11,7 +11,7 @@
 
 #include "eia_builder.h"
 #include "frame_uniforms.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "quilt.h"
 #include "renderer_gstd.h"
 #include "simulated_viewer.h"
@@ -102,32 +102,32 @@ RenderedFrame referenceFrame(const std::string& renderer, const fs::path& pack, 
                        {.time = double(frame) / kFps, .turntablePeriod = kTurntablePeriod, .eia = true});
 }
 
-std::vector<std::vector<uint8_t>> pixelsOf(const std::vector<player::Image>& images)
+std::vector<std::vector<uint8_t>> pixelsOf(const std::vector<metrics::Image>& images)
 {
     std::vector<std::vector<uint8_t>> out;
-    for (const player::Image& image : images)
+    for (const metrics::Image& image : images)
         out.push_back(image.pixels);
     return out;
 }
 
-player::Image readView(const fs::path& dir, uint32_t view)
+metrics::Image readView(const fs::path& dir, uint32_t view)
 {
     char name[32];
     std::snprintf(name, sizeof(name), "view_%03u.png", view);
-    return player::readImage(dir / name, 4);
+    return metrics::readImage(dir / name, 4);
 }
 
 // The checks can fail: a black image, a background-only one and one shifted by a pixel
 // are each refused, by the same functions that pass the real outputs below.
 TEST(CliOutputChecks, BlankOrWrongImagesFail)
 {
-    player::Image reference{64, 48, 4, std::vector<uint8_t>(64 * 48 * 4, 255)};
+    metrics::Image reference{64, 48, 4, std::vector<uint8_t>(64 * 48 * 4, 255)};
     for (uint32_t y = 0; y < 48; ++y)
         for (uint32_t x = 0; x < 64; ++x)
             for (uint32_t c = 0; c < 3; ++c)
                 reference.pixels[(y * 64 + x) * 4 + c] = uint8_t((x * 4 + y * 3 + c * 50) % 256);
     EXPECT_EQ(imageMismatch(reference, reference, 0), "");
-    player::Image black = reference, background = reference, shifted = reference;
+    metrics::Image black = reference, background = reference, shifted = reference;
     for (size_t i = 0; i < black.pixels.size(); i += 4) {
         std::fill_n(&black.pixels[i], 3, uint8_t(0));
         std::fill_n(&background.pixels[i], 3, uint8_t(std::lround(player::kBackground[0] * 255.0f)));
@@ -171,7 +171,7 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("OpenGL"), std::string::npos) << "start-up line names the GL driver: " << r.out;
 
-    const player::Image eia = player::readImage(out / "eia.png", 4);
+    const metrics::Image eia = metrics::readImage(out / "eia.png", 4);
     EXPECT_EQ(eia.width, 384u);
     EXPECT_EQ(eia.height, 216u);
     // 4 views of 96x72 on a 16:9 panel: the quilt layout chooses its tiles; with --frames 3
@@ -185,19 +185,19 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
         }
     EXPECT_EQ(quilts, 3u) << "quilt_0000_qs*.png .. quilt_0002_qs*.png";
     ASSERT_FALSE(quilt.empty()) << "no quilt_000?_qs*.png written";
-    const player::Image quiltImage = player::readImage(quilt);
+    const metrics::Image quiltImage = metrics::readImage(quilt);
     EXPECT_EQ(quiltImage.width % 96, 0u);
     EXPECT_EQ(quiltImage.height % 72, 0u);
     EXPECT_GE((quiltImage.width / 96) * (quiltImage.height / 72), 4u);
     for (int v = 0; v < 4; ++v) {
         char name[32];
         std::snprintf(name, sizeof(name), "view_%03d.png", v);
-        const player::Image view = player::readImage(out / "views" / name);
+        const metrics::Image view = metrics::readImage(out / "views" / name);
         EXPECT_EQ(view.width, 96u);
         EXPECT_EQ(view.height, 72u);
     }
     EXPECT_FALSE(fs::exists(out / "views" / "view_004.png"));
-    const player::Image viewer = player::readImage(out / "viewer.png", 4);
+    const metrics::Image viewer = metrics::readImage(out / "viewer.png", 4);
     EXPECT_EQ(viewer.width, 96u);
     EXPECT_EQ(viewer.height, 72u);
 
@@ -207,19 +207,19 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
     const DisplayProfile profile =
         withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
     const RenderedFrame reference = referenceFrame("mvr", pack_, profile, 2);
-    std::vector<player::Image> views;
+    std::vector<metrics::Image> views;
     for (uint32_t v = 0; v < 4; ++v) {
         views.push_back(readView(out / "views", v));
         EXPECT_EQ(imageMismatch(views[v], reference.views[v], 1), "") << "view " << v;
     }
     EXPECT_EQ(imageMismatch(eia, reference.eia, 1), "") << "EIA";
-    const player::Image cpuEia{384, 216, 4, player::buildEiaCpu(profile, pixelsOf(views), 96, 72)};
+    const metrics::Image cpuEia{384, 216, 4, player::buildEiaCpu(profile, pixelsOf(views), 96, 72)};
     EXPECT_EQ(imageMismatch(eia, cpuEia, 0), "") << "EIA against the CPU interleaving of the written views";
     const player::QuiltLayout layout = player::chooseQuiltLayout(profile);
-    const player::Image expectedQuilt{layout.width(), layout.height(), 4,
+    const metrics::Image expectedQuilt{layout.width(), layout.height(), 4,
                                       player::assembleQuilt(layout, pixelsOf(reference.views))};
-    EXPECT_EQ(imageMismatch(player::readImage(quilt, 4), expectedQuilt, 1), "") << "quilt";
-    const player::Image expectedViewer{96, 72, 4, player::simulateViewer(profile, reference.eia.pixels, 1.5)};
+    EXPECT_EQ(imageMismatch(metrics::readImage(quilt, 4), expectedQuilt, 1), "") << "quilt";
+    const metrics::Image expectedViewer{96, 72, 4, player::simulateViewer(profile, reference.eia.pixels, 1.5)};
     EXPECT_EQ(imageMismatch(viewer, expectedViewer, 1), "") << "simulated viewer";
 
     const nlohmann::json stats = nlohmann::json::parse(readText(out / "stats.json"));
@@ -272,7 +272,7 @@ TEST_F(CliTest, LayeredRendererAndExplicitFrame)
     // A different frame shows the turntable at another angle.
     const fs::path c = dir_ / "c";
     ASSERT_EQ(runPlay(dir_, common + " --frames 1 --views-out " + q(c)).status, 0);
-    EXPECT_GT(player::rmse(player::readImage(a / "view_000.png"), player::readImage(c / "view_000.png")), 1.0);
+    EXPECT_GT(metrics::rmse(metrics::readImage(a / "view_000.png"), metrics::readImage(c / "view_000.png")), 1.0);
 }
 
 TEST_F(CliTest, DefaultPrototypeProfileGivesAFullPanelEia)
@@ -281,15 +281,15 @@ TEST_F(CliTest, DefaultPrototypeProfileGivesAFullPanelEia)
     const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --views 8 --view-size 120x90 --out " + q(eia) +
                                           " --views-out " + q(views));
     ASSERT_EQ(r.status, 0) << r.err;
-    const player::Image image = player::readImage(eia, 4);
+    const metrics::Image image = metrics::readImage(eia, 4);
     EXPECT_EQ(image.width, 3840u);
     EXPECT_EQ(image.height, 2160u);
     // Content: the prototype's interleaving of the views lfd-play wrote beside it.
     const DisplayProfile profile = withViews(prototypeDisplayProfile(), 8, 120, 90);
-    std::vector<player::Image> written;
+    std::vector<metrics::Image> written;
     for (uint32_t v = 0; v < 8; ++v)
         written.push_back(readView(views, v));
-    const player::Image cpuEia{3840, 2160, 4, player::buildEiaCpu(profile, pixelsOf(written), 120, 90)};
+    const metrics::Image cpuEia{3840, 2160, 4, player::buildEiaCpu(profile, pixelsOf(written), 120, 90)};
     EXPECT_EQ(imageMismatch(image, cpuEia, 0), "");
 }
 
@@ -352,15 +352,15 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
         withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
     const RenderedFrame reference = referenceFrame("lfdpr", pack_, profile, 0);
     for (uint32_t v = 0; v < 4; ++v) {
-        const player::Image view = readView(out / "lfdpr_views", v);
+        const metrics::Image view = readView(out / "lfdpr_views", v);
         EXPECT_EQ(blankReason(view), "") << "view " << v;
-        EXPECT_LT(player::rmse(view, reference.views[v]), 1.0) << "view " << v;
+        EXPECT_LT(metrics::rmse(view, reference.views[v]), 1.0) << "view " << v;
     }
-    const player::Image eia = player::readImage(out / "lfdpr_eia.png", 4);
+    const metrics::Image eia = metrics::readImage(out / "lfdpr_eia.png", 4);
     EXPECT_EQ(blankReason(eia), "");
     std::printf("[ numbers  ] lfd-play --renderer lfdpr: EIA RMSE %.3f, max difference %d against lfdpr here\n",
-                player::rmse(eia, reference.eia), player::maxAbsDiff(eia, reference.eia));
-    EXPECT_LT(player::rmse(eia, reference.eia), 1.0);
+                metrics::rmse(eia, reference.eia), metrics::maxAbsDiff(eia, reference.eia));
+    EXPECT_LT(metrics::rmse(eia, reference.eia), 1.0);
     const nlohmann::json stats = nlohmann::json::parse(readText(out / "lfdpr.json"));
     for (const char* key : {"points", "bytes_per_point", "point_generation_ms", "view_generation_ms", "eia_ms",
                             "total_ms", "point_buffer_bytes", "view_buffer_bytes", "atomics"})
@@ -425,10 +425,10 @@ TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
     const DisplayProfile profile =
         withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
     const RenderedFrame mvr = referenceFrame("mvr", pack_, profile, 0);
-    EXPECT_EQ(imageMismatch(player::readImage(out / "mvr_eia.png", 4), mvr.eia, 1), "") << "mvr EIA";
-    const player::Image lfdprEia = player::readImage(out / "lfdpr_eia.png", 4);
+    EXPECT_EQ(imageMismatch(metrics::readImage(out / "mvr_eia.png", 4), mvr.eia, 1), "") << "mvr EIA";
+    const metrics::Image lfdprEia = metrics::readImage(out / "lfdpr_eia.png", 4);
     EXPECT_EQ(blankReason(lfdprEia), "");
-    const double lfdprRmse = player::rmse(lfdprEia, mvr.eia);
+    const double lfdprRmse = metrics::rmse(lfdprEia, mvr.eia);
     std::printf("[ numbers  ] lfd-bench EIA RMSE: lfdpr against mvr rendered here %.3f\n", lfdprRmse);
     EXPECT_LT(lfdprRmse, 3.0) << "lfdpr against mvr";
     const nlohmann::json bench = nlohmann::json::parse(readText(out / "bench.json"));
@@ -468,7 +468,7 @@ namespace lfd::test {
 namespace {
 
 // Centroid x and count of the pixels that differ from the background (player::kBackground).
-std::pair<double, size_t> coverage(const player::Image& view)
+std::pair<double, size_t> coverage(const metrics::Image& view)
 {
     const std::vector<uint8_t> mask = coverageMask(view);
     double sum = 0.0;
@@ -502,9 +502,9 @@ TEST_F(CliTest, QuiltWrittenAndReadBackGivesTheDirectEia)
         const RunResult back = runPlay(dir_, "--headless --quilt-in " + q(quilt) + " --display " + q(profile_) +
                                                  extra + " --out " + q(out / "back.png"));
         ASSERT_EQ(back.status, 0) << back.err;
-        const player::Image a = player::readImage(out / "direct.png"), b = player::readImage(out / "back.png");
+        const metrics::Image a = metrics::readImage(out / "direct.png"), b = metrics::readImage(out / "back.png");
         ASSERT_EQ(a.width, b.width);
-        EXPECT_TRUE(a.pixels == b.pixels) << "max difference " << player::maxAbsDiff(a, b);
+        EXPECT_TRUE(a.pixels == b.pixels) << "max difference " << metrics::maxAbsDiff(a, b);
     }
 }
 
@@ -517,8 +517,8 @@ TEST_F(CliTest, CameraFlagsChangeTheViewsAsDocumented)
     auto render = [&](const std::string& name, const std::string& flags) {
         const RunResult r = runPlay(dir_, common + q(dir_ / name) + " " + flags);
         EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
-        return std::array<player::Image, 2>{player::readImage(dir_ / name / "view_000.png"),
-                                            player::readImage(dir_ / name / "view_003.png")};
+        return std::array<metrics::Image, 2>{metrics::readImage(dir_ / name / "view_000.png"),
+                                            metrics::readImage(dir_ / name / "view_003.png")};
     };
     const auto base = render("base", "");
     const auto [baseX, baseCount] = coverage(base[1]);
@@ -531,7 +531,7 @@ TEST_F(CliTest, CameraFlagsChangeTheViewsAsDocumented)
     EXPECT_NEAR(coverage(pan[1]).first - baseX, 13.9, 2.0);
     EXPECT_NEAR(coverage(pan[0]).first - coverage(base[0]).first, 13.9, 2.0);
     // --orbit: another side of the scene.
-    EXPECT_GT(player::rmse(render("orbit", "--orbit 90,0")[1], base[1]), 5.0);
+    EXPECT_GT(metrics::rmse(render("orbit", "--orbit 90,0")[1], base[1]), 5.0);
     // --focal-depth 5: the scene moves 5 mm behind the screen, so it shifts right from the
     // leftmost to the rightmost camera (e = -/+80.4 mm) by about 160.8 * 5 / 305 mm = 7.3 px more.
     const auto focal = render("focal", "--focal-depth 5");
@@ -540,11 +540,11 @@ TEST_F(CliTest, CameraFlagsChangeTheViewsAsDocumented)
     EXPECT_NEAR(disparityFocal - disparityBase, 7.3, 2.0);
     // --depthiness 0: every camera central, every view the same.
     const auto flat = render("flat", "--depthiness 0");
-    EXPECT_EQ(player::maxAbsDiff(flat[0], flat[1]), 0);
-    EXPECT_GT(player::maxAbsDiff(base[0], base[1]), 0);
+    EXPECT_EQ(metrics::maxAbsDiff(flat[0], flat[1]), 0);
+    EXPECT_GT(metrics::maxAbsDiff(base[0], base[1]), 0);
     // --no-turntable: frame 30 (0.5 s) shows what frame 0 shows.
     const auto later = render("later", "--frame 30");
-    EXPECT_EQ(player::maxAbsDiff(later[1], base[1]), 0);
+    EXPECT_EQ(metrics::maxAbsDiff(later[1], base[1]), 0);
 }
 
 // --frames N with --quilt writes the animation as numbered quilts; --quilt-video encodes
@@ -558,12 +558,12 @@ TEST_F(CliTest, AnimatedQuiltSequenceAndVideo)
     const bool haveFfmpeg = !player::findOnPath("ffmpeg").empty();
     const RunResult r = runPlay(dir_, common + (haveFfmpeg ? " --quilt-video " + q(out / "spin.mp4") : ""));
     ASSERT_EQ(r.status, 0) << r.err;
-    std::vector<player::Image> frames;
+    std::vector<metrics::Image> frames;
     for (const char* name : {"spin_0000_qs4x3a1.78.png", "spin_0001_qs4x3a1.78.png", "spin_0002_qs4x3a1.78.png"}) {
         ASSERT_TRUE(fs::exists(out / name)) << name;
-        frames.push_back(player::readImage(out / name));
+        frames.push_back(metrics::readImage(out / name));
     }
-    EXPECT_GT(player::rmse(frames[0], frames[1]), 1.0) << "the turntable turns between frames";
+    EXPECT_GT(metrics::rmse(frames[0], frames[1]), 1.0) << "the turntable turns between frames";
     if (haveFfmpeg) {
         const fs::path video = out / "spin_qs4x3a1.78.mp4";
         ASSERT_TRUE(fs::exists(video)) << r.out;
@@ -616,7 +616,7 @@ TEST_F(CliTest, PreviewRendersFewerSmallerViewsIntoTheFullPanel)
     const nlohmann::json stats = nlohmann::json::parse(readText(out / "s.json"));
     EXPECT_EQ(stats["views"], 4);
     EXPECT_EQ(stats["view_width"], 48);
-    const player::Image eia = player::readImage(out / "eia.png");
+    const metrics::Image eia = metrics::readImage(out / "eia.png");
     EXPECT_EQ(eia.width, 384u);
     EXPECT_EQ(eia.height, 216u);
     // Three views at a third of the size with --preview-view-step 3 --preview-size-divisor 3.

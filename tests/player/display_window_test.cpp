@@ -8,7 +8,7 @@
 #include "test_scenes.h"
 #include "xvfb_support.h"
 
-#include "image_output.h"
+#include "image_metrics.h"
 
 #include "lfd/pack.h"
 
@@ -121,11 +121,11 @@ protected:
             kill(pid_, SIGTERM);
     }
     // The headless EIA of the same frame (no turntable, so every frame is this one).
-    player::Image headlessEia()
+    metrics::Image headlessEia()
     {
         std::string err;
         EXPECT_EQ(run("--headless " + common_ + " --no-turntable --out " + q(dir_ / "eia.png"), err), 0) << err;
-        return player::readImage(dir_ / "eia.png", 3);
+        return metrics::readImage(dir_ / "eia.png", 3);
     }
 
     fs::path dir_;
@@ -140,13 +140,13 @@ protected:
 TEST_F(DisplayWindowTest, FullscreenShowsTheHeadlessEiaPixelForPixel)
 {
     startServer("384x216x24");
-    const player::Image eia = headlessEia();
+    const metrics::Image eia = headlessEia();
     start(common_ + " --no-turntable --fullscreen");
-    const player::Image screen = server_->readScreen();
+    const metrics::Image screen = server_->readScreen();
     ASSERT_EQ(screen.width, 384u);
     ASSERT_EQ(screen.height, 216u);
-    EXPECT_TRUE(screen.pixels == eia.pixels) << "max difference " << player::maxAbsDiff(screen, eia);
-    player::writeImage(dir_ / "screen.png", screen);
+    EXPECT_TRUE(screen.pixels == eia.pixels) << "max difference " << metrics::maxAbsDiff(screen, eia);
+    metrics::writeImage(dir_ / "screen.png", screen);
     quit();
     const std::string log = readText(dir_ / "play.log");
     EXPECT_NE(log.find("fullscreen on monitor 0 'screen' 384x216"), std::string::npos) << log;
@@ -159,7 +159,7 @@ TEST_F(DisplayWindowTest, FullscreenShowsTheHeadlessEiaPixelForPixel)
     std::string err;
     ASSERT_EQ(run(common_ + " --no-turntable --fullscreen --frames 2 --screenshot " + q(dir_ / "shot.png"), err), 0)
         << err;
-    EXPECT_TRUE(player::readImage(dir_ / "shot.png", 3).pixels == eia.pixels);
+    EXPECT_TRUE(metrics::readImage(dir_ / "shot.png", 3).pixels == eia.pixels);
 }
 
 TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
@@ -178,9 +178,9 @@ TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
     EXPECT_EQ(readText(dir_ / "out.txt"), "0: screen 640x400 @ 0 Hz at +0+0 (primary) - does not match the panel 384x216\n");
 
     // --allow-mismatch: the EIA unscaled at ((640 - 384) / 2, (400 - 216) / 2) = (128, 92), black around it.
-    const player::Image eia = headlessEia();
+    const metrics::Image eia = headlessEia();
     start(common_ + " --no-turntable --fullscreen --allow-mismatch");
-    const player::Image screen = server_->readScreen();
+    const metrics::Image screen = server_->readScreen();
     quit();
     ASSERT_EQ(screen.width, 640u);
     size_t differing = 0, litOutside = 0;
@@ -257,9 +257,9 @@ TEST_F(DisplayWindowTest, QuiltInputFullscreenEqualsItsHeadlessEia)
     ASSERT_EQ(run("--headless " + quiltArgs + " --out " + q(dir_ / "quilt_eia.png"), err), 0) << err;
     start(quiltArgs + " --fullscreen");
     titleContains("q_qs3x3a1.78.png");
-    const player::Image screen = server_->readScreen();
+    const metrics::Image screen = server_->readScreen();
     quit();
-    EXPECT_TRUE(screen.pixels == player::readImage(dir_ / "quilt_eia.png", 3).pixels);
+    EXPECT_TRUE(screen.pixels == metrics::readImage(dir_ / "quilt_eia.png", 3).pixels);
 }
 
 } // namespace

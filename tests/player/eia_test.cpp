@@ -5,7 +5,7 @@
 #include "display_test_profiles.h"
 #include "gl_test_support.h"
 #include "gpu_timer.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "row_order.h"
 #include "simulated_viewer.h"
 #include "shader_library.h"
@@ -22,6 +22,7 @@
 
 using namespace lfd;
 using namespace lfd::player;
+using namespace lfd::metrics;
 
 namespace {
 
@@ -97,7 +98,7 @@ TEST(Eia, ParseReconstruction) {
 }
 
 TEST(Eia, ShaderModeConstantsMatchTheEnum) {
-    EXPECT_EQ(gl::shaderDefineValue("eia_construct.comp", "EIA_MODE_NONE"),
+    EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_MODE_NONE"),
               long(Reconstruction::None));
 }
 

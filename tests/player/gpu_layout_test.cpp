@@ -257,9 +257,9 @@ TEST_F(GpuLayoutTest, EveryStructAndBlockMatchesTheDriverMemberByMember)
     };
     for (const char* name : {"MaterialGpu", "NodeGpu", "ViewGpu", "TriangleStatsGpu", "FrameGpu"})
         EXPECT_TRUE(has(player::bindings::kLayoutFile, name)) << name;
-    for (const char* name : {"PointGpu", "TriangleRecordGpu", "TriangleSamplingGpu", "LfdprCountersGpu",
-                             "LfdprFrameGpu", "LfdprPointGpu", "LfdprRecordGpu", "LfdprDrawGpu",
-                             "LfdprVisCountersGpu", "LfdprCameraLineGpu"})
+    for (const char* name : {"LfdprPaperPointGpu", "LfdprPaperTriangleGpu", "LfdprPaperSamplingGpu", "LfdprPaperCountersGpu",
+                             "LfdprFrameGpu", "LfdprVisibilityPointGpu", "LfdprVisibilityRecordGpu", "LfdprVisibilityDrawGpu",
+                             "LfdprVisibilityCountersGpu", "LfdprCameraLineGpu"})
         EXPECT_TRUE(has(lb::kLayoutFile, name)) << name;
 }
 
@@ -326,8 +326,8 @@ std::vector<BlockUse> viewWordBlocks(const player::LfdprConstants& k)
 {
     return {{"ViewWords", k.ssboViewDepth, sizeof(uint64_t)},
             {"ViewDepth", k.ssboViewDepth, sizeof(uint32_t)},
-            {"ViewColor", k.ssboViewColor, sizeof(uint32_t)},
-            {"ViewIndex", k.ssboViewColor, sizeof(uint32_t)}};
+            {"ViewColor", k.ssboViewWinner, sizeof(uint32_t)},
+            {"ViewIndex", k.ssboViewWinner, sizeof(uint32_t)}};
 }
 
 std::vector<BlockUse> paperBlocks()
@@ -341,7 +341,7 @@ std::vector<BlockUse> paperBlocks()
                                  {"TriangleRecordsOut", k.ssboTriangles, k.triangleRecordBytes},
                                  {"TriangleSampling", k.ssboSampling, k.triangleSamplingBytes},
                                  {"TriangleSamplingOut", k.ssboSampling, k.triangleSamplingBytes},
-                                 {"LfdprCounters", k.ssboCounters, k.counterBytes},
+                                 {"LfdprPaperCounters", k.ssboCounters, k.counterBytes},
                                  {"ViewInverse", k.ssboViewInverse, k.viewInverseBytes},
                                  {"LfdprFrameBlock", k.uboFrame, sizeof(lb::LfdprFrameGpu)},
                                  // std140 blocks stay active wherever they are declared.
@@ -363,9 +363,9 @@ std::vector<BlockUse> visibilityBlocks()
                                  {"SceneUvs", k.ssboUvs, sizeof(glm::vec2)},
                                  {"Points", k.ssboPoints, k.compactPointBytes},
                                  {"Records", k.ssboRecords, k.recordBytes},
-                                 {"Draws", k.ssboDraws, sizeof(lb::LfdprDrawGpu)},
+                                 {"Draws", k.ssboDraws, sizeof(lb::LfdprVisibilityDrawGpu)},
                                  {"Large", k.ssboLarge, k.largeEntryBytes},
-                                 {"Workgroups", k.ssboWorkgroups, sizeof(lb::LfdprWorkgroupGpu)},
+                                 {"Workgroups", k.ssboWorkgroups, sizeof(lb::LfdprVisibilityWorkgroupGpu)},
                                  {"Repair", k.ssboRepair, k.repairBytes},
                                  {"LargeDispatch", k.ssboLargeDispatch, k.largeDispatchBytes},
                                  {"VisCounters", k.ssboVisCounters, k.visCounterBytes},
@@ -398,48 +398,48 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
     out.push_back({"gstd reconstruction", {{GL_COMPUTE_SHADER, "gstd_reconstruct.comp"}}, {}, {}});
     out.push_back({"eia", {{GL_COMPUTE_SHADER, "eia_construct.comp"}}, {}, {}});
     out.push_back({"lfdpr paper points",
-                   {{GL_VERTEX_SHADER, "lfdpr_points.vert"},
-                    {GL_GEOMETRY_SHADER, "lfdpr_points.geom"},
-                    {GL_FRAGMENT_SHADER, "lfdpr_points.frag"}},
+                   {{GL_VERTEX_SHADER, "lfdpr_paper_points.vert"},
+                    {GL_GEOMETRY_SHADER, "lfdpr_paper_points.geom"},
+                    {GL_FRAGMENT_SHADER, "lfdpr_paper_points.frag"}},
                    {},
                    paperBlocks()});
-    out.push_back({"lfdpr paper dispatch", {{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}}, {}, paperBlocks()});
-    out.push_back({"lfdpr compute points", {{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, {}, visibilityBlocks()});
-    out.push_back({"lfdpr compute points (large)", {{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, {"LFDPR_LARGE_PASS 1"},
+    out.push_back({"lfdpr paper dispatch", {{GL_COMPUTE_SHADER, "lfdpr_paper_dispatch.comp"}}, {}, paperBlocks()});
+    out.push_back({"lfdpr compute points", {{GL_COMPUTE_SHADER, "lfdpr_visibility_points.comp"}}, {}, visibilityBlocks()});
+    out.push_back({"lfdpr compute points (large)", {{GL_COMPUTE_SHADER, "lfdpr_visibility_points.comp"}}, {"LFDPR_LARGE_PASS 1"},
                    visibilityBlocks()});
     std::vector<std::vector<std::string>> atomics = {{}};
     if (caps.int64Atomics && caps.gpuShaderInt64)
         atomics.push_back({"LFDPR_INT64 1"});
     for (const std::vector<std::string>& defines : atomics) {
         const std::string path = defines.empty() ? " (32-bit)" : " (64-bit)";
-        out.push_back({"lfdpr paper splat" + path, {{GL_COMPUTE_SHADER, "lfdpr_splat.comp"}}, defines, paperBlocks()});
-        out.push_back({"lfdpr paper resolve" + path, {{GL_COMPUTE_SHADER, "lfdpr_resolve.comp"}}, defines,
+        out.push_back({"lfdpr paper splat" + path, {{GL_COMPUTE_SHADER, "lfdpr_paper_splat.comp"}}, defines, paperBlocks()});
+        out.push_back({"lfdpr paper resolve" + path, {{GL_COMPUTE_SHADER, "lfdpr_paper_resolve.comp"}}, defines,
                        paperBlocks()});
-        out.push_back({"lfdpr visibility" + path, {{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, defines,
+        out.push_back({"lfdpr visibility" + path, {{GL_COMPUTE_SHADER, "lfdpr_visibility_splat.comp"}}, defines,
                        visibilityBlocks()});
-        out.push_back({"lfdpr shade" + path, {{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines, visibilityBlocks()});
+        out.push_back({"lfdpr shade" + path, {{GL_COMPUTE_SHADER, "lfdpr_visibility_shade.comp"}}, defines, visibilityBlocks()});
         std::vector<std::string> untextured = defines;
         untextured.push_back("LFD_TEXTURE_MASK 0x0u");
-        out.push_back({"lfdpr shade untextured" + path, {{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, untextured,
+        out.push_back({"lfdpr shade untextured" + path, {{GL_COMPUTE_SHADER, "lfdpr_visibility_shade.comp"}}, untextured,
                        visibilityBlocks()});
     }
-    out.push_back({"lfdpr index pass", {{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {"LFDPR_INDEX_PASS 1"},
+    out.push_back({"lfdpr index pass", {{GL_COMPUTE_SHADER, "lfdpr_visibility_splat.comp"}}, {"LFDPR_INDEX_PASS 1"},
                    visibilityBlocks()});
-    out.push_back({"lfdpr shade list", {{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {}, visibilityBlocks()});
-    out.push_back({"lfdpr shade list (repair)", {{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {"LFDPR_REPAIR_LIST 1"},
+    out.push_back({"lfdpr shade list", {{GL_COMPUTE_SHADER, "lfdpr_visibility_shade_list.comp"}}, {}, visibilityBlocks()});
+    out.push_back({"lfdpr shade list (repair)", {{GL_COMPUTE_SHADER, "lfdpr_visibility_shade_list.comp"}}, {"LFDPR_REPAIR_LIST 1"},
                    visibilityBlocks()});
-    out.push_back({"lfdpr compute points (alpha test)", {{GL_COMPUTE_SHADER, "lfdpr_points.comp"}},
+    out.push_back({"lfdpr compute points (alpha test)", {{GL_COMPUTE_SHADER, "lfdpr_visibility_points.comp"}},
                    {"LFDPR_ALPHA_TEST 1"}, visibilityBlocks()});
-    out.push_back({"lfdpr repair dispatch", {{GL_COMPUTE_SHADER, "lfdpr_repair_dispatch.comp"}}, {},
+    out.push_back({"lfdpr repair dispatch", {{GL_COMPUTE_SHADER, "lfdpr_visibility_repair_dispatch.comp"}}, {},
                    visibilityBlocks()});
     // The GPU work shape (lfdpr_work_shape.glsl) declares the same blocks.
     const std::string gpu = "LFDPR_WORK_GPU 1";
-    out.push_back({"lfdpr compute points (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, {gpu},
+    out.push_back({"lfdpr compute points (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_visibility_points.comp"}}, {gpu},
                    visibilityBlocks()});
-    out.push_back({"lfdpr visibility (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_visibility.comp"}}, {gpu},
+    out.push_back({"lfdpr visibility (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_visibility_splat.comp"}}, {gpu},
                    visibilityBlocks()});
-    out.push_back({"lfdpr shade (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, {gpu}, visibilityBlocks()});
-    out.push_back({"lfdpr shade list (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_shade_list.comp"}}, {gpu},
+    out.push_back({"lfdpr shade (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_visibility_shade.comp"}}, {gpu}, visibilityBlocks()});
+    out.push_back({"lfdpr shade list (GPU work)", {{GL_COMPUTE_SHADER, "lfdpr_visibility_shade_list.comp"}}, {gpu},
                    visibilityBlocks()});
     return out;
 }

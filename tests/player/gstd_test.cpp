@@ -10,7 +10,7 @@
 #include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "gstd_cache.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "renderer_gstd.h"
 #include "view_targets.h"
 
@@ -32,7 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using player::GstdOptions;
-using player::Image;
+using metrics::Image;
 
 // ---- Scene and rendering helpers ------------------------------------------------------
 
@@ -197,11 +197,11 @@ TEST_F(GstdTest, ConvergesTowardsSupersampledMvr)
     std::printf("[ numbers  ] gstd: %u views of %ux%u in %.2f s\n", profile.viewCount, profile.viewWidth,
                 profile.viewHeight, gstd.seconds);
     for (uint32_t v : {0u, profile.viewCount / 2, profile.viewCount - 1}) {
-        const double eGstd = player::rmse(gstd.views[v], truth[v]), eMvr = player::rmse(mvr.views[v], truth[v]);
+        const double eGstd = metrics::rmse(gstd.views[v], truth[v]), eMvr = metrics::rmse(mvr.views[v], truth[v]);
         const double fGstd = metrics::flip(rgb(truth[v]), rgb(gstd.views[v]));
         const double fMvr = metrics::flip(rgb(truth[v]), rgb(mvr.views[v]));
-        const double sGstd = player::rmse(gstd.views[v], spatialTruth[v]);
-        const double sMvr = player::rmse(mvr.views[v], spatialTruth[v]);
+        const double sGstd = metrics::rmse(gstd.views[v], spatialTruth[v]);
+        const double sMvr = metrics::rmse(mvr.views[v], spatialTruth[v]);
         std::printf("[ numbers  ] view %2u vs 8x supersampled mvr: gstd RMSE %.2f FLIP %.4f, mvr RMSE %.2f FLIP "
                     "%.4f; spatial-only reference: gstd RMSE %.2f, mvr RMSE %.2f\n",
                     v, eGstd, fGstd, eMvr, fMvr, sGstd, sMvr);
@@ -210,9 +210,9 @@ TEST_F(GstdTest, ConvergesTowardsSupersampledMvr)
         EXPECT_LT(sGstd, 0.65 * sMvr) << "view " << v;
         char name[32];
         std::snprintf(name, sizeof(name), "view%02u_", v);
-        player::writeImage(dir / (std::string(name) + "truth.png"), truth[v]);
-        player::writeImage(dir / (std::string(name) + "gstd.png"), gstd.views[v]);
-        player::writeImage(dir / (std::string(name) + "mvr.png"), mvr.views[v]);
+        metrics::writeImage(dir / (std::string(name) + "truth.png"), truth[v]);
+        metrics::writeImage(dir / (std::string(name) + "gstd.png"), gstd.views[v]);
+        metrics::writeImage(dir / (std::string(name) + "mvr.png"), mvr.views[v]);
     }
 }
 
@@ -231,7 +231,7 @@ TEST_F(GstdTest, AnisotropicFilteringSharpensGrazingTextures)
     trilinear.maxAnisotropy = 1.0f;
     const RenderedFrame a = renderGstd(scene, profile, aniso), t = renderGstd(scene, profile, trilinear);
     for (uint32_t v = 0; v < profile.viewCount; ++v) {
-        const double eA = player::rmse(a.views[v], truth[v]), eT = player::rmse(t.views[v], truth[v]);
+        const double eA = metrics::rmse(a.views[v], truth[v]), eT = metrics::rmse(t.views[v], truth[v]);
         std::printf("[ numbers  ] view %u at 80 degrees vs 8x supersampled mvr: gstd factor 1 RMSE %.2f with 16x "
                     "anisotropy, %.2f trilinear\n",
                     v, eA, eT);

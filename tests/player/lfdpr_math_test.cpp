@@ -1,10 +1,10 @@
-// LFDPR formulas (shaders/lfdpr_math.glsl compiled as C++ through player/lfdpr_math.h, so
+// LFDPR formulas (shaders/lfdpr_math.glsl compiled as C++ through player/render/lfdpr/lfdpr_math.h, so
 // these test the code the shaders run): pixel-edge reverse projection, T_align / S_ortho,
 // the sampling-spacing property, eq. lfd_texelSplatDensity, size_vpuv, LOD, the tv
 // interpolation with its division guard, coverage rules, and the union-frustum planes.
 // CPU only.
 #include "lfdpr_math.h"
-#include "lfdpr_point_generation.h"
+#include "lfdpr_paper_point_generation.h"
 
 #include "lfd/display_profile.h"
 #include "lfd/framing.h"
@@ -213,7 +213,7 @@ TEST(LfdprMath, TexValueInterpolation)
     EXPECT_NEAR(tv.w, 1.0f, 1e-6f);
 }
 
-// The GS's spacing choice over views (same loop as lfdpr_points.geom, step 3).
+// The GS's spacing choice over views (same loop as lfdpr_paper_points.geom, step 3).
 vec2 finestEdges(vec3 p, vec3 n, const std::vector<vec3>& eyes)
 {
     float h = 1e30f, v = 1e30f;

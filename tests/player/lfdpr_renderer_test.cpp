@@ -9,7 +9,7 @@
 
 #include "gpu_scene.h"
 #include "gpu_timer.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "renderer_lfdpr.h"
 #include "renderer_registry.h"
 #include "view_targets.h"
@@ -28,7 +28,7 @@
 namespace lfd::test {
 namespace {
 
-using player::Image;
+using metrics::Image;
 using player::LfdprOptions;
 
 class LfdprRendererTest : public GlTest {};
@@ -107,8 +107,8 @@ TEST_F(LfdprRendererTest, AgreesWithMvr)
         for (uint32_t v = 0; v < profile.viewCount; ++v) {
             const size_t covered = coveredPixels(mvr.views[v]);
             ASSERT_GT(covered, size_t(160 * 120 / 10)) << "scene visible";
-            EXPECT_GT(player::ssimLuma(lfdpr.views[v], mvr.views[v]), 0.9) << "view " << v;
-            EXPECT_LT(player::rmse(lfdpr.views[v], mvr.views[v]), 10.0) << "view " << v;
+            EXPECT_GT(metrics::ssim(lfdpr.views[v], mvr.views[v]), 0.9) << "view " << v;
+            EXPECT_LT(metrics::rmse(lfdpr.views[v], mvr.views[v]), 10.0) << "view " << v;
             EXPECT_LT(double(coverageDifference(lfdpr.views[v], mvr.views[v])), 0.01 * double(covered))
                 << "holes or overdraw, view " << v;
         }
@@ -117,9 +117,9 @@ TEST_F(LfdprRendererTest, AgreesWithMvr)
             const std::filesystem::path dir = testOutputDir("lfdpr_agrees_with_mvr_" + std::to_string(int(angle * 10)));
             for (uint32_t v = 0; v < profile.viewCount; ++v) {
                 const std::string stem = "angle" + std::to_string(int(angle * 10)) + "_view" + std::to_string(v);
-                player::writeImage(dir / (stem + "_lfdpr.png"), lfdpr.views[v]);
-                player::writeImage(dir / (stem + "_mvr.png"), mvr.views[v]);
-                player::writeDiffImage(dir / (stem + "_diff.png"), lfdpr.views[v], mvr.views[v]);
+                metrics::writeImage(dir / (stem + "_lfdpr.png"), lfdpr.views[v]);
+                metrics::writeImage(dir / (stem + "_mvr.png"), mvr.views[v]);
+                metrics::writeDiffImage(dir / (stem + "_diff.png"), lfdpr.views[v], mvr.views[v]);
             }
             if (HasFailure())
                 FAIL() << "images in " << dir;
@@ -172,7 +172,7 @@ TEST_F(LfdprRendererTest, Int64AndTwoPass32GiveTheSameImage)
     const RenderedFrame a = renderFrame(*r64, scene, profile);
     const RenderedFrame b = renderFrame(*r32, scene, profile);
     for (uint32_t v = 0; v < profile.viewCount; ++v)
-        EXPECT_EQ(player::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
+        EXPECT_EQ(metrics::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
 }
 
 TEST_F(LfdprRendererTest, SubPixelTriangleStillMakesAPointAndAPixel)
@@ -258,7 +258,7 @@ TEST_F(LfdprRendererTest, PointBufferOverflowGrowsAndRecovers)
     timer.finish();
     for (uint32_t v = 0; v < profile.viewCount; ++v) {
         const Image image{profile.viewWidth, profile.viewHeight, 4, targets.readView(v)};
-        EXPECT_EQ(player::maxAbsDiff(image, expected.views[v]), 0) << "view " << v;
+        EXPECT_EQ(metrics::maxAbsDiff(image, expected.views[v]), 0) << "view " << v;
     }
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
 }

@@ -10,7 +10,7 @@
 
 #include "frame.h"
 #include "gpu_scene.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "lfdpr_camera_line.h"
 #include "renderer_lfdpr.h"
 #include "renderer_registry.h"
@@ -31,7 +31,7 @@
 namespace lfd::test {
 namespace {
 
-using player::Image;
+using metrics::Image;
 using player::LfdprOptions;
 
 // ---- Camera-line coherence (CPU) -----------------------------------------------------
@@ -241,8 +241,8 @@ TEST_F(LfdprVisibilityTest, ShadesLikeMvr)
         const Frame b = render(*mvr, scene, profile, 0.9);
         CoverageStats coverage;
         for (uint32_t v = 0; v < profile.viewCount; ++v) {
-            EXPECT_GT(player::ssimLuma(a.views[v], b.views[v]), 0.99) << "view " << v;
-            EXPECT_LT(player::rmse(a.views[v], b.views[v]), 3.0) << "view " << v;
+            EXPECT_GT(metrics::ssim(a.views[v], b.views[v]), 0.99) << "view " << v;
+            EXPECT_LT(metrics::rmse(a.views[v], b.views[v]), 3.0) << "view " << v;
             coverage += compareCoverage(b.views[v], a.views[v]);
         }
         EXPECT_GT(coverage.covered, size_t(1000));
@@ -250,9 +250,9 @@ TEST_F(LfdprVisibilityTest, ShadesLikeMvr)
         if (HasFailure()) {
             const std::filesystem::path dir = testOutputDir("lfdpr_visibility_shades_like_mvr");
             for (uint32_t v = 0; v < profile.viewCount; ++v) {
-                player::writeImage(dir / ("view" + std::to_string(v) + "_lfdpr.png"), a.views[v]);
-                player::writeImage(dir / ("view" + std::to_string(v) + "_mvr.png"), b.views[v]);
-                player::writeDiffImage(dir / ("view" + std::to_string(v) + "_diff.png"), a.views[v], b.views[v]);
+                metrics::writeImage(dir / ("view" + std::to_string(v) + "_lfdpr.png"), a.views[v]);
+                metrics::writeImage(dir / ("view" + std::to_string(v) + "_mvr.png"), b.views[v]);
+                metrics::writeDiffImage(dir / ("view" + std::to_string(v) + "_diff.png"), a.views[v], b.views[v]);
             }
             FAIL() << "images in " << dir;
         }
@@ -315,7 +315,7 @@ TEST_F(LfdprVisibilityTest, OverflowGrowsAndTheFrameIsRenderedAgain)
     EXPECT_EQ(b.info.points, a.info.points);
     EXPECT_GE(b.info.pointCapacity, b.info.points);
     for (uint32_t v = 0; v < profile.viewCount; ++v)
-        EXPECT_EQ(player::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
+        EXPECT_EQ(metrics::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
 
     EXPECT_EQ(b.info.overflowFrames, 1u) << "the first render lost points and is counted";
 
@@ -416,8 +416,8 @@ TEST_F(LfdprVisibilityTest, ShadingGroupsShadeEachMaterialWithItsOwnTextures)
     EXPECT_EQ(stats["shading_passes"], double(textured + 1) * passes)
         << "untextured group + one per textured material, per pass";
     for (size_t v = 0; v < a.views.size(); ++v) {
-        EXPECT_GT(player::ssimLuma(a.views[v], b.views[v]), 0.99) << "view " << v;
-        EXPECT_LT(player::rmse(a.views[v], b.views[v]), 3.0) << "view " << v;
+        EXPECT_GT(metrics::ssim(a.views[v], b.views[v]), 0.99) << "view " << v;
+        EXPECT_LT(metrics::rmse(a.views[v], b.views[v]), 3.0) << "view " << v;
     }
 }
 
@@ -433,7 +433,7 @@ TEST_F(LfdprVisibilityTest, Int64AndSingle32BitPassGiveTheSameImage)
     const Frame a = render(*r64, scene, profile);
     const Frame b = render(*r32, scene, profile);
     for (uint32_t v = 0; v < profile.viewCount; ++v)
-        EXPECT_EQ(player::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
+        EXPECT_EQ(metrics::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
 }
 
 // Alpha-masked materials (glTF MASK): cells whose alpha is below the cutoff emit no
@@ -469,13 +469,13 @@ TEST_F(LfdprVisibilityTest, AlphaMaskedCellsEmitNoPointsAndShowTheirHoles)
     EXPECT_NEAR(double(cubeCut) / double(cubeSolid), 0.5, 0.15) << "half the checker is transparent";
     EXPECT_EQ(othersCut, othersSolid) << "opaque materials keep every point";
     for (size_t v = 0; v < cut.views.size(); ++v) {
-        EXPECT_GT(player::ssimLuma(cut.views[v], reference.views[v]), 0.9) << "view " << v;
-        EXPECT_LT(player::rmse(cut.views[v], reference.views[v]), 12.0) << "view " << v;
-        EXPECT_GT(player::rmse(cut.views[v], solid.views[v]), 2.0) << "the holes must show, view " << v;
+        EXPECT_GT(metrics::ssim(cut.views[v], reference.views[v]), 0.9) << "view " << v;
+        EXPECT_LT(metrics::rmse(cut.views[v], reference.views[v]), 12.0) << "view " << v;
+        EXPECT_GT(metrics::rmse(cut.views[v], solid.views[v]), 2.0) << "the holes must show, view " << v;
     }
     const std::filesystem::path dir = testOutputDir("alpha_mask");
-    player::writeImage(dir / "lfdpr_masked.png", cut.views[0]);
-    player::writeImage(dir / "mvr_masked.png", reference.views[0]);
+    metrics::writeImage(dir / "lfdpr_masked.png", cut.views[0]);
+    metrics::writeImage(dir / "mvr_masked.png", reference.views[0]);
 }
 
 TEST_F(LfdprVisibilityTest, BothWorkShapesRenderTheSameViews)
@@ -552,45 +552,45 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"eia_construct.comp", "comp", {"EIA_MODE 3"}},
         {"gstd_reconstruct.comp", "comp", {}},
         {"view_downsample.comp", "comp", {}},
-        {"lfdpr_points.vert", "vert", {}},
-        {"lfdpr_points.geom", "geom", {}},
-        {"lfdpr_points.frag", "frag", {}},
-        {"lfdpr_dispatch.comp", "comp", {}},
-        {"lfdpr_splat.comp", "comp", {}},
-        {"lfdpr_splat.comp", "comp", {"LFDPR_INT64 1"}},
-        {"lfdpr_resolve.comp", "comp", {}},
-        {"lfdpr_resolve.comp", "comp", {"LFDPR_INT64 1"}},
-        {"lfdpr_points.comp", "comp", {}},
-        {"lfdpr_points.comp", "comp", {"LFDPR_LARGE_PASS 1"}},
-        {"lfdpr_points.comp", "comp", {"LFDPR_ALPHA_TEST 1"}},
-        {"lfdpr_points.comp", "comp", {"LFDPR_ALPHA_TEST 1", "LFDPR_LARGE_PASS 1"}},
-        {"lfdpr_visibility.comp", "comp", {}},
-        {"lfdpr_visibility.comp", "comp", {"LFDPR_INT64 1"}},
-        {"lfdpr_visibility.comp", "comp", {"LFDPR_INDEX_PASS 1"}},
-        {"lfdpr_shade.comp", "comp", {}},
-        {"lfdpr_shade.comp", "comp", {"LFDPR_INT64 1"}},
+        {"lfdpr_paper_points.vert", "vert", {}},
+        {"lfdpr_paper_points.geom", "geom", {}},
+        {"lfdpr_paper_points.frag", "frag", {}},
+        {"lfdpr_paper_dispatch.comp", "comp", {}},
+        {"lfdpr_paper_splat.comp", "comp", {}},
+        {"lfdpr_paper_splat.comp", "comp", {"LFDPR_INT64 1"}},
+        {"lfdpr_paper_resolve.comp", "comp", {}},
+        {"lfdpr_paper_resolve.comp", "comp", {"LFDPR_INT64 1"}},
+        {"lfdpr_visibility_points.comp", "comp", {}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_LARGE_PASS 1"}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_ALPHA_TEST 1"}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_ALPHA_TEST 1", "LFDPR_LARGE_PASS 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_INT64 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_INDEX_PASS 1"}},
+        {"lfdpr_visibility_shade.comp", "comp", {}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_INT64 1"}},
         // Shading programs are compiled per shading group's textures: none, and a subset.
-        {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u"}},
-        {"lfdpr_shade.comp", "comp", {"LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
-        {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u", "LFD_STREAMS 0x1u"}},
-        {"lfdpr_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x1u", "LFD_STREAMS 0x9u"}},
-        {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1"}},
-        {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_CELL_SCALE 2"}},
-        {"lfdpr_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
-        {"lfdpr_shade_list.comp", "comp", {}},
-        {"lfdpr_shade_list.comp", "comp", {"LFDPR_REPAIR_LIST 1"}},
-        {"lfdpr_repair_dispatch.comp", "comp", {}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u"}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u", "LFD_STREAMS 0x1u"}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x1u", "LFD_STREAMS 0x9u"}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1"}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_CELL_SCALE 2"}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
+        {"lfdpr_visibility_shade_list.comp", "comp", {}},
+        {"lfdpr_visibility_shade_list.comp", "comp", {"LFDPR_REPAIR_LIST 1"}},
+        {"lfdpr_visibility_repair_dispatch.comp", "comp", {}},
         // The GPU work shape (lfdpr_work_shape.glsl) as a GPU runs it: with 64-bit atomics.
-        {"lfdpr_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_CELL_SCALE 2"}},
-        {"lfdpr_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
-        {"lfdpr_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_ALPHA_TEST 1", "LFDPR_LARGE_PASS 1"}},
-        {"lfdpr_visibility.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
-        {"lfdpr_visibility.comp", "comp", {"LFDPR_WORK_GPU 1"}},
-        {"lfdpr_visibility.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INDEX_PASS 1"}},
-        {"lfdpr_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
-        {"lfdpr_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFD_TEXTURE_MASK 0x0u"}},
-        {"lfdpr_shade_list.comp", "comp", {"LFDPR_WORK_GPU 1"}},
-        {"lfdpr_repair_dispatch.comp", "comp", {"LFDPR_WORK_GPU 1"}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_CELL_SCALE 2"}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
+        {"lfdpr_visibility_points.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_ALPHA_TEST 1", "LFDPR_LARGE_PASS 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_WORK_GPU 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INDEX_PASS 1"}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFD_TEXTURE_MASK 0x0u"}},
+        {"lfdpr_visibility_shade_list.comp", "comp", {"LFDPR_WORK_GPU 1"}},
+        {"lfdpr_visibility_repair_dispatch.comp", "comp", {"LFDPR_WORK_GPU 1"}},
     };
     const std::filesystem::path dir = testOutputDir("shader_variants");
     size_t checked = 0;

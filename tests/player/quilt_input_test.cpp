@@ -7,7 +7,7 @@
 
 #include "eia_builder.h"
 #include "gpu_timer.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "quilt.h"
 #include "quilt_input.h"
 #include "quilt_slideshow.h"
@@ -91,7 +91,7 @@ std::vector<std::vector<uint8_t>> rampViews(uint32_t count, uint32_t w, uint32_t
     return views;
 }
 
-player::Image quiltImage(const QuiltLayout& layout, const std::vector<std::vector<uint8_t>>& views)
+metrics::Image quiltImage(const QuiltLayout& layout, const std::vector<std::vector<uint8_t>>& views)
 {
     return {layout.width(), layout.height(), 4, player::assembleQuilt(layout, views)};
 }
@@ -115,7 +115,7 @@ TEST(QuiltInput, TilesAreCutExactlyWhenTheImageIsAMultipleOfTheGrid)
 // qx = (3c + x + 0.5) * 10 / 9 - 0.5, clamped to the tile's pixels.
 TEST(QuiltInput, TilesAreResampledWhenTheImageIsNotAMultipleOfTheGrid)
 {
-    player::Image q{10, 4, 4, std::vector<uint8_t>(10 * 4 * 4)};
+    metrics::Image q{10, 4, 4, std::vector<uint8_t>(10 * 4 * 4)};
     for (uint32_t y = 0; y < 4; ++y)
         for (uint32_t x = 0; x < 10; ++x) {
             uint8_t* p = &q.pixels[(y * 10 + x) * 4];
@@ -183,7 +183,7 @@ TEST_F(QuiltInputGl, QuiltOfAnotherLayoutIsInterleavedFromItsOwnViews)
     const fs::path dir = testOutputDir("quilt_input_5x9");
     const fs::path file = dir / "other_qs5x9a1.78.png";
     const QuiltLayout layout{5, 9, w, h};
-    player::writeImage(file, player::assembleQuilt(layout, views).data(), layout.width(), layout.height(), 4);
+    metrics::writeImage(file, player::assembleQuilt(layout, views).data(), layout.width(), layout.height(), 4);
 
     player::QuiltSlideshow show(panel, {file}, 0, 5.0);
     EXPECT_EQ(show.profile().viewCount, 45u);
@@ -205,8 +205,8 @@ TEST_F(QuiltInputGl, FolderSlideshowFollowsTheClock)
     const fs::path dir = testOutputDir("quilt_input_slides");
     const auto views = rampViews(6, 16, 9);
     const QuiltLayout a{3, 2, 16, 9}, b{2, 3, 16, 9};
-    player::writeImage(dir / "1_qs3x2a1.78.png", player::assembleQuilt(a, views).data(), a.width(), a.height(), 4);
-    player::writeImage(dir / "2_qs2x3a1.78.png", player::assembleQuilt(b, views).data(), b.width(), b.height(), 4);
+    metrics::writeImage(dir / "1_qs3x2a1.78.png", player::assembleQuilt(a, views).data(), a.width(), a.height(), 4);
+    metrics::writeImage(dir / "2_qs2x3a1.78.png", player::assembleQuilt(b, views).data(), b.width(), b.height(), 4);
     player::QuiltSlideshow show(panel, player::listQuiltFiles(dir), 0, 2.0);
     player::GpuTimer timer;
     show.renderFrame(1.9, timer, player::Reconstruction::None);

@@ -13,7 +13,7 @@
 #include "frame_stages.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "renderer_registry.h"
 #include "shader_library.h"
 #include "view_targets.h"
@@ -302,10 +302,10 @@ void uploadViews(player::ViewTargets& targets, const std::vector<std::vector<uin
 
 TEST_F(ReconstructionGpu, ShaderConstantsMatchTheEnum)
 {
-    EXPECT_EQ(gl::shaderDefineValue("eia_construct.comp", "EIA_MODE_SPATIAL"), long(Reconstruction::Spatial));
-    EXPECT_EQ(gl::shaderDefineValue("eia_construct.comp", "EIA_MODE_VIEW"), long(Reconstruction::View));
-    EXPECT_EQ(gl::shaderDefineValue("eia_construct.comp", "EIA_MODE_VIEW_SPATIAL"), long(Reconstruction::ViewSpatial));
-    EXPECT_EQ(gl::shaderDefineValue("eia_construct.comp", "EIA_SAMPLES"), long(ReconstructionFilter::kSamples));
+    EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_MODE_SPATIAL"), long(Reconstruction::Spatial));
+    EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_MODE_VIEW"), long(Reconstruction::View));
+    EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_MODE_VIEW_SPATIAL"), long(Reconstruction::ViewSpatial));
+    EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_SAMPLES"), long(ReconstructionFilter::kSamples));
 }
 
 TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)

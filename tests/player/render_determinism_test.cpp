@@ -12,7 +12,7 @@
 #include "gl_test_support.h"
 #include "test_scenes.h"
 
-#include "image_output.h"
+#include "image_metrics.h"
 #include "lfd/pack.h"
 
 #include <gtest/gtest.h>
@@ -67,28 +67,28 @@ TEST_F(RenderDeterminism, TwoProcessesRenderTheSameBytes)
             ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0) << c.name << ": " << command;
             runs.push_back(out);
         }
-        const player::Image eia0 = player::readImage(runs[0] / "eia.png", 4);
-        const player::Image eia1 = player::readImage(runs[1] / "eia.png", 4);
+        const metrics::Image eia0 = metrics::readImage(runs[0] / "eia.png", 4);
+        const metrics::Image eia1 = metrics::readImage(runs[1] / "eia.png", 4);
         for (uint32_t v = 0; v < views; ++v) {
             char name[32];
             std::snprintf(name, sizeof(name), "views/view_%03u.png", v);
-            const player::Image a = player::readImage(runs[0] / name, 4);
-            const player::Image b = player::readImage(runs[1] / name, 4);
+            const metrics::Image a = metrics::readImage(runs[0] / name, 4);
+            const metrics::Image b = metrics::readImage(runs[1] / name, 4);
             ASSERT_EQ(a.width, 96u);
             if (c.exact)
-                EXPECT_TRUE(a.pixels == b.pixels) << c.name << " view " << v << ": RMSE " << player::rmse(a, b);
+                EXPECT_TRUE(a.pixels == b.pixels) << c.name << " view " << v << ": RMSE " << metrics::rmse(a, b);
             else
-                EXPECT_LE(player::rmse(a, b), kPaperTieRmse) << c.name << " view " << v;
+                EXPECT_LE(metrics::rmse(a, b), kPaperTieRmse) << c.name << " view " << v;
             // Not trivially equal: the view shows the scene, not the background only.
-            EXPECT_GT(player::rmse(a, player::Image{a.width, a.height, 4,
+            EXPECT_GT(metrics::rmse(a, metrics::Image{a.width, a.height, 4,
                                                     std::vector<uint8_t>(a.pixels.size(), 0)}),
                       10.0)
                 << c.name << " view " << v;
         }
         if (c.exact)
-            EXPECT_TRUE(eia0.pixels == eia1.pixels) << c.name << " EIA: RMSE " << player::rmse(eia0, eia1);
+            EXPECT_TRUE(eia0.pixels == eia1.pixels) << c.name << " EIA: RMSE " << metrics::rmse(eia0, eia1);
         else
-            EXPECT_LE(player::rmse(eia0, eia1), kPaperTieRmse) << c.name << " EIA";
+            EXPECT_LE(metrics::rmse(eia0, eia1), kPaperTieRmse) << c.name << " EIA";
     }
 }
 

@@ -89,7 +89,7 @@ std::string tenthPrototypeProfileJson(const std::string& name)
     })";
 }
 
-double maskedRmse(const player::Image& a, const player::Image& b, const std::vector<uint8_t>& mask)
+double maskedRmse(const metrics::Image& a, const metrics::Image& b, const std::vector<uint8_t>& mask)
 {
     double sum = 0.0;
     size_t n = 0;
@@ -103,7 +103,7 @@ double maskedRmse(const player::Image& a, const player::Image& b, const std::vec
     return n ? std::sqrt(sum / double(n)) : 0.0;
 }
 
-double ssimOverMaskBox(const player::Image& a, const player::Image& reference, const std::vector<uint8_t>& mask)
+double ssimOverMaskBox(const metrics::Image& a, const metrics::Image& reference, const std::vector<uint8_t>& mask)
 {
     int x0 = int(a.width), y0 = int(a.height), x1 = -1, y1 = -1;
     for (size_t i = 0; i < mask.size(); ++i)
@@ -120,18 +120,18 @@ double ssimOverMaskBox(const player::Image& a, const player::Image& reference, c
     y0 = std::max(0, y0 - 5);
     x1 = std::min(int(a.width) - 1, x1 + 5);
     y1 = std::min(int(a.height) - 1, y1 + 5);
-    auto crop = [&](const player::Image& image) {
-        player::Image c{uint32_t(x1 - x0 + 1), uint32_t(y1 - y0 + 1), 4, {}};
+    auto crop = [&](const metrics::Image& image) {
+        metrics::Image c{uint32_t(x1 - x0 + 1), uint32_t(y1 - y0 + 1), 4, {}};
         for (int y = y0; y <= y1; ++y) {
             const uint8_t* row = &image.pixels[(size_t(y) * image.width + size_t(x0)) * 4];
             c.pixels.insert(c.pixels.end(), row, row + size_t(c.width) * 4);
         }
         return c;
     };
-    return player::ssimLuma(crop(a), crop(reference));
+    return metrics::ssim(crop(a), crop(reference));
 }
 
-std::vector<uint8_t> coverageMask(const player::Image& image)
+std::vector<uint8_t> coverageMask(const metrics::Image& image)
 {
     const uint8_t bg = uint8_t(std::lround(player::kBackground[0] * 255.0f));
     std::vector<uint8_t> mask(size_t(image.width) * image.height);
@@ -142,7 +142,7 @@ std::vector<uint8_t> coverageMask(const player::Image& image)
     return mask;
 }
 
-CoverageStats compareCoverage(const player::Image& reference, const player::Image& test)
+CoverageStats compareCoverage(const metrics::Image& reference, const metrics::Image& test)
 {
     const std::vector<uint8_t> m = coverageMask(reference), l = coverageMask(test);
     const int W = int(reference.width), H = int(reference.height);
@@ -169,7 +169,7 @@ CoverageStats compareCoverage(const player::Image& reference, const player::Imag
     return s;
 }
 
-std::string blankReason(const player::Image& image)
+std::string blankReason(const metrics::Image& image)
 {
     const size_t pixels = size_t(image.width) * image.height;
     if (pixels == 0)
@@ -191,23 +191,23 @@ std::string blankReason(const player::Image& image)
     return text;
 }
 
-std::string imageMismatch(const player::Image& written, const player::Image& reference, int tolerance)
+std::string imageMismatch(const metrics::Image& written, const metrics::Image& reference, int tolerance)
 {
     if (written.width != reference.width || written.height != reference.height ||
         written.channels != reference.channels)
         return "size " + std::to_string(written.width) + "x" + std::to_string(written.height) + "x" +
                std::to_string(written.channels) + ", expected " + std::to_string(reference.width) + "x" +
                std::to_string(reference.height) + "x" + std::to_string(reference.channels);
-    const int diff = player::maxAbsDiff(written, reference);
+    const int diff = metrics::maxAbsDiff(written, reference);
     if (diff > tolerance)
         return "differs from the reference by up to " + std::to_string(diff) + " (tolerance " +
-               std::to_string(tolerance) + "), RMSE " + std::to_string(player::rmse(written, reference));
+               std::to_string(tolerance) + "), RMSE " + std::to_string(metrics::rmse(written, reference));
     return blankReason(written);
 }
 
-player::Image boxDownsample(const player::Image& image, uint32_t factor)
+metrics::Image boxDownsample(const metrics::Image& image, uint32_t factor)
 {
-    player::Image out{image.width / factor, image.height / factor, 4, {}};
+    metrics::Image out{image.width / factor, image.height / factor, 4, {}};
     out.pixels.resize(size_t(out.width) * out.height * 4);
     for (uint32_t y = 0; y < out.height; ++y)
         for (uint32_t x = 0; x < out.width; ++x)

@@ -5,7 +5,7 @@
 #pragma once
 
 #include "frame.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "renderer.h"
 
 #include "lfd/scene.h"
@@ -25,8 +25,8 @@ struct RenderRequest {
 
 struct RenderedFrame {
     player::FrameSetup setup;
-    std::vector<player::Image> views;      // RGBA8, image order, view 0 = leftmost camera
-    player::Image eia;                     // panel size, image order; empty unless asked for
+    std::vector<metrics::Image> views;      // RGBA8, image order, view 0 = leftmost camera
+    metrics::Image eia;                     // panel size, image order; empty unless asked for
     std::map<std::string, double> stageMs; // GpuTimer stage -> mean ms over the frames
     std::map<std::string, double> stats;   // the renderer's extraStats() after the last frame
     double seconds = 0.0;                  // wall time: upload, frames and read-back
@@ -53,29 +53,29 @@ DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height);
 std::string tenthPrototypeProfileJson(const std::string& name);
 
 // RMSE of the colour channels over the pixels where `mask` is set (0 for an empty mask).
-double maskedRmse(const player::Image& a, const player::Image& b, const std::vector<uint8_t>& mask);
+double maskedRmse(const metrics::Image& a, const metrics::Image& b, const std::vector<uint8_t>& mask);
 // SSIM (luma) over the bounding box of `mask`, grown by the 5-pixel SSIM window radius,
 // so a mostly empty background does not dilute differences; 1 for an empty mask.
-double ssimOverMaskBox(const player::Image& a, const player::Image& reference, const std::vector<uint8_t>& mask);
+double ssimOverMaskBox(const metrics::Image& a, const metrics::Image& reference, const std::vector<uint8_t>& mask);
 
 // ---- Checks of an image someone else produced (a tool's output file) ------------------
 
 // Why `image` shows nothing, or "" when it shows something: blank when more than 99% of its
 // pixels have one colour (all black, all background, any flat fill).
-std::string blankReason(const player::Image& image);
+std::string blankReason(const metrics::Image& image);
 // Why `written` is not `reference`, or "" when it is: different sizes, or a channel that
 // differs by more than `tolerance` (0..255); then blankReason(written), so two equally
 // blank images (a broken renderer on both sides) fail too.
-std::string imageMismatch(const player::Image& written, const player::Image& reference, int tolerance);
+std::string imageMismatch(const metrics::Image& written, const metrics::Image& reference, int tolerance);
 
 // factor x factor box filter of RGBA8 bytes (downsamples a supersampled reference render).
-player::Image boxDownsample(const player::Image& image, uint32_t factor);
+metrics::Image boxDownsample(const metrics::Image& image, uint32_t factor);
 
 // ---- Coverage of one renderer against a reference (lfdpr against mvr) ----------------
 
 // 1 where a pixel is covered: its colour differs from the renderers' clear colour
 // (player::kBackground, written as is: 0.05 -> 13).
-std::vector<uint8_t> coverageMask(const player::Image& image);
+std::vector<uint8_t> coverageMask(const metrics::Image& image);
 
 struct CoverageStats {
     size_t covered = 0;  // pixels the reference covers
@@ -97,6 +97,6 @@ struct CoverageStats {
 // Silhouette band: a pixel is "near the boundary" if any pixel of its 3 x 3
 // neighbourhood has the other coverage state in the reference image (image edges count as
 // empty); holes and extra coverage are only counted outside that band.
-CoverageStats compareCoverage(const player::Image& reference, const player::Image& test);
+CoverageStats compareCoverage(const metrics::Image& reference, const metrics::Image& test);
 
 } // namespace lfd::test

@@ -10,7 +10,7 @@
 
 #include "bake.h"
 
-#include "image_output.h"
+#include "image_metrics.h"
 #include "renderer_registry.h"
 #include "renderer_lfdpr.h"
 
@@ -27,7 +27,7 @@
 namespace lfd::test {
 namespace {
 
-using player::Image;
+using metrics::Image;
 
 // A 384x216 panel built like the prototype at a tenth of its size (0.72 mm lenses, the
 // prototype's tilt), so EIAs stay small. With 160x120 views its view pixels are
@@ -260,8 +260,8 @@ Agreement agreement(const Rendered& test, const Rendered& reference)
         a.meanRmse += m.rmse / n;
         a.worstSsim = std::min(a.worstSsim, m.ssim);
         a.worstRmse = std::max(a.worstRmse, m.rmse);
-        a.wholeViewSsim += player::ssimLuma(test.views[v], reference.views[v]) / n;
-        a.wholeViewRmse += player::rmse(test.views[v], reference.views[v]) / n;
+        a.wholeViewSsim += metrics::ssim(test.views[v], reference.views[v]) / n;
+        a.wholeViewRmse += metrics::rmse(test.views[v], reference.views[v]) / n;
     }
     const RegionMetrics e = regionMetrics(test.eia, reference.eia);
     a.eiaSsim = e.ssim;
@@ -294,9 +294,9 @@ Agreement lfdprAgreement(const Scene& scene, const std::string& label, const std
     // Images to look at when a threshold trips.
     const std::filesystem::path dir = testOutputDir("renderer_comparison_" + outName);
     const size_t centre = mvr.views.size() / 2;
-    player::writeImage(dir / "mvr_view.png", mvr.views[centre]);
-    player::writeImage(dir / "lfdpr_view.png", lfdpr.views[centre]);
-    player::writeDiffImage(dir / "diff_view.png", lfdpr.views[centre], mvr.views[centre]);
+    metrics::writeImage(dir / "mvr_view.png", mvr.views[centre]);
+    metrics::writeImage(dir / "lfdpr_view.png", lfdpr.views[centre]);
+    metrics::writeDiffImage(dir / "diff_view.png", lfdpr.views[centre], mvr.views[centre]);
     return a;
 }
 
@@ -514,9 +514,9 @@ TEST_F(RendererComparisonTest, MultiviewMipmappingLowersErrorOnMinifiedTexture)
     EXPECT_LT(errWith, 5.0);
     EXPECT_LE(errVisibility, errWith + 0.05);
     const std::filesystem::path dir = testOutputDir("renderer_comparison_mipmapping");
-    player::writeImage(dir / "reference_4x.png", boxDownsample(reference4x.views[1], 4));
-    player::writeImage(dir / "lfdpr_mv_mipmapping.png", a.views[1]);
-    player::writeImage(dir / "lfdpr_lod0.png", b.views[1]);
+    metrics::writeImage(dir / "reference_4x.png", boxDownsample(reference4x.views[1], 4));
+    metrics::writeImage(dir / "lfdpr_mv_mipmapping.png", a.views[1]);
+    metrics::writeImage(dir / "lfdpr_lod0.png", b.views[1]);
 }
 
 } // namespace

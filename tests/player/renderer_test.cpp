@@ -4,7 +4,7 @@
 #include "render_test_util.h"
 #include "test_scenes.h"
 
-#include "image_output.h"
+#include "image_metrics.h"
 #include "renderer_registry.h"
 
 #include "skip_or_fail.h"
@@ -18,7 +18,7 @@
 namespace lfd::test {
 namespace {
 
-using player::Image;
+using metrics::Image;
 
 class RendererTest : public GlTest {};
 
@@ -93,7 +93,7 @@ TEST_F(RendererTest, LayeredMatchesPerViewPasses)
     ASSERT_EQ(a.views.size(), b.views.size());
     for (size_t v = 0; v < a.views.size(); ++v) {
         EXPECT_GT(nonBackgroundPixels(a.views[v]), 96u * 72u / 10) << "view " << v << " is empty";
-        EXPECT_LE(player::maxAbsDiff(a.views[v], b.views[v]), 1) << "view " << v;
+        EXPECT_LE(metrics::maxAbsDiff(a.views[v], b.views[v]), 1) << "view " << v;
         size_t same = 0;
         for (size_t i = 0; i < a.views[v].pixels.size(); i += 4)
             same += std::equal(&a.views[v].pixels[i], &a.views[v].pixels[i] + 4, &b.views[v].pixels[i]);
@@ -118,26 +118,26 @@ TEST_F(RendererTest, MvrMatchesGoldenImages)
         const std::filesystem::path golden = goldenDir / ("mvr_view" + std::to_string(view) + ".png");
         if (regenerate) {
             std::filesystem::create_directories(goldenDir);
-            player::writeImage(golden, r.views[view]);
+            metrics::writeImage(golden, r.views[view]);
             continue;
         }
         ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " missing; run with LFD_REGENERATE_GOLDEN=1";
-        const Image expected = player::readImage(golden, 4);
+        const Image expected = metrics::readImage(golden, 4);
         ASSERT_EQ(expected.width, r.views[view].width);
         ASSERT_EQ(expected.height, r.views[view].height);
-        const double error = player::rmse(expected, r.views[view]);
-        const int maxDiff = player::maxAbsDiff(expected, r.views[view]);
+        const double error = metrics::rmse(expected, r.views[view]);
+        const int maxDiff = metrics::maxAbsDiff(expected, r.views[view]);
         if (error >= 1.5 || maxDiff > 64) {
             const std::filesystem::path dir = testOutputDir("MvrMatchesGoldenImages");
-            player::writeImage(dir / ("actual_view" + std::to_string(view) + ".png"), r.views[view]);
-            player::writeDiffImage(dir / ("diff_view" + std::to_string(view) + ".png"), expected, r.views[view]);
+            metrics::writeImage(dir / ("actual_view" + std::to_string(view) + ".png"), r.views[view]);
+            metrics::writeDiffImage(dir / ("diff_view" + std::to_string(view) + ".png"), expected, r.views[view]);
             ADD_FAILURE() << "view " << view << ": RMSE " << error << ", max diff " << maxDiff
                           << " against " << golden << "; actual and diff images in " << dir;
         }
     }
     // Views differ by parallax, but only slightly.
-    EXPECT_GT(player::rmse(r.views[0], r.views[3]), 2.0);
-    EXPECT_GT(player::ssimLuma(r.views[0], r.views[3]), 0.5);
+    EXPECT_GT(metrics::rmse(r.views[0], r.views[3]), 2.0);
+    EXPECT_GT(metrics::ssim(r.views[0], r.views[3]), 0.5);
 }
 
 // Analytic geometry and shading. Two emissive-only quads (direct and ambient light add
@@ -202,7 +202,7 @@ TEST_F(RendererTest, MissingStreamsAndDefaultMaterialRender)
         const RenderedFrame b =
             renderFrame("mvr-layered", scene, smallProfile(4, 64, 48), {.time = 0.5, .turntablePeriod = 10.0});
         for (size_t v = 0; v < a.views.size(); ++v)
-            EXPECT_LE(player::maxAbsDiff(a.views[v], b.views[v]), 1);
+            EXPECT_LE(metrics::maxAbsDiff(a.views[v], b.views[v]), 1);
     }
 }
 

@@ -3,7 +3,7 @@
 
 #include "display_test_profiles.h"
 #include "eia_builder.h"
-#include "image_output.h"
+#include "image_metrics.h"
 
 #include <gtest/gtest.h>
 
@@ -12,6 +12,7 @@
 
 using namespace lfd;
 using namespace lfd::player;
+using namespace lfd::metrics;
 
 namespace {
 

@@ -18,7 +18,7 @@
 
 #include "gpu_scene.h"
 #include "gpu_timer.h"
-#include "image_output.h"
+#include "image_metrics.h"
 #include "image_metrics.h"
 #include "frame_uniforms.h"
 #include "renderer_registry.h"
@@ -40,7 +40,7 @@
 namespace lfd::test {
 namespace {
 
-using player::Image;
+using metrics::Image;
 
 // Holes against gstd inside surfaces, fraction of gstd's interior pixels (all 8
 // neighbours covered). gstd covers a pixel where its two sub-views at 4x resolution see
@@ -322,7 +322,7 @@ TEST_F(StabilityMatrix, EveryMethodAgainstGstd)
                 continue;
             double mse = 0.0;
             for (size_t v = 0; v < views.size(); ++v)
-                mse += std::pow(player::rmse(views[v], ref[v]), 2.0);
+                mse += std::pow(metrics::rmse(views[v], ref[v]), 2.0);
             r.viewsRmse = std::sqrt(mse / double(views.size()));
             const size_t centre = views.size() / 2;
             const auto rgb = [](const Image& im) {

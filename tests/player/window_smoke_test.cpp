@@ -4,7 +4,7 @@
 #include "test_scenes.h"
 #include "xvfb_support.h"
 
-#include "image_output.h"
+#include "image_metrics.h"
 
 #include "lfd/pack.h"
 
@@ -51,7 +51,7 @@ TEST(WindowSmoke, RendersEveryOutputAndSavesScreenshotsUnderXvfb)
         ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << log;
         ASSERT_TRUE(fs::exists(shot)) << log;
 
-        const player::Image image = player::readImage(shot, 3);
+        const metrics::Image image = metrics::readImage(shot, 3);
         EXPECT_EQ(image.width, 320u);
         EXPECT_EQ(image.height, 200u);
         // Not uniform: the scene shows up (many pixels differ from the first one).

@@ -5,7 +5,7 @@
 // at the wrong place, scaled, or colour-converted shows up).
 #pragma once
 
-#include "image_output.h"
+#include "image_metrics.h"
 
 #include <chrono>
 #include <cerrno>
@@ -100,7 +100,7 @@ public:
     // The screen as RGB8 (image order), decoded from Xvfb's XWD framebuffer file: a
     // 100-byte big-endian header of 25 CARD32 (XWDFileHeader), the window name, ncolors
     // 12-byte colour entries, then the pixels (32 bits per pixel at depth 24).
-    player::Image readScreen() const
+    metrics::Image readScreen() const
     {
         std::ifstream in(fbdir_ / "Xvfb_screen0", std::ios::binary);
         const std::vector<uint8_t> b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -116,7 +116,7 @@ public:
         const size_t offset = size_t(headerSize) + size_t(ncolors) * 12;
         if (b.size() < offset + size_t(bytesPerLine) * height)
             throw std::runtime_error("Xvfb framebuffer file truncated");
-        player::Image image{width, height, 3, std::vector<uint8_t>(size_t(width) * height * 3)};
+        metrics::Image image{width, height, 3, std::vector<uint8_t>(size_t(width) * height * 3)};
         for (uint32_t y = 0; y < height; ++y)
             for (uint32_t x = 0; x < width; ++x) {
                 const uint8_t* p = &b[offset + size_t(y) * bytesPerLine + size_t(x) * 4];

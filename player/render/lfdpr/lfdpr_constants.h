@@ -17,17 +17,17 @@ struct LfdprConstants {
     // Paper pipeline and shared.
     unsigned ssboPoints = lfdpr_bindings::kSsboPoints, ssboTriangles = lfdpr_bindings::kSsboTriangles,
              ssboSampling = lfdpr_bindings::kSsboSampling, ssboCounters = lfdpr_bindings::kSsboCounters,
-             ssboViewDepth = lfdpr_bindings::kSsboViewDepth, ssboViewColor = lfdpr_bindings::kSsboViewColor,
+             ssboViewDepth = lfdpr_bindings::kSsboViewDepth, ssboViewWinner = lfdpr_bindings::kSsboViewWinner,
              ssboViewInverse = lfdpr_bindings::kSsboViewInverse, uboFrame = lfdpr_bindings::kUboFrame,
              imageViews = lfdpr_bindings::kImageViews;
     int locPass = lfdpr_bindings::kLocPass, locRecordBase = lfdpr_bindings::kLocRecordBase,
         locFirstTriangle = lfdpr_bindings::kLocFirstTriangle;
     uint32_t groupSize = lfdpr_bindings::kGroupSize; // local_size_x of the point-indexed passes
     uint32_t tileSize = lfdpr_bindings::kTileSize;   // the paper pipeline's sampling viewport
-    uint32_t pointBytes = sizeof(lfdpr_bindings::PointGpu);
-    uint32_t triangleRecordBytes = sizeof(lfdpr_bindings::TriangleRecordGpu);
-    uint32_t triangleSamplingBytes = sizeof(lfdpr_bindings::TriangleSamplingGpu);
-    uint32_t counterBytes = sizeof(lfdpr_bindings::LfdprCountersGpu);
+    uint32_t pointBytes = sizeof(lfdpr_bindings::LfdprPaperPointGpu);
+    uint32_t triangleRecordBytes = sizeof(lfdpr_bindings::LfdprPaperTriangleGpu);
+    uint32_t triangleSamplingBytes = sizeof(lfdpr_bindings::LfdprPaperSamplingGpu);
+    uint32_t counterBytes = sizeof(lfdpr_bindings::LfdprPaperCountersGpu);
     uint32_t viewInverseBytes = sizeof(glm::mat4); // ViewInverse: mat4 sceneFromClip[]
     // Visibility pipeline.
     unsigned ssboRecords = lfdpr_bindings::kSsboRecords, ssboIndices = lfdpr_bindings::kSsboIndices,
@@ -49,15 +49,15 @@ struct LfdprConstants {
         locLargeClass = lfdpr_bindings::kLocLargeClass,
         locShadeMaterial = lfdpr_bindings::kLocShadeMaterial, locLargeBase = lfdpr_bindings::kLocLargeBase,
         locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups;
-    // Shading in tiles per shading group (lfdpr_shade_list.comp, lfdpr_shade.comp).
+    // Shading in tiles per shading group (lfdpr_visibility_shade_list.comp, lfdpr_visibility_shade.comp).
     uint32_t shadeTile = lfdpr_bindings::kShadeTile, maxShadeGroups = lfdpr_bindings::kMaxShadeGroups,
              shadeDispatchWidth = lfdpr_bindings::kShadeDispatchWidth, viewChunk = lfdpr_bindings::kViewChunk,
              shadeEntryWords = lfdpr_bindings::kShadeEntryWords;
-    uint32_t shadeCounterBytes = sizeof(lfdpr_bindings::LfdprShadeCountersGpu);
-    uint32_t recordBytes = sizeof(lfdpr_bindings::LfdprRecordGpu);
-    uint32_t compactPointBytes = sizeof(lfdpr_bindings::LfdprPointGpu);
-    uint32_t visCounterBytes = sizeof(lfdpr_bindings::LfdprVisCountersGpu);
-    uint32_t repairBytes = sizeof(lfdpr_bindings::LfdprRepairGpu);
+    uint32_t shadeCounterBytes = sizeof(lfdpr_bindings::LfdprVisibilityShadeCountersGpu);
+    uint32_t recordBytes = sizeof(lfdpr_bindings::LfdprVisibilityRecordGpu);
+    uint32_t compactPointBytes = sizeof(lfdpr_bindings::LfdprVisibilityPointGpu);
+    uint32_t visCounterBytes = sizeof(lfdpr_bindings::LfdprVisibilityCountersGpu);
+    uint32_t repairBytes = sizeof(lfdpr_bindings::LfdprVisibilityRepairGpu);
     uint32_t largeDispatchBytes = sizeof(glm::uvec4); // LargeDispatch: uvec4 per dispatch class
     uint32_t largeEntryBytes = sizeof(glm::uvec2);    // Large: (draw, primitive) per queued triangle
     uint32_t optionLfdSampling = lfdpr_bindings::kOptionLfdSampling,

@@ -1,6 +1,6 @@
 // LFDPR's counter blocks through the generated structs (named fields, never array
-// positions): LfdprCountersGpu (the paper's pipeline, LfdprCounters block) and
-// LfdprVisCountersGpu (the visibility pipeline). The renderers read them back frames later
+// positions): LfdprPaperCountersGpu (the paper's pipeline, LfdprPaperCounters block) and
+// LfdprVisibilityCountersGpu (the visibility pipeline). The renderers read them back frames later
 // through gl::GpuReadback, never waiting for them.
 #pragma once
 
@@ -11,8 +11,8 @@
 
 namespace lfd::player {
 
-using lfdpr_bindings::LfdprCountersGpu;
-using lfdpr_bindings::LfdprVisCountersGpu;
+using lfdpr_bindings::LfdprPaperCountersGpu;
+using lfdpr_bindings::LfdprVisibilityCountersGpu;
 
 // The point capacity each submitted frame ran with, kept until its counters come back
 // (frames later): a count is judged against the capacity of its own frame, not the one

@@ -20,8 +20,8 @@ namespace lfd::player {
 
 namespace {
 
-using lfdpr_bindings::LfdprRepairGpu;
-using lfdpr_bindings::LfdprVisCountersGpu;
+using lfdpr_bindings::LfdprVisibilityRepairGpu;
+using lfdpr_bindings::LfdprVisibilityCountersGpu;
 
 std::vector<std::string> atomicsDefines(bool int64)
 {
@@ -32,7 +32,7 @@ uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 
 constexpr uint32_t kStreamsAll = kStreamPosition | kStreamNormal | kStreamTangent | kStreamUv;
 
-// LFDPR_SHADE_WORK_BUFFER: LfdprShadeCountersGpu (repairCount, repairBase, repairCapacity),
+// LFDPR_SHADE_WORK_BUFFER: LfdprVisibilityShadeCountersGpu (repairCount, repairBase, repairCapacity),
 // then the dispatches.
 constexpr GLintptr kDispatchOffset = 16;
 
@@ -60,16 +60,19 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, uint32_
     // A shader error thrown below leaves nothing behind: the programs built so far are
     // owned by their handles.
     std::vector<std::string> splatDefines;
+    // The test hook lives here, not in the shader: every n-th point also stores its record
+    // unconditionally, as a lost race would, so tests drive the repair through both paths.
     if (!int64 && testIndexRaces > 0)
-        splatDefines.push_back("LFDPR_TEST_INDEX_RACES " + std::to_string(testIndexRaces));
-    splatProgram_ = build("lfdpr_visibility.comp", splatDefines);
+        splatDefines.push_back("LFDPR_AFTER_INDEX_WRITE(index, pixel, record) if ((index) % " +
+                               std::to_string(testIndexRaces) + "u == 0u) viewIndex[pixel] = (record)");
+    splatProgram_ = build("lfdpr_visibility_splat.comp", splatDefines);
     if (!int64)
-        indexProgram_ = build("lfdpr_visibility.comp", {"LFDPR_INDEX_PASS 1"});
-    listProgram_ = build("lfdpr_shade_list.comp", {});
+        indexProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1"});
+    listProgram_ = build("lfdpr_visibility_shade_list.comp", {});
     if (!int64)
-        listRepairProgram_ = build("lfdpr_shade_list.comp", {"LFDPR_REPAIR_LIST 1"});
+        listRepairProgram_ = build("lfdpr_visibility_shade_list.comp", {"LFDPR_REPAIR_LIST 1"});
     if (!int64) {
-        repairDispatchProgram_ = build("lfdpr_repair_dispatch.comp", {});
+        repairDispatchProgram_ = build("lfdpr_visibility_repair_dispatch.comp", {});
         repair_ = gl::createBuffer(LfdprConstants::get().repairBytes);
     }
     // The untextured group's program is always needed; built now (for a scene with every
@@ -90,7 +93,7 @@ unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t str
     defines.emplace_back(mask);
     std::snprintf(mask, sizeof(mask), "LFD_STREAMS 0x%Xu", streams);
     defines.emplace_back(mask);
-    gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_shade.comp"}}, defines));
+    gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility_shade.comp"}}, defines));
     const unsigned name = program.get();
     shadePrograms_[key] = std::move(program);
     return name;
@@ -131,7 +134,7 @@ size_t LfdprVisibilityShading::shadeWorkBytes() const {
     return shadeWorkBytes_ + chunkMaskBytes_;
 }
 
-size_t LfdprVisibilityShading::repairCountOffset() { return offsetof(LfdprRepairGpu, indexPass) + 12; }
+size_t LfdprVisibilityShading::repairCountOffset() { return offsetof(LfdprVisibilityRepairGpu, indexPass) + 12; }
 
 void LfdprVisibilityShading::beginFrame(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
                                         ViewTargets& targets)
@@ -151,13 +154,13 @@ void LfdprVisibilityShading::beginFrame(const GpuScene& scene, const std::vector
 }
 
 // The shading counters and each group's indirect dispatch: (0, 1, 0) workgroups, entry
-// count 0 (lfdpr_shade_list.comp keeps x and y as maxima and sets z with the first entry).
+// count 0 (lfdpr_visibility_shade_list.comp keeps x and y as maxima and sets z with the first entry).
 void LfdprVisibilityShading::clearShadeDispatches() const
 {
     const GLuint empty[4] = {0u, 1u, 0u, 0u};
     glClearNamedBufferSubData(shadeWork_, GL_RGBA32UI, kDispatchOffset, GLsizeiptr(groupCount_) * 16,
                               GL_RGBA_INTEGER, GL_UNSIGNED_INT, empty);
-    const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprShadeCountersGpu
+    const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprVisibilityShadeCountersGpu
     glNamedBufferSubData(shadeWork_, 0, sizeof(counters), counters);
 }
 
@@ -167,9 +170,9 @@ void LfdprVisibilityShading::splat(unsigned counters)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboChunkMasks, chunkMasks_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, index_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewWinner, index_);
     // The 32-bit path's index pass runs only to repair, in shade().
-    splatPass(splatProgram_, counters, offsetof(LfdprVisCountersGpu, splatGroupsX));
+    splatPass(splatProgram_, counters, offsetof(LfdprVisibilityCountersGpu, splatGroupsX));
 }
 
 void LfdprVisibilityShading::splatPass(unsigned program, unsigned arguments, size_t offset) const
@@ -220,9 +223,9 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
     const LfdprConstants& k = LfdprConstants::get();
 
     // Step 1: each group's list of tile chunks from the splat's marks, and with it the
-    // group's indirect dispatch (lfdpr_shade_list.comp). Pass 2 (the repair): emptied
+    // group's indirect dispatch (lfdpr_visibility_shade_list.comp). Pass 2 (the repair): emptied
     // again, then the repair list's chunks when it held them all, else all again
-    // (lfdpr_repair_dispatch.comp sized both, the one not needed to zero workgroups).
+    // (lfdpr_visibility_repair_dispatch.comp sized both, the one not needed to zero workgroups).
     for (const unsigned list : {listProgram_.get(), listRepairProgram_.get()})
         if (list) // the repair list exists on the 32-bit path only
             glProgramUniform1ui(list, k.locShadeGroups, groupCount_);
@@ -230,7 +233,7 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
         const uint32_t workgroups = divideUp(entryCount_ * groupCount_, 64);
         const uint32_t width = std::min<uint32_t>(workgroups, k.shadeDispatchWidth);
         glUseProgram(listProgram_);
-        glDispatchCompute(width, divideUp(workgroups, width), 1); // lfdpr_shade_list.comp's (x, y) order
+        glDispatchCompute(width, divideUp(workgroups, width), 1); // lfdpr_visibility_shade_list.comp's (x, y) order
     } else {
         // note: the barrier orders the first pass's shader writes to these words before the
         // clear; a clear itself is ordered with the dispatches after it.
@@ -238,9 +241,9 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
         clearShadeDispatches();
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, repair_);
         glUseProgram(listRepairProgram_);
-        glDispatchComputeIndirect(offsetof(LfdprRepairGpu, listRepair));
+        glDispatchComputeIndirect(offsetof(LfdprVisibilityRepairGpu, listRepair));
         glUseProgram(listProgram_);
-        glDispatchComputeIndirect(offsetof(LfdprRepairGpu, listAll));
+        glDispatchComputeIndirect(offsetof(LfdprVisibilityRepairGpu, listAll));
     }
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
@@ -277,7 +280,7 @@ void LfdprVisibilityShading::repair(const GpuScene& scene)
     glProgramUniform1ui(repairDispatchProgram_, k.locShadeGroups, groupCount_);
     glDispatchCompute(1, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-    splatPass(indexProgram_, repair_, offsetof(LfdprRepairGpu, indexPass));
+    splatPass(indexProgram_, repair_, offsetof(LfdprVisibilityRepairGpu, indexPass));
     listAndShade(scene, 2);
 }
 

@@ -1,6 +1,6 @@
 // LFDPR visibility splatting and per-pixel shading (the visibility pipeline;
-// shaders/lfdpr_visibility.comp, lfdpr_shade_list.comp, lfdpr_shade.comp,
-// lfdpr_repair_dispatch.comp): the per-view depth and winner (triangle record) buffers for
+// shaders/lfdpr_visibility_splat.comp, lfdpr_visibility_shade_list.comp, lfdpr_visibility_shade.comp,
+// lfdpr_visibility_repair_dispatch.comp): the per-view depth and winner (triangle record) buffers for
 // either atomics path, the splat pass(es), which also mark per shading group the tile
 // chunks (a tile position over a run of views) and views its points wrote, and shading in
 // two steps - list each group's marked chunks (which sizes the group's indirect dispatch
@@ -24,7 +24,7 @@ class ViewTargets;
 // The shading group of every GPU material (index: GpuScene::gpuMaterialIndex): 0 for the
 // untextured ones, then 1 + i for textured material texturedMaterials[i] (scene material
 // indices), shared modulo the LFDPR_MAX_SHADE_GROUPS - 1 textured slots. The draw table
-// carries each draw's group (LfdprDrawGpu::group), which the splat marks by and the
+// carries each draw's group (LfdprVisibilityDrawGpu::group), which the splat marks by and the
 // shading checks a pixel's winner against.
 std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
 
@@ -53,19 +53,19 @@ public:
     // all its clears.
     void beginFrame(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, ViewTargets& targets);
     // Splats the points into every view (one pass on either path; an indirect dispatch from
-    // `counters`, the LfdprVisCountersGpu block whose splat arguments point generation
+    // `counters`, the LfdprVisibilityCountersGpu block whose splat arguments point generation
     // kept), marking for each shading group the tile chunks and views its points wrote. The
     // caller has bound the scene, the LFDPR buffers and the constants.
     void splat(unsigned counters);
     // Shades every visible pixel into targets and writes the background elsewhere, one
     // dispatch per group over the chunks splat() marked for it. On the 32-bit path, pixels
     // whose record lost a race to a nearer point are repaired - the index pass over every
-    // point (its count from the bound LfdprVisCountersGpu block), then their chunks shaded
-    // again - with dispatches the GPU sizes from its own count (lfdpr_repair_dispatch.comp),
+    // point (its count from the bound LfdprVisibilityCountersGpu block), then their chunks shaded
+    // again - with dispatches the GPU sizes from its own count (lfdpr_visibility_repair_dispatch.comp),
     // so nothing is read back; the count of repaired pixels is at repairCountOffset() in
     // repairBuffer().
     void shade(const GpuScene& scene, ViewTargets& targets);
-    // 32-bit path: the LfdprRepairGpu block (0 on the 64-bit path) and where in it the
+    // 32-bit path: the LfdprVisibilityRepairGpu block (0 on the 64-bit path) and where in it the
     // number of pixels repaired by the last shade() is.
     unsigned repairBuffer() const { return repair_.get(); }
     static size_t repairCountOffset();
@@ -91,7 +91,7 @@ private:
     bool int64_;
     std::vector<std::string> defines_; // every program's: atomics path, work shape
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
-    gl::Program listProgram_, listRepairProgram_; // lfdpr_shade_list.comp: marks, repair list
+    gl::Program listProgram_, listRepairProgram_; // lfdpr_visibility_shade_list.comp: marks, repair list
     gl::Program repairDispatchProgram_;
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_; // 64-bit path: depth_ holds the words

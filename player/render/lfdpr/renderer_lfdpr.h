@@ -1,19 +1,34 @@
-// lfdpr: Light Field Display Point Rendering (Gavane & Watson 2024, section 3).
+// lfdpr: Light Field Display Point Rendering (Gavane & Watson 2024). Two pipelines stand
+// behind the one LfdprRenderer interface, chosen by LfdprOptions::pipeline; both report
+// the stages "point_generation", "view_generation" and "resolve", and every class, file,
+// shader and GPU struct names the pipeline it belongs to (LfdprPaper* / lfdpr_paper_*,
+// LfdprVisibility* / lfdpr_visibility_*); the other Lfdpr* names are shared (options,
+// frame block, math) or name a visibility-only mechanism (the camera line, shading chunks).
 //
-// Per frame (paper section 3; README "LFDPR"):
-//   1. "point_generation": VS -> GS -> FS into a framebuffer without attachments. The GS
-//      samples each visible triangle at LFD-biased horizontal / vertical densities (paper
-//      section 3.1, T_align and S_ortho), reduced where the texture is coarser than the
-//      views (eq. lfd_texelSplatDensity), and sets up multiview mipmapping (eqs.
-//      minVPUVSize..maxLOD); every fragment appends one point to the point buffer.
-//   2. "view_generation": a compute pass splats every point into every view as a
-//      world-space square clipped by its own triangle (section 3.2), shaded per view with
-//      the texture value interpolated between the point's min- and max-LOD fetches (eqs.
-//      interpolationParameter, interplateTexValue), depth-resolved by atomicMin on a
-//      64-bit (depth << 32 | rgba8) word, or by the two-pass 32-bit fallback.
-//   3. "resolve": a compute pass writes the winning colours (or the background) into the
-//      ViewTargets colour array, so the EIA builder, quilt and view outputs are shared.
-// The shared formulas live in shaders/lfdpr_math.glsl (player/lfdpr_math.h on the CPU).
+// Visibility (the default, beyond the paper; renderer_lfdpr_visibility.cpp):
+//   1. point generation in a compute pass (LfdprVisibilityPointGeneration,
+//      lfdpr_visibility_points.comp): each triangle sampled at the paper's LFD-biased
+//      densities into 8-byte points (LfdprVisibilityPointGpu: triangle record + cell);
+//   2. visibility splatting (lfdpr_visibility_splat.comp): every point's depth and
+//      triangle record into every view, with camera-line coherence;
+//   3. shading once per visible view pixel, as mvr shades a fragment
+//      (lfdpr_visibility_shade*.comp, textureGrad at the exact footprint).
+//
+// Paper (the published method, paper section 3; renderer_lfdpr_paper.cpp):
+//   1. point generation through VS -> GS -> FS (LfdprPaperPointGeneration,
+//      lfdpr_paper_points.vert/geom/frag): the GS samples each visible triangle at
+//      LFD-biased horizontal / vertical densities (section 3.1, T_align and S_ortho),
+//      reduced where the texture is coarser than the views (eq. lfd_texelSplatDensity),
+//      and sets up multiview mipmapping (eqs. minVPUVSize..maxLOD); every fragment appends
+//      a 48-byte LfdprPaperPointGpu carrying tv_min / tv_max;
+//   2. view generation (LfdprPaperViewGeneration, lfdpr_paper_splat.comp): every point
+//      splatted into every view as a world-space square clipped by its own triangle
+//      (section 3.2), shaded per view with the texture value interpolated between its
+//      min- and max-LOD fetches, depth-resolved by atomicMin on a 64-bit
+//      (depth << 32 | rgba8) word or by the two-pass 32-bit fallback;
+//   3. resolve (lfdpr_paper_resolve.comp): the winning colours into the ViewTargets.
+// The shared formulas live in shaders/lfdpr_math.glsl (player/render/lfdpr/lfdpr_math.h on
+// the CPU); the GPU layouts of both in shaders/lfdpr_bindings.glsl.
 #pragma once
 
 #include "renderer.h"

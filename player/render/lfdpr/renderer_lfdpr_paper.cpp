@@ -14,8 +14,8 @@
 #include "gpu_timer.h"
 #include "lfdpr_constants.h"
 #include "lfdpr_counters.h"
-#include "lfdpr_point_generation.h"
-#include "lfdpr_view_generation.h"
+#include "lfdpr_paper_point_generation.h"
+#include "lfdpr_paper_view_generation.h"
 #include "scene_bindings.h"
 #include "view_targets.h"
 
@@ -31,9 +31,9 @@ namespace lfd::player {
 
 namespace {
 
-class LfdprRendererImpl final : public LfdprRenderer {
+class LfdprPaperRenderer final : public LfdprRenderer {
 public:
-    explicit LfdprRendererImpl(const LfdprOptions& options)
+    explicit LfdprPaperRenderer(const LfdprOptions& options)
         : options_(options), k_(LfdprConstants::get()), views_(lfdprUseInt64(options.atomics))
     {
         // The largest point buffer one SSBO binding can address, and the user's cap.
@@ -56,12 +56,12 @@ public:
 
     std::vector<uint32_t> pointsPerTriangle() const override
     {
-        // PointGpu.triangle is the record: draw record base + primitive.
+        // LfdprPaperPointGpu.triangle is the record: draw record base + primitive.
         std::vector<uint32_t> counts(size_t(recordCapacity_), 0);
-        std::vector<lfdpr_bindings::PointGpu> points(size_t(info_.pointsStored));
+        std::vector<lfdpr_bindings::LfdprPaperPointGpu> points(size_t(info_.pointsStored));
         if (!points.empty())
             glGetNamedBufferSubData(points_, 0, GLsizeiptr(points.size() * sizeof(points[0])), points.data());
-        for (const lfdpr_bindings::PointGpu& point : points)
+        for (const lfdpr_bindings::LfdprPaperPointGpu& point : points)
             if (point.triangle < counts.size())
                 ++counts[point.triangle];
         return counts;
@@ -114,7 +114,7 @@ public:
         capacities_.submitted(tag, pointCapacity_);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
         readback_.begin(tag);
-        readback_.copy(counters_, 0, 0, sizeof(LfdprCountersGpu));
+        readback_.copy(counters_, 0, 0, sizeof(LfdprPaperCountersGpu));
         readback_.end();
         info_.pointCapacity = pointCapacity_;
         info_.triangleCapacity = uint32_t(recordCapacity_);
@@ -172,7 +172,7 @@ private:
             points_ = gl::createBuffer(size_t(pointCapacity_) * k_.pointBytes);
         }
         // Triangle records: one per triangle of every draw (never overflows).
-        const uint64_t records = LfdprPointGeneration::recordCount(scene);
+        const uint64_t records = LfdprPaperPointGeneration::recordCount(scene);
         if (records > recordCapacity_ || !records_) {
             recordCapacity_ = std::max<uint64_t>(records, 1);
             records_ = gl::createBuffer(recordCapacity_ * k_.triangleRecordBytes);
@@ -213,7 +213,7 @@ private:
     // capacity the next frames get (1.25 x the count).
     void applyCounts(uint64_t tag, const uint8_t* bytes)
     {
-        LfdprCountersGpu c;
+        LfdprPaperCountersGpu c;
         std::memcpy(&c, bytes, sizeof(c));
         const uint32_t capacity = capacities_.counted(tag, pointCapacity_);
         lastCountedTag_ = tag;
@@ -235,10 +235,10 @@ private:
     const LfdprConstants& k_;
     LfdprFrameInfo info_;
     FrameUniforms uniforms_;
-    LfdprPointGeneration pointGeneration_;
-    LfdprViewGeneration views_;
+    LfdprPaperPointGeneration pointGeneration_;
+    LfdprPaperViewGeneration views_;
     gl::Buffer points_, counters_, frameUbo_, records_, sampling_, viewInverse_;
-    gl::GpuReadback readback_{sizeof(LfdprCountersGpu)};
+    gl::GpuReadback readback_{sizeof(LfdprPaperCountersGpu)};
     LfdprFrameCapacities capacities_;
     uint64_t frameSerial_ = 0, lastCountedTag_ = 0;
     uint32_t pointCapacity_ = 0, nextCapacity_ = 0, maxPointCapacity_ = 0;
@@ -250,7 +250,7 @@ private:
 
 std::unique_ptr<LfdprRenderer> createLfdprPaperRenderer(const LfdprOptions& options)
 {
-    return std::make_unique<LfdprRendererImpl>(options);
+    return std::make_unique<LfdprPaperRenderer>(options);
 }
 
 } // namespace lfd::player

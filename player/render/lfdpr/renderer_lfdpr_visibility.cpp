@@ -1,6 +1,6 @@
 // lfdpr, the visibility pipeline (LfdprOptions::Pipeline::Visibility, the default): owns
 // its buffers and runs, per frame,
-//   1. "point_generation": compute point generation (lfdpr_compute_points) into 8-byte
+//   1. "point_generation": compute point generation (lfdpr_visibility_points) into 8-byte
 //      points and 16-byte triangle records; as it reserves points it keeps the splat's
 //      indirect dispatch covering them (GPU side, no pass of its own);
 //   2. "view_generation": visibility splatting of depth and the point's triangle record
@@ -19,10 +19,10 @@
 #include "gpu_readback.h"
 #include "gpu_timer.h"
 #include "lfdpr_camera_line.h"
-#include "lfdpr_compute_points.h"
+#include "lfdpr_visibility_points.h"
 #include "lfdpr_constants.h"
 #include "lfdpr_counters.h"
-#include "lfdpr_point_generation.h" // makeLfdprFrame, LfdprFrameGpu
+#include "lfdpr_paper_point_generation.h" // makeLfdprFrame, LfdprFrameGpu
 #include "lfdpr_visibility_shading.h"
 #include "scene_bindings.h"
 #include "shader_library.h"
@@ -43,11 +43,11 @@ namespace lfd::player {
 
 namespace {
 
-using lfdpr_bindings::LfdprDrawGpu; // generated from shaders/lfdpr_bindings.glsl, checked by the layout test
+using lfdpr_bindings::LfdprVisibilityDrawGpu; // generated from shaders/lfdpr_bindings.glsl, checked by the layout test
 
 // A frame's read-back slot: its counters, then (32-bit path) the pixels it repaired.
 struct CountsSlot {
-    LfdprVisCountersGpu counters;
+    LfdprVisibilityCountersGpu counters;
     uint32_t repairs;
 };
 constexpr size_t kRepairsOffset = offsetof(CountsSlot, repairs);
@@ -130,14 +130,14 @@ public:
         bindBuffers(scene);
         const GLuint zero = 0, one = 1;
         glClearNamedBufferData(counters_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-        glClearNamedBufferSubData(counters_, GL_R32UI, offsetof(LfdprVisCountersGpu, splatGroupsZ), sizeof(GLuint),
+        glClearNamedBufferSubData(counters_, GL_R32UI, offsetof(LfdprVisibilityCountersGpu, splatGroupsZ), sizeof(GLuint),
                                   GL_RED_INTEGER, GL_UNSIGNED_INT, &one);
         pointGeneration_.clearQueues();
         shading_.beginFrame(scene, texturedMaterials_, targets);
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
         pointGeneration_.run(scene);
         readback_.begin(tag);
-        readback_.copy(counters_, 0, 0, sizeof(LfdprVisCountersGpu));
+        readback_.copy(counters_, 0, 0, sizeof(LfdprVisibilityCountersGpu));
         timer.end();
         if (frame.pointSampling) {
             uniforms_.upload(frame);
@@ -221,7 +221,7 @@ private:
         CountsSlot slot;
         std::memcpy(&slot, bytes, sizeof(slot));
         const uint32_t capacity = capacities_.counted(tag, pointCapacity_);
-        const LfdprVisCountersGpu& c = slot.counters;
+        const LfdprVisibilityCountersGpu& c = slot.counters;
         lastCountedTag_ = tag;
         info_.points = c.pointCount;
         info_.pointsStored = std::min(c.pointCount, capacity);
@@ -251,7 +251,7 @@ private:
         if (scene.serial() == sceneSerial_)
             return;
         sceneSerial_ = scene.serial();
-        std::vector<LfdprDrawGpu> draws;
+        std::vector<LfdprVisibilityDrawGpu> draws;
         drawFirstTriangle_.clear();
         texturedMaterials_.clear();
         uint64_t triangles = 0;
@@ -274,7 +274,7 @@ private:
             throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
         triangleCapacity_ = std::max<uint64_t>(triangles, 1);
         records_ = gl::createBuffer(triangleCapacity_ * k_.recordBytes);
-        draws_ = gl::createBuffer(draws.size() * sizeof(LfdprDrawGpu), 0, draws.empty() ? nullptr : draws.data());
+        draws_ = gl::createBuffer(draws.size() * sizeof(LfdprVisibilityDrawGpu), 0, draws.empty() ? nullptr : draws.data());
         pointGeneration_.prepare(scene);
     }
 
@@ -344,7 +344,7 @@ private:
     bool gpuWork_; // LFDPR_WORK_GPU for every program (lfdpr_work_shape.glsl)
     LfdprFrameInfo info_;
     FrameUniforms uniforms_;
-    LfdprComputePointGeneration pointGeneration_;
+    LfdprVisibilityPointGeneration pointGeneration_;
     LfdprVisibilityShading shading_;
     uint64_t sceneSerial_ = 0; // GpuScene::serial() of the scene the tables are for
     std::vector<uint32_t> drawFirstTriangle_;

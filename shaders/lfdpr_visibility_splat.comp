@@ -1,7 +1,7 @@
 #version 450 core
 // LFDPR visibility splatting (the visibility pipeline; paper section 3.2 without the
 // per-splat shading): one invocation per point splats it into every view, writing only
-// depth and the point's triangle record; lfdpr_shade.comp then shades each visible pixel
+// depth and the point's triangle record; lfdpr_visibility_shade.comp then shades each visible pixel
 // once. The record, not the point, is what the shading needs (it evaluates the triangle
 // at the pixel's own centre, whichever of its points won), so a pixel's word names it
 // directly and the shading reads one texel less per pixel and view.
@@ -18,14 +18,14 @@
 // multiply-add each. Facing, coverage and depth are then evaluated per view as usual.
 //
 // The depth pass also marks, for the point's shading group, the tile chunks and views it
-// wrote pixels in (LFDPR_SSBO_CHUNK_MASKS), from which lfdpr_shade_list.comp lists the
+// wrote pixels in (LFDPR_SSBO_CHUNK_MASKS), from which lfdpr_visibility_shade_list.comp lists the
 // shading work.
 //
 // Depth key: lfdPlaneDepthKey (smaller = nearer; 0xFFFFFFFF = empty).
 // LFDPR_INT64: atomicMin on (key << 32 | record) (GL_NV_shader_atomic_int64).
 // Otherwise 32-bit words: atomicMin on the key, and the invocation that lowered it stores
 // its record with a plain store. A nearer point racing a farther one can leave the
-// farther one's record behind; lfdpr_shade.comp checks every pixel's record against its key
+// farther one's record behind; lfdpr_visibility_shade.comp checks every pixel's record against its key
 // and flags the few that disagree, and only then the index pass runs (LFDPR_INDEX_PASS, a
 // program of its own: llvmpipe would run an untaken branch for it in every pixel): where
 // the key equals the minimum, atomicMin on the record. The image is the same either way:
@@ -46,14 +46,20 @@
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
+// An extension point after the 32-bit path's index write, empty here: only a test build of
+// this program defines it (lfdpr_visibility_shading.cpp, LfdprOptions::testIndexRaces).
+#ifndef LFDPR_AFTER_INDEX_WRITE
+#define LFDPR_AFTER_INDEX_WRITE(index, pixel, record)
+#endif
+
 layout(std430, binding = LFDPR_SSBO_POINTS) readonly buffer Points {
-    uvec2 points[];
+    LfdprVisibilityPointGpu points[];
 };
 layout(std430, binding = LFDPR_SSBO_RECORDS) readonly buffer Records {
-    LfdprRecordGpu records[];
+    LfdprVisibilityRecordGpu records[];
 };
 layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) readonly buffer VisCounters {
-    LfdprVisCountersGpu vis;
+    LfdprVisibilityCountersGpu vis;
 };
 #ifndef LFDPR_INDEX_PASS
 layout(std430, binding = LFDPR_SSBO_CHUNK_MASKS) buffer ChunkMasks {
@@ -63,8 +69,8 @@ layout(std430, binding = LFDPR_SSBO_CHUNK_MASKS) buffer ChunkMasks {
 // Marks, for the point's shading group, the tile chunks of one view chunk in which it wrote
 // pixels: the tiles of columns tileLo..tileHi (the union over the chunk's views) and rows
 // tileRows, with the views it wrote in - one atomicOr per tile and mask word, once per
-// point and view chunk (lfdpr_shade_list.comp lists the marks). The union may list a tile
-// for a view the point missed; lfdpr_shade.comp checks each pixel's winner anyway.
+// point and view chunk (lfdpr_visibility_shade_list.comp lists the marks). The union may list a tile
+// for a view the point missed; lfdpr_visibility_shade.comp checks each pixel's winner anyway.
 void lfdMarkChunk(uint group, uint chunk, int tileLo, int tileHi, uvec2 tileRows, uvec2 views, uvec2 tiles,
                   uint entries)
 {
@@ -97,15 +103,105 @@ layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewWords {
 layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewDepth {
     uint viewDepth[];
 };
-layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) buffer ViewIndex {
+layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) buffer ViewIndex {
     uint viewIndex[];
 };
 #endif
 
+// The cell's corners projected once onto the camera line (camera-line coherence), the
+// cell enlarged by LFDPR_SPLAT_OVERLAP so neighbouring splats leave no cracks.
+void projectCell(vec3 centre, LfdSamplingFrame f, vec2 viewSize, out LfdLinePoint ca, out LfdLinePoint cb,
+                 out LfdLinePoint cc, out LfdLinePoint cd)
+{
+    vec3 halfU = f.frame.u * (0.5 * f.spacing.x * LFDPR_SPLAT_OVERLAP);
+    vec3 halfV = f.frame.v * (0.5 * f.spacing.y * LFDPR_SPLAT_OVERLAP);
+    ca = lfdProjectOnLine(centre - halfU - halfV, viewSize);
+    cb = lfdProjectOnLine(centre + halfU - halfV, viewSize);
+    cc = lfdProjectOnLine(centre + halfU + halfV, viewSize);
+    cd = lfdProjectOnLine(centre - halfU + halfV, viewSize);
+}
+
+// The point's triangle (v*) and cell (c*) projected once onto the camera line; false when
+// any of them lies behind a camera plane.
+bool projectSplat(LfdprVisibilityPointGpu point, LfdprVisibilityRecordGpu r, LfdprVisibilityDrawGpu draw, vec2 viewSize,
+                  out LfdLinePoint v0, out LfdLinePoint v1, out LfdLinePoint v2, out LfdLinePoint ca,
+                  out LfdLinePoint cb, out LfdLinePoint cc, out LfdLinePoint cd)
+{
+    vec3 p0, p1, p2;
+    lfdTrianglePositions(draw, lfdTriangleVertices(draw, r.primitive), p0, p1, p2);
+    LfdSamplingFrame f = lfdRecordFrame(p0, p1, p2, r.spacing);
+    vec3 centre = lfdSceneFromSampling(lfdPointCell(point), f.origin, f.frame, f.spacing);
+    v0 = lfdProjectOnLine(p0, viewSize);
+    v1 = lfdProjectOnLine(p1, viewSize);
+    v2 = lfdProjectOnLine(p2, viewSize);
+    projectCell(centre, f, viewSize, ca, cb, cc, cd);
+    return v0.invW > 0.0 && v1.invW > 0.0 && v2.invW > 0.0 && ca.invW > 0.0 && cb.invW > 0.0 && cc.invW > 0.0 &&
+           cd.invW > 0.0;
+}
+
+// Adds view v of the chunk (and its tile columns colLo..colHi) to the chunk's marks.
+void gatherMarks(uint v, int colLo, int colHi, inout int markLo, inout int markHi, inout uvec2 markViews)
+{
+    markLo = min(markLo, colLo / LFDPR_SHADE_TILE);
+    markHi = max(markHi, colHi / LFDPR_SHADE_TILE);
+    markViews[v >> 5] |= 1u << (v & 31u);
+}
+
+// The pixel rows (or columns) both the cell (its four corners' coordinates) and the
+// triangle (its three vertices') cover, clipped to 0..size - 1; empty when x > y.
+ivec2 pixelSpan(vec4 cell, vec3 triangle, int size)
+{
+    float lo = max(min(min(cell.x, cell.y), min(cell.z, cell.w)), min(min(triangle.x, triangle.y), triangle.z));
+    float hi = min(max(max(cell.x, cell.y), max(cell.z, cell.w)), max(max(triangle.x, triangle.y), triangle.z));
+    return ivec2(max(int(ceil(lo - 0.5)), 0), min(int(floor(hi - 0.5)), size - 1));
+}
+
+// Splats the cell (window quad a, b, c, d) into one view: every pixel centre in `box`
+// (columns x..z, rows y..w) inside the quad that the view's triangle t owns, depth-tested
+// at t's plane within keyRange (near, far). `record` is what the view words hold; `index`
+// the point's (the test hook's races key on it). Returns whether any pixel was written.
+bool splatIntoView(uint view, uint viewCount, int viewWidth, ivec4 box, vec2 a, vec2 b, vec2 c, vec2 d,
+                   LfdViewTriangle t, uvec2 keyRange, uint record, uint index)
+{
+    bool wrote = false;
+    for (int y = box.y; y <= box.w; ++y) {
+        for (int x = box.x; x <= box.z; ++x) {
+            vec2 p = vec2(x, y) + 0.5;
+            if (!lfdInsideQuad(a, b, c, d, p))
+                continue;
+            vec3 edges = lfdEdgeValues(t, p);
+            if (!lfdOwnsSample(t, edges))
+                continue;
+            uint key = lfdPlaneDepthKey(t, edges);
+            if (key < keyRange.x || key > keyRange.y)
+                continue; // clipped by the near or far plane
+            uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewWidth), viewCount);
+            wrote = true;
+#if defined(LFDPR_INT64)
+            // A plain read first: a word already nearer (or as near with a lower
+            // record) makes the atomic a no-op, so it is skipped - most of them where
+            // depth complexity is high. A stale read is never nearer than the word
+            // (words only decrease), so nothing is skipped that would have won.
+            uint64_t word = (uint64_t(key) << 32) | uint64_t(record);
+            if (word < viewWords[pixel])
+                atomicMin(viewWords[pixel], word);
+#elif defined(LFDPR_INDEX_PASS)
+            if (viewDepth[pixel] == key)
+                atomicMin(viewIndex[pixel], record);
+#else
+            if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
+                viewIndex[pixel] = record;
+            LFDPR_AFTER_INDEX_WRITE(index, pixel, record);
+#endif
+        }
+    }
+    return wrote;
+}
+
 void main()
 {
     // Workgroup w splats LFDPR_GROUP_SIZE consecutive points into one slice of
-    // LFDPR_SPLAT_VIEWS views (lfdpr_work_shape.glsl; lfdpr_dispatch.comp sized the grid).
+    // LFDPR_SPLAT_VIEWS views (lfdpr_work_shape.glsl; lfdpr_paper_dispatch.comp sized the grid).
     uint viewCount = u_lfd.counts.x;
     uint slices = lfdSplatSlices(viewCount);
     uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
@@ -115,51 +211,32 @@ void main()
         return;
 
     // Step 1: the point, its triangle and the cell's corners in the triangle plane.
-    uvec2 point = points[index];
-    uint record = point.x; // what the view words hold
-    LfdprRecordGpu r = records[record];
-    LfdprDrawGpu draw = draws[r.draw];
-    vec3 p0, p1, p2;
-    lfdTrianglePositions(draw, lfdTriangleVertices(draw, r.primitive), p0, p1, p2);
-    LfdSamplingFrame f = lfdRecordFrame(p0, p1, p2, r.spacing);
-    vec3 centre = lfdSceneFromSampling(lfdPointCell(point), f.origin, f.frame, f.spacing);
-    vec3 halfU = f.frame.u * (0.5 * f.spacing.x * LFDPR_SPLAT_OVERLAP);
-    vec3 halfV = f.frame.v * (0.5 * f.spacing.y * LFDPR_SPLAT_OVERLAP);
+    LfdprVisibilityPointGpu point = points[index];
+    uint record = point.record; // what the view words hold
+    LfdprVisibilityRecordGpu r = records[record];
+    LfdprVisibilityDrawGpu draw = draws[r.draw];
     bool doubleSided = (materials[draw.material].flags & LFD_MATERIAL_DOUBLE_SIDED) != 0u;
     bool mirrored = determinant(mat3(nodes[draw.node].sceneFromObject)) < 0.0;
 
     // Step 2: project once (camera-line coherence). Geometry outside the shared depth
     // range is clipped in every view alike.
     vec2 viewSize = u_lfd.viewSize.xy;
-    LfdLinePoint v0 = lfdProjectOnLine(p0, viewSize), v1 = lfdProjectOnLine(p1, viewSize);
-    LfdLinePoint v2 = lfdProjectOnLine(p2, viewSize);
-    LfdLinePoint ca = lfdProjectOnLine(centre - halfU - halfV, viewSize);
-    LfdLinePoint cb = lfdProjectOnLine(centre + halfU - halfV, viewSize);
-    LfdLinePoint cc = lfdProjectOnLine(centre + halfU + halfV, viewSize);
-    LfdLinePoint cd = lfdProjectOnLine(centre - halfU + halfV, viewSize);
-    if (!(v0.invW > 0.0 && v1.invW > 0.0 && v2.invW > 0.0 && ca.invW > 0.0 && cb.invW > 0.0 &&
-          cc.invW > 0.0 && cd.invW > 0.0))
+    LfdLinePoint v0, v1, v2, ca, cb, cc, cd;
+    if (!projectSplat(point, r, draw, viewSize, v0, v1, v2, ca, cb, cc, cd))
         return; // behind a camera plane (the near plane clips such triangles)
 
     // Step 3: the rows the splat covers are the same in every view.
     // The triangle's bounds are those of its vertices on the sub-pixel grid, where
     // lfdViewTriangle puts them for the coverage test.
-    vec3 snappedY = vec3(lfdSnapToSubpixels(v0.y), lfdSnapToSubpixels(v1.y), lfdSnapToSubpixels(v2.y));
-    float yLo = max(min(min(ca.y, cb.y), min(cc.y, cd.y)), min(min(snappedY.x, snappedY.y), snappedY.z));
-    float yHi = min(max(max(ca.y, cb.y), max(cc.y, cd.y)), max(max(snappedY.x, snappedY.y), snappedY.z));
     ivec2 viewPixels = ivec2(viewSize);
-    int rowLo = max(int(ceil(yLo - 0.5)), 0), rowHi = min(int(floor(yHi - 0.5)), viewPixels.y - 1);
+    vec3 snappedY = vec3(lfdSnapToSubpixels(v0.y), lfdSnapToSubpixels(v1.y), lfdSnapToSubpixels(v2.y));
+    ivec2 rows = pixelSpan(vec4(ca.y, cb.y, cc.y, cd.y), snappedY, viewPixels.y);
+    int rowLo = rows.x, rowHi = rows.y;
     if (rowLo > rowHi)
         return;
     uint nearKey = lfdDepthKey(1.0 / u_line.wRange.x), farKey = lfdDepthKey(1.0 / u_line.wRange.y);
     vec3 invW = vec3(v0.invW, v1.invW, v2.invW);
 
-#ifndef LFDPR_INDEX_PASS
-    uint group = draw.group;
-    uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
-    uint entries = lfdShadeEntryCount(tiles, viewCount);
-    uvec2 tileRows = uvec2(rowLo, rowHi) / uint(LFDPR_SHADE_TILE);
-#endif
     // This invocation's views: one slice, inside one view chunk (LFDPR_SPLAT_VIEWS divides
     // LFDPR_VIEW_CHUNK), whose marks it gathers.
     uint sliceFirst = slice * uint(LFDPR_SPLAT_VIEWS);
@@ -175,72 +252,30 @@ void main()
             vec2 c = lfdWindowInView(cc, e), d = lfdWindowInView(cd, e);
             vec2 s0 = lfdSnapToSubpixels(lfdWindowInView(v0, e)), s1 = lfdSnapToSubpixels(lfdWindowInView(v1, e));
             vec2 s2 = lfdSnapToSubpixels(lfdWindowInView(v2, e));
-            float xLo = max(min(min(a.x, b.x), min(c.x, d.x)), min(min(s0.x, s1.x), s2.x));
-            float xHi = min(max(max(a.x, b.x), max(c.x, d.x)), max(max(s0.x, s1.x), s2.x));
-            int colLo = max(int(ceil(xLo - 0.5)), 0), colHi = min(int(floor(xHi - 0.5)), viewPixels.x - 1);
+            ivec2 columns = pixelSpan(vec4(a.x, b.x, c.x, d.x), vec3(s0.x, s1.x, s2.x), viewPixels.x);
+            int colLo = columns.x, colHi = columns.y;
             if (colLo > colHi)
                 continue;
 
             // Step 5: facing as the rasteriser decides it.
             LfdViewTriangle t = lfdViewTriangle(s0, s1, s2, invW);
-            if (t.orientation == 0.0)
-                continue;
-            bool front = (t.orientation > 0.0) != mirrored;
-            if (!front && !doubleSided)
-                continue;
+            if (t.orientation == 0.0 || (!doubleSided && (t.orientation > 0.0) == mirrored))
+                continue; // degenerate, or a single-sided back face
 
             // Step 6: covered pixels, their plane depth, the atomic depth test.
-            bool wrote = false;
-            for (int y = rowLo; y <= rowHi; ++y) {
-                for (int x = colLo; x <= colHi; ++x) {
-                    vec2 p = vec2(x, y) + 0.5;
-                    if (!lfdInsideQuad(a, b, c, d, p))
-                        continue;
-                    vec3 edges = lfdEdgeValues(t, p);
-                    if (!lfdOwnsSample(t, edges))
-                        continue;
-                    uint key = lfdPlaneDepthKey(t, edges);
-                    if (key < nearKey || key > farKey)
-                        continue; // clipped by the near or far plane
-                    uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewPixels.x), viewCount);
-                    wrote = true;
-#if defined(LFDPR_INT64)
-                    // A plain read first: a word already nearer (or as near with a lower
-                    // record) makes the atomic a no-op, so it is skipped - most of them where
-                    // depth complexity is high. A stale read is never nearer than the word
-                    // (words only decrease), so nothing is skipped that would have won.
-                    uint64_t word = (uint64_t(key) << 32) | uint64_t(record);
-                    if (word < viewWords[pixel])
-                        atomicMin(viewWords[pixel], word);
-#elif defined(LFDPR_INDEX_PASS)
-                    if (viewDepth[pixel] == key)
-                        atomicMin(viewIndex[pixel], record);
-#else
-                    if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
-                        viewIndex[pixel] = record;
-#ifdef LFDPR_TEST_INDEX_RACES
-                    // Test hook (LfdprOptions::testIndexRaces): every LFDPR_TEST_INDEX_RACES-th
-                    // point also stores its record unconditionally, as a lost race would, so the
-                    // tests can drive the repair through both of its paths.
-                    if (index % uint(LFDPR_TEST_INDEX_RACES) == 0u)
-                        viewIndex[pixel] = record;
-#endif
-#endif
-                }
-            }
+            bool wrote = splatIntoView(view, viewCount, viewPixels.x, ivec4(colLo, rowLo, colHi, rowHi), a, b, c, d, t,
+                                       uvec2(nearKey, farKey), record, index);
 
 #ifndef LFDPR_INDEX_PASS
             // Step 7: gather this view's tiles for the chunk's marks.
-            if (wrote) {
-                markLo = min(markLo, colLo / LFDPR_SHADE_TILE);
-                markHi = max(markHi, colHi / LFDPR_SHADE_TILE);
-                uint v = view - firstView;
-                markViews[v >> 5] |= 1u << (v & 31u);
-            }
+            if (wrote)
+                gatherMarks(view - firstView, colLo, colHi, markLo, markHi, markViews);
 #endif
         }
 #ifndef LFDPR_INDEX_PASS
-        lfdMarkChunk(group, firstView / uint(LFDPR_VIEW_CHUNK), markLo, markHi, tileRows, markViews, tiles, entries);
+        uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
+        lfdMarkChunk(draw.group, firstView / uint(LFDPR_VIEW_CHUNK), markLo, markHi,
+                     uvec2(rowLo, rowHi) / uint(LFDPR_SHADE_TILE), markViews, tiles, lfdShadeEntryCount(tiles, viewCount));
 #endif
     }
 }

@@ -1,5 +1,5 @@
 // PNG output (atomic writes, round trips) and the image metrics (CPU only).
-#include "image_output.h"
+#include "image_metrics.h"
 
 #include <gtest/gtest.h>
 
@@ -11,16 +11,16 @@
 #include <unistd.h>
 
 namespace fs = std::filesystem;
-using namespace lfd::player;
+using namespace lfd::metrics;
 
 namespace {
 
-class ImageOutputTest : public ::testing::Test {
+class ImageFileTest : public ::testing::Test {
 protected:
     void SetUp() override {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         dir_ = fs::temp_directory_path() /
-               ("lfd_image_output_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+               ("lfd_image_file_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
@@ -45,7 +45,7 @@ Image gradient(uint32_t w, uint32_t h, uint32_t channels) {
 
 } // namespace
 
-TEST_F(ImageOutputTest, RoundTripRgba8AndRgb8) {
+TEST_F(ImageFileTest, RoundTripRgba8AndRgb8) {
     for (uint32_t channels : {4u, 3u}) {
         const Image original = gradient(37, 19, channels); // odd sizes: no row padding games
         const fs::path path = dir_ / ("img" + std::to_string(channels) + ".png");
@@ -60,7 +60,7 @@ TEST_F(ImageOutputTest, RoundTripRgba8AndRgb8) {
     EXPECT_EQ(entriesInDir(), 2u);
 }
 
-TEST_F(ImageOutputTest, ReadConvertsChannels) {
+TEST_F(ImageFileTest, ReadConvertsChannels) {
     const Image rgb = gradient(5, 4, 3);
     writeImage(dir_ / "rgb.png", rgb);
     const Image rgba = readImage(dir_ / "rgb.png", 4);
@@ -72,7 +72,7 @@ TEST_F(ImageOutputTest, ReadConvertsChannels) {
     }
 }
 
-TEST_F(ImageOutputTest, OverwriteReplacesAtomically) {
+TEST_F(ImageFileTest, OverwriteReplacesAtomically) {
     const fs::path path = dir_ / "view.png";
     writeImage(path, gradient(8, 8, 4));
     Image second = gradient(8, 8, 4);
@@ -82,7 +82,7 @@ TEST_F(ImageOutputTest, OverwriteReplacesAtomically) {
     EXPECT_EQ(entriesInDir(), 1u);
 }
 
-TEST_F(ImageOutputTest, FailedWriteThrowsOneLineAndLeavesNothing) {
+TEST_F(ImageFileTest, FailedWriteThrowsOneLineAndLeavesNothing) {
     const Image image = gradient(4, 4, 4);
     const fs::path missing = dir_ / "no_such_dir" / "out.png";
     try {
@@ -106,7 +106,7 @@ TEST_F(ImageOutputTest, FailedWriteThrowsOneLineAndLeavesNothing) {
     EXPECT_EQ(entriesInDir(), 0u);
 }
 
-TEST_F(ImageOutputTest, ReadMissingFileThrowsNamingIt) {
+TEST_F(ImageFileTest, ReadMissingFileThrowsNamingIt) {
     const fs::path path = dir_ / "absent.png";
     try {
         readImage(path);
@@ -135,33 +135,33 @@ TEST(ImageMetrics, RmseAndMaxDiffHandComputed) {
 
     const Image other{1, 2, 4, std::vector<uint8_t>(8, 0)};
     EXPECT_THROW(rmse(a, other), std::invalid_argument);
-    EXPECT_THROW(ssimLuma(a, other), std::invalid_argument);
+    EXPECT_THROW(ssim(a, other), std::invalid_argument);
 }
 
 TEST(ImageMetrics, SsimIdenticalIsOneAndNoiseLowersIt) {
     const Image clean = gradient(64, 48, 3);
-    EXPECT_NEAR(ssimLuma(clean, clean), 1.0, 1e-12);
+    EXPECT_NEAR(ssim(clean, clean), 1.0, 1e-12);
 
     std::mt19937 rng(7);
     std::normal_distribution<double> noise(0.0, 20.0);
     Image noisy = clean;
     for (uint8_t& p : noisy.pixels)
         p = uint8_t(std::clamp(std::lround(p + noise(rng)), 0L, 255L));
-    const double s = ssimLuma(clean, noisy);
+    const double s = ssim(clean, noisy);
     EXPECT_LT(s, 0.95);
     EXPECT_GT(s, 0.0);
-    EXPECT_NEAR(s, ssimLuma(noisy, clean), 1e-12); // symmetric
+    EXPECT_NEAR(s, ssim(noisy, clean), 1e-12); // symmetric
 
     // Less noise, higher SSIM.
     Image slightlyNoisy = clean;
     std::normal_distribution<double> small(0.0, 3.0);
     for (uint8_t& p : slightlyNoisy.pixels)
         p = uint8_t(std::clamp(std::lround(p + small(rng)), 0L, 255L));
-    EXPECT_GT(ssimLuma(clean, slightlyNoisy), s);
+    EXPECT_GT(ssim(clean, slightlyNoisy), s);
 
     // Images smaller than the 11x11 window still work (the window shrinks).
     const Image tiny = gradient(5, 4, 3);
-    EXPECT_NEAR(ssimLuma(tiny, tiny), 1.0, 1e-12);
+    EXPECT_NEAR(ssim(tiny, tiny), 1.0, 1e-12);
 }
 
 TEST(ImageMetrics, SsimOfConstantShiftMatchesFormula) {
@@ -170,10 +170,10 @@ TEST(ImageMetrics, SsimOfConstantShiftMatchesFormula) {
     const Image a{16, 16, 1, std::vector<uint8_t>(256, 100)};
     const Image b{16, 16, 1, std::vector<uint8_t>(256, 110)};
     const double C1 = 6.5025;
-    EXPECT_NEAR(ssimLuma(a, b), (2.0 * 100 * 110 + C1) / (100.0 * 100 + 110.0 * 110 + C1), 1e-9);
+    EXPECT_NEAR(ssim(a, b), (2.0 * 100 * 110 + C1) / (100.0 * 100 + 110.0 * 110 + C1), 1e-9);
 }
 
-TEST_F(ImageOutputTest, DiffImageIsScaledAbsoluteDifference) {
+TEST_F(ImageFileTest, DiffImageIsScaledAbsoluteDifference) {
     const Image a{2, 1, 4, {10, 20, 30, 255, 0, 0, 0, 255}};
     const Image b{2, 1, 4, {13, 10, 30, 0, 100, 0, 0, 255}};
     const fs::path path = dir_ / "diff.png";

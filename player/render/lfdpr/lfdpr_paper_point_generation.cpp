@@ -1,4 +1,4 @@
-#include "lfdpr_point_generation.h"
+#include "lfdpr_paper_point_generation.h"
 
 #include "gpu_scene.h"
 #include "lfdpr_constants.h"
@@ -88,10 +88,10 @@ LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, ui
     return g;
 }
 
-LfdprPointGeneration::LfdprPointGeneration()
-    : program_(gl::buildProgram({{GL_VERTEX_SHADER, "lfdpr_points.vert"},
-                                 {GL_GEOMETRY_SHADER, "lfdpr_points.geom"},
-                                 {GL_FRAGMENT_SHADER, "lfdpr_points.frag"}})),
+LfdprPaperPointGeneration::LfdprPaperPointGeneration()
+    : program_(gl::buildProgram({{GL_VERTEX_SHADER, "lfdpr_paper_points.vert"},
+                                 {GL_GEOMETRY_SHADER, "lfdpr_paper_points.geom"},
+                                 {GL_FRAGMENT_SHADER, "lfdpr_paper_points.frag"}})),
       framebuffer_(gl::createFramebuffer())
 {
     // The generated frame block must have the driver's size here too (the layout test checks
@@ -109,7 +109,7 @@ LfdprPointGeneration::LfdprPointGeneration()
     glNamedFramebufferParameteri(framebuffer_, GL_FRAMEBUFFER_DEFAULT_HEIGHT, tile);
 }
 
-uint64_t LfdprPointGeneration::recordCount(const GpuScene& scene)
+uint64_t LfdprPaperPointGeneration::recordCount(const GpuScene& scene)
 {
     uint64_t records = 0;
     for (const DrawItem& draw : scene.draws())
@@ -117,7 +117,7 @@ uint64_t LfdprPointGeneration::recordCount(const GpuScene& scene)
     return records;
 }
 
-void LfdprPointGeneration::run(const GpuScene& scene) const
+void LfdprPaperPointGeneration::run(const GpuScene& scene) const
 {
     const LfdprConstants& k = LfdprConstants::get();
     const GLint tile = GLint(k.tileSize);

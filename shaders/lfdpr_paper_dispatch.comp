@@ -3,7 +3,7 @@
 // on the GPU (glDispatchComputeIndirect), so the CPU never waits for the point count.
 // Groups of LFDPR_GROUP_SIZE points, spread over y when x would exceed the guaranteed
 // 65535 limit. (The visibility pipeline's point generation keeps its splat's arguments
-// as it reserves points: lfdpr_points.comp.)
+// as it reserves points: lfdpr_visibility_points.comp.)
 #include "scene_bindings.glsl"
 #include "lfdpr_bindings.glsl"
 

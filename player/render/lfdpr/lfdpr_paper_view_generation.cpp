@@ -1,4 +1,4 @@
-#include "lfdpr_view_generation.h"
+#include "lfdpr_paper_view_generation.h"
 
 #include "lfdpr_constants.h"
 #include "lfdpr_counters.h"
@@ -14,16 +14,16 @@
 
 namespace lfd::player {
 
-LfdprViewGeneration::LfdprViewGeneration(bool int64) : int64_(int64)
+LfdprPaperViewGeneration::LfdprPaperViewGeneration(bool int64) : int64_(int64)
 {
     const std::vector<std::string> defines =
         int64 ? std::vector<std::string>{"LFDPR_INT64 1"} : std::vector<std::string>{};
-    dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_dispatch.comp"}}));
-    splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_splat.comp"}}, defines));
-    resolveProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_resolve.comp"}}, defines));
+    dispatchProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_paper_dispatch.comp"}}));
+    splatProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_paper_splat.comp"}}, defines));
+    resolveProgram_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_paper_resolve.comp"}}, defines));
 }
 
-void LfdprViewGeneration::resize(uint32_t viewCount, uint32_t width, uint32_t height)
+void LfdprPaperViewGeneration::resize(uint32_t viewCount, uint32_t width, uint32_t height)
 {
     if (viewCount == views_ && width == width_ && height == height_ && depth_)
         return;
@@ -35,9 +35,9 @@ void LfdprViewGeneration::resize(uint32_t viewCount, uint32_t width, uint32_t he
     color_ = int64_ ? gl::Buffer() : gl::createBuffer(pixels * sizeof(uint32_t));
 }
 
-size_t LfdprViewGeneration::viewBufferBytes() const { return size_t(views_) * width_ * height_ * 8; }
+size_t LfdprPaperViewGeneration::viewBufferBytes() const { return size_t(views_) * width_ * height_ * 8; }
 
-void LfdprViewGeneration::splat(unsigned counters) const
+void LfdprPaperViewGeneration::splat(unsigned counters) const
 {
     // Step 1: dispatch arguments from the point count (GPU side, no CPU read-back).
     glUseProgram(dispatchProgram_);
@@ -52,12 +52,12 @@ void LfdprViewGeneration::splat(unsigned counters) const
     const LfdprConstants& k = LfdprConstants::get();
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (color_)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewColor, color_);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewWinner, color_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 
     // Step 3: splat, one pass (64-bit) or depth then colour (32-bit), with the arguments
-    // lfdpr_dispatch.comp wrote into the counter block.
-    const GLintptr dispatchOffset = offsetof(LfdprCountersGpu, dispatchX);
+    // lfdpr_paper_dispatch.comp wrote into the counter block.
+    const GLintptr dispatchOffset = offsetof(LfdprPaperCountersGpu, dispatchX);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, counters);
     glUseProgram(splatProgram_);
     const int passes = int64_ ? 1 : 2;
@@ -71,7 +71,7 @@ void LfdprViewGeneration::splat(unsigned counters) const
     glUseProgram(0);
 }
 
-void LfdprViewGeneration::resolve(ViewTargets& targets) const
+void LfdprPaperViewGeneration::resolve(ViewTargets& targets) const
 {
     glUseProgram(resolveProgram_);
     glBindImageTexture(LfdprConstants::get().imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY,

@@ -7,7 +7,7 @@
 // point set is the same (up to order). A point is 8 bytes: its triangle record and the
 // sampling cell (x | y << 16); the record holds the triangle and its final spacings.
 //
-// Default pass: one invocation per triangle. Workgroups are listed in LfdprWorkgroupGpu
+// Default pass: one invocation per triangle. Workgroups are listed in LfdprVisibilityWorkgroupGpu
 // entries (LFDPR_GROUP_SIZE triangles of one draw each), so one dispatch samples every draw
 // of a dispatch class: all draws without an alpha test, or one alpha-tested draw (its
 // textures bound). A triangle whose sampling box exceeds LFDPR_LARGE_CELLS cells
@@ -51,22 +51,22 @@ layout(std430, binding = LFDPR_SSBO_UVS) readonly buffer SceneUvs {
     vec2 sceneUvs[];
 };
 layout(std430, binding = LFDPR_SSBO_POINTS) writeonly buffer Points {
-    LfdprPointGpu points[];
+    LfdprVisibilityPointGpu points[];
 };
 layout(std430, binding = LFDPR_SSBO_RECORDS) writeonly buffer Records {
-    LfdprRecordGpu records[];
+    LfdprVisibilityRecordGpu records[];
 };
 layout(std430, binding = LFDPR_SSBO_LARGE) buffer Large {
     uvec2 largeTriangles[]; // (draw, primitive)
 };
 layout(std430, binding = LFDPR_SSBO_WORKGROUPS) readonly buffer Workgroups {
-    LfdprWorkgroupGpu workgroups[];
+    LfdprVisibilityWorkgroupGpu workgroups[];
 };
 layout(std430, binding = LFDPR_SSBO_LARGE_DISPATCH) buffer LargeDispatch {
     uvec4 largeDispatch[];
 };
 layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) coherent buffer VisCounters {
-    LfdprVisCountersGpu vis;
+    LfdprVisibilityCountersGpu vis;
 };
 
 // The triangle being sampled: setup plus what the alpha test needs.
@@ -82,7 +82,7 @@ struct Sampled {
 bool setUp(uint drawIndex, uint primitive, out Sampled t)
 {
     t.draw = drawIndex;
-    LfdprDrawGpu draw = draws[drawIndex];
+    LfdprVisibilityDrawGpu draw = draws[drawIndex];
     uvec3 vertices = lfdTriangleVertices(draw, primitive);
     vec3 p0, p1, p2;
     lfdTrianglePositions(draw, vertices, p0, p1, p2);
@@ -110,7 +110,7 @@ bool setUp(uint drawIndex, uint primitive, out Sampled t)
     return true;
 }
 
-// The conservative sampling rule of lfdpr_points.frag (step 1) plus the alpha test.
+// The conservative sampling rule of lfdpr_paper_points.frag (step 1) plus the alpha test.
 bool emits(Sampled t, vec2 q)
 {
     if (!lfdPixelOverlapsTriangle(q, t.s.q0, t.s.q1, t.s.q2))
@@ -131,7 +131,7 @@ bool emits(Sampled t, vec2 q)
 uint writeRecord(uint primitive, Sampled t)
 {
     uint record = atomicAdd(vis.recordCount, 1u);
-    records[record] = LfdprRecordGpu(t.draw, primitive, t.s.spacing);
+    records[record] = LfdprVisibilityRecordGpu(t.draw, primitive, t.s.spacing);
     return record;
 }
 
@@ -170,7 +170,7 @@ void main()
     uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     if (workgroup >= u_workgroups)
         return;
-    LfdprWorkgroupGpu w = workgroups[u_firstWorkgroup + workgroup];
+    LfdprVisibilityWorkgroupGpu w = workgroups[u_firstWorkgroup + workgroup];
     if (gl_LocalInvocationIndex >= w.primitives)
         return;
     uint primitive = w.firstPrimitive + gl_LocalInvocationIndex;
@@ -207,7 +207,7 @@ void main()
         for (uint x = 0u; x < ex; ++x)
             if (emits(t, vec2(x, y) + 0.5)) {
                 if (first < capacity)
-                    points[first] = LfdprPointGpu(record, x | (y << 16));
+                    points[first] = LfdprVisibilityPointGpu(record, x | (y << 16));
                 ++first;
             }
 }
@@ -264,7 +264,7 @@ void main()
     for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))
         if (emits(t, vec2(c % ex, c / ex) + 0.5)) {
             if (index < capacity)
-                points[index] = LfdprPointGpu(s_record, (c % ex) | ((c / ex) << 16));
+                points[index] = LfdprVisibilityPointGpu(s_record, (c % ex) | ((c / ex) << 16));
             ++index;
         }
 }

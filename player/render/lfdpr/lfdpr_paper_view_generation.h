@@ -1,7 +1,7 @@
-// LFDPR view generation (paper sections 3.2, 3.3; shaders/lfdpr_splat.comp) and the
-// resolve into ViewTargets (shaders/lfdpr_resolve.comp): the per-view depth/colour buffers
+// LFDPR view generation (paper sections 3.2, 3.3; shaders/lfdpr_paper_splat.comp) and the
+// resolve into ViewTargets (shaders/lfdpr_paper_resolve.comp): the per-view depth/colour buffers
 // for either atomics path, the indirect dispatch built from the point counter
-// (shaders/lfdpr_dispatch.comp), the splat pass(es) and the resolve.
+// (shaders/lfdpr_paper_dispatch.comp), the splat pass(es) and the resolve.
 #pragma once
 
 #include "gl_handles.h"
@@ -13,11 +13,11 @@ namespace lfd::player {
 
 class ViewTargets;
 
-class LfdprViewGeneration {
+class LfdprPaperViewGeneration {
 public:
     // int64: use the 64-bit atomicMin path (needs GL_NV_shader_atomic_int64 and
     // GL_ARB_gpu_shader_int64; its shaders are only compiled then).
-    explicit LfdprViewGeneration(bool int64);
+    explicit LfdprPaperViewGeneration(bool int64);
 
     bool int64() const { return int64_; }
     // (Re)allocates the view buffers for N views of W x H (no-op when unchanged).

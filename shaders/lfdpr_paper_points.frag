@@ -23,13 +23,13 @@ layout(binding = LFD_UNIT_OCCLUSION) uniform sampler2D t_occlusion;
 layout(binding = LFD_UNIT_EMISSIVE) uniform sampler2D t_emissive;
 
 layout(std430, binding = LFDPR_SSBO_TRIANGLES) coherent readonly buffer TriangleRecords {
-    TriangleRecordGpu records[];
+    LfdprPaperTriangleGpu records[];
 };
 layout(std430, binding = LFDPR_SSBO_SAMPLING) coherent readonly buffer TriangleSampling {
-    TriangleSamplingGpu sampling[];
+    LfdprPaperSamplingGpu sampling[];
 };
 layout(std430, binding = LFDPR_SSBO_POINTS) writeonly buffer Points {
-    PointGpu points[];
+    LfdprPaperPointGpu points[];
 };
 
 // Texture values at the two LODs of one texture (eqs. minLOD, maxLOD with its X_t * Y_t).
@@ -58,10 +58,41 @@ vec3 perturb(vec3 n, vec3 t, float handedness, vec4 texel, float scale)
     return normalize(mat3(t, b, n) * tn);
 }
 
+// The point's shading normal: the face normal, or the vertex normals interpolated at the
+// (clamped) barycentrics w.
+vec3 pointNormal(LfdprPaperSamplingGpu s, vec3 w, uint flags, vec3 faceNormal)
+{
+    if ((flags & LFDPR_TRIANGLE_FACE_NORMAL) != 0u)
+        return faceNormal;
+    vec3 n = w.x * lfdOctDecode(unpackSnorm2x16(s.normals.x)) + w.y * lfdOctDecode(unpackSnorm2x16(s.normals.y)) +
+             w.z * lfdOctDecode(unpackSnorm2x16(s.normals.z));
+    return dot(n, n) > 0.0 ? normalize(n) : faceNormal;
+}
+
+// The normal map's perturbed normals at LOD_min and LOD_max (n itself where the tangent
+// is degenerate).
+void normalMapPair(LfdprPaperSamplingGpu s, vec3 w, vec3 n, vec2 uv, vec2 vpuv, bool mipmapping, float scale,
+                   inout vec3 normalLo, inout vec3 normalHi)
+{
+    vec3 tangent = w.x * lfdOctDecode(unpackSnorm2x16(s.tangents.x)) +
+                   w.y * lfdOctDecode(unpackSnorm2x16(s.tangents.y)) +
+                   w.z * lfdOctDecode(unpackSnorm2x16(s.tangents.z));
+    // Handedness of the nearest vertex (it is constant across a well-formed triangle).
+    uint nearest = w.x >= w.y && w.x >= w.z ? 0u : (w.y >= w.z ? 1u : 2u);
+    float handedness = (s.tangents.w & (1u << nearest)) != 0u ? -1.0 : 1.0;
+    vec3 t = tangent - n * dot(n, tangent);
+    if (dot(t, t) > 1e-12) {
+        t = normalize(t);
+        TexPair nt = fetchPair(t_normal, uv, vpuv, mipmapping);
+        normalLo = perturb(n, t, handedness, nt.lo, scale);
+        normalHi = perturb(n, t, handedness, nt.hi, scale);
+    }
+}
+
 void main()
 {
     // Step 1: conservative coverage in the sampling viewport.
-    TriangleSamplingGpu s = sampling[g_record];
+    LfdprPaperSamplingGpu s = sampling[g_record];
     vec2 q0 = s.q01.xy, q1 = s.q01.zw, q2 = s.q2uv0.xy;
     vec2 q = gl_FragCoord.xy + g_tileOrigin;
     if (!lfdPixelOverlapsTriangle(q, q0, q1, q2))
@@ -69,7 +100,7 @@ void main()
 
     // Step 2: the point: pixel centre on the triangle plane; attributes from the clamped
     // barycentrics (conservative pixels may lie just outside the triangle).
-    TriangleRecordGpu r = records[g_record];
+    LfdprPaperTriangleGpu r = records[g_record];
     LfdFrame frame;
     frame.u = r.axisU.xyz;
     frame.v = r.axisV.xyz;
@@ -79,14 +110,7 @@ void main()
     vec3 w = lfdClampedBarycentric(q0, q1, q2, q);
     vec2 uv = w.x * s.q2uv0.zw + w.y * s.uv12.xy + w.z * s.uv12.zw;
     uint flags = floatBitsToUint(r.p2.w);
-    vec3 n;
-    if ((flags & LFDPR_TRIANGLE_FACE_NORMAL) != 0u) {
-        n = frame.n;
-    } else {
-        n = w.x * lfdOctDecode(unpackSnorm2x16(s.normals.x)) + w.y * lfdOctDecode(unpackSnorm2x16(s.normals.y)) +
-            w.z * lfdOctDecode(unpackSnorm2x16(s.normals.z));
-        n = dot(n, n) > 0.0 ? normalize(n) : frame.n;
-    }
+    vec3 n = pointNormal(s, w, flags, frame.n);
 
     // Step 3: texture values at LOD_min and LOD_max for each of the material's textures
     // (multiview mipmapping); LOD 0 for both when it is switched off.
@@ -108,28 +132,15 @@ void main()
     if (useTextures && (m.flags & LFD_MATERIAL_EMISSIVE_TEXTURE) != 0u)
         emissive = fetchPair(t_emissive, uv, vpuv, mipmapping);
     if (useTextures && (m.flags & LFD_MATERIAL_NORMAL_TEXTURE) != 0u &&
-        (u_streams & LFD_STREAM_TANGENT) != 0u && (flags & LFDPR_TRIANGLE_FACE_NORMAL) == 0u) {
-        vec3 tangent = w.x * lfdOctDecode(unpackSnorm2x16(s.tangents.x)) +
-                       w.y * lfdOctDecode(unpackSnorm2x16(s.tangents.y)) +
-                       w.z * lfdOctDecode(unpackSnorm2x16(s.tangents.z));
-        // Handedness of the nearest vertex (it is constant across a well-formed triangle).
-        uint nearest = w.x >= w.y && w.x >= w.z ? 0u : (w.y >= w.z ? 1u : 2u);
-        float handedness = (s.tangents.w & (1u << nearest)) != 0u ? -1.0 : 1.0;
-        vec3 t = tangent - n * dot(n, tangent);
-        if (dot(t, t) > 1e-12) {
-            t = normalize(t);
-            TexPair nt = fetchPair(t_normal, uv, vpuv, mipmapping);
-            normalLo = perturb(n, t, handedness, nt.lo, m.params.z);
-            normalHi = perturb(n, t, handedness, nt.hi, m.params.z);
-        }
-    }
+        (u_streams & LFD_STREAM_TANGENT) != 0u && (flags & LFDPR_TRIANGLE_FACE_NORMAL) == 0u)
+        normalMapPair(s, w, n, uv, vpuv, mipmapping, m.params.z, normalLo, normalHi);
 
     // Step 4: append (never past the capacity: the count still grows, so the renderer sees
     // the overflow and enlarges the buffer for the next frame).
     uint index = atomicAdd(counters.pointCount, 1u);
     if (index >= u_lfd.counts.y)
         return;
-    PointGpu p;
+    LfdprPaperPointGpu p;
     p.position = position;
     p.triangle = g_record;
     p.normalMin = packSnorm2x16(lfdOctEncode(normalLo));

@@ -1,6 +1,6 @@
-// LFDPR point generation in compute (the visibility pipeline; shaders/lfdpr_points.comp):
+// LFDPR point generation in compute (the visibility pipeline; shaders/lfdpr_visibility_points.comp):
 // one invocation per triangle, then one workgroup per large triangle. Triangles are cut
-// into workgroups of LFDPR_GROUP_SIZE triangles of one draw (LfdprWorkgroupGpu), so one
+// into workgroups of LFDPR_GROUP_SIZE triangles of one draw (LfdprVisibilityWorkgroupGpu), so one
 // dispatch samples every draw without an alpha test, and each alpha-tested draw (whose
 // textures must be bound) gets one of its own: the dispatch count does not grow with the
 // scene's draws. Large triangles are queued per such dispatch class and sampled by one
@@ -17,13 +17,13 @@ namespace lfd::player {
 
 class GpuScene;
 
-class LfdprComputePointGeneration {
+class LfdprVisibilityPointGeneration {
 public:
     // Builds the programs (per pass, with and without alpha test); `pixelCentreCulling`
     // compiles in LFDPR_PIXEL_CENTRE_CULLING (LfdprOptions::pixelCentreCulling);
     // cellScale > 1 compiles in LFDPR_CELL_SCALE (LfdprOptions::cellScale) for the programs
     // of materials without an alpha test; `gpuWork` LFDPR_WORK_GPU (lfdpr_work_shape.glsl).
-    LfdprComputePointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork);
+    LfdprVisibilityPointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork);
 
     // The workgroup table and the large-triangle queues for `scene`'s draws (again only
     // when the scene changes).

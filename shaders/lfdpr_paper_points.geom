@@ -37,10 +37,10 @@ layout(location = LFDPR_LOC_RECORD_BASE) uniform uint u_recordBase;
 layout(location = LFDPR_LOC_FIRST_TRIANGLE) uniform uint u_firstTriangle;
 
 layout(std430, binding = LFDPR_SSBO_TRIANGLES) coherent writeonly buffer TriangleRecordsOut {
-    TriangleRecordGpu recordsOut[];
+    LfdprPaperTriangleGpu recordsOut[];
 };
 layout(std430, binding = LFDPR_SSBO_SAMPLING) coherent writeonly buffer TriangleSamplingOut {
-    TriangleSamplingGpu samplingOut[];
+    LfdprPaperSamplingGpu samplingOut[];
 };
 
 uint packOct(vec3 v)

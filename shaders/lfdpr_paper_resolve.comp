@@ -20,7 +20,7 @@ layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) readonly buffer ViewWords {
 layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) readonly buffer ViewDepth {
     uint viewDepth[];
 };
-layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) readonly buffer ViewColor {
+layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) readonly buffer ViewColor {
     uint viewColor[];
 };
 #endif

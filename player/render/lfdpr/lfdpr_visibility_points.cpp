@@ -1,4 +1,4 @@
-#include "lfdpr_compute_points.h"
+#include "lfdpr_visibility_points.h"
 
 #include "gpu_scene.h"
 #include "lfdpr_constants.h"
@@ -16,7 +16,7 @@ namespace lfd::player {
 
 namespace {
 
-using lfdpr_bindings::LfdprWorkgroupGpu;
+using lfdpr_bindings::LfdprVisibilityWorkgroupGpu;
 
 bool alphaTested(const GpuScene& scene, int32_t material)
 {
@@ -32,7 +32,7 @@ void dispatchCovering(uint32_t n)
 
 } // namespace
 
-LfdprComputePointGeneration::LfdprComputePointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork)
+LfdprVisibilityPointGeneration::LfdprVisibilityPointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork)
 {
     for (int alpha = 0; alpha < 2; ++alpha)
         for (int large = 0; large < 2; ++large) {
@@ -47,11 +47,11 @@ LfdprComputePointGeneration::LfdprComputePointGeneration(bool pixelCentreCulling
                 defines.push_back("LFDPR_CELL_SCALE " + std::to_string(cellScale));
             if (gpuWork)
                 defines.emplace_back("LFDPR_WORK_GPU 1");
-            programs_[alpha][large] = gl::Program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_points.comp"}}, defines));
+            programs_[alpha][large] = gl::Program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility_points.comp"}}, defines));
         }
 }
 
-void LfdprComputePointGeneration::prepare(const GpuScene& scene)
+void LfdprVisibilityPointGeneration::prepare(const GpuScene& scene)
 {
     if (scene.serial() == sceneSerial_)
         return;
@@ -62,7 +62,7 @@ void LfdprComputePointGeneration::prepare(const GpuScene& scene)
     // Step 1: the workgroup table, draws without an alpha test first (one class), then each
     // alpha-tested draw (a class each); a class's large triangles queue in a segment of
     // its triangle count.
-    std::vector<LfdprWorkgroupGpu> table;
+    std::vector<LfdprVisibilityWorkgroupGpu> table;
     classes_.clear();
     uint32_t queued = 0;
     auto addDraw = [&](uint32_t d) {
@@ -86,22 +86,22 @@ void LfdprComputePointGeneration::prepare(const GpuScene& scene)
         }
 
     // Step 2: the buffers.
-    workgroups_ = gl::createBuffer(table.size() * sizeof(LfdprWorkgroupGpu), 0, table.empty() ? nullptr : table.data());
+    workgroups_ = gl::createBuffer(table.size() * sizeof(LfdprVisibilityWorkgroupGpu), 0, table.empty() ? nullptr : table.data());
     large_ = gl::createBuffer(size_t(std::max<uint32_t>(queued, 1)) * k.largeEntryBytes);
     largeDispatch_ = gl::createBuffer(classes_.size() * k.largeDispatchBytes);
-    bytes_ = table.size() * sizeof(LfdprWorkgroupGpu) + size_t(queued) * k.largeEntryBytes +
+    bytes_ = table.size() * sizeof(LfdprVisibilityWorkgroupGpu) + size_t(queued) * k.largeEntryBytes +
              classes_.size() * k.largeDispatchBytes;
 }
 
-void LfdprComputePointGeneration::clearQueues() const
+void LfdprVisibilityPointGeneration::clearQueues() const
 {
-    const GLuint noGroups[4] = {0, 1, 1, 0}; // x, y, z, queued (lfdpr_points.comp keeps x, y)
+    const GLuint noGroups[4] = {0, 1, 1, 0}; // x, y, z, queued (lfdpr_visibility_points.comp keeps x, y)
     glClearNamedBufferData(largeDispatch_, GL_RGBA32UI, GL_RGBA_INTEGER, GL_UNSIGNED_INT, noGroups);
 }
 
-size_t LfdprComputePointGeneration::bufferBytes() const { return bytes_; }
+size_t LfdprVisibilityPointGeneration::bufferBytes() const { return bytes_; }
 
-void LfdprComputePointGeneration::run(const GpuScene& scene) const
+void LfdprVisibilityPointGeneration::run(const GpuScene& scene) const
 {
     const LfdprConstants& k = LfdprConstants::get();
     const uint32_t streams = scene.cpu().vertices.mask();

@@ -1,6 +1,6 @@
 #version 450 core
 // LFDPR shading, step 2 of 2 (the visibility pipeline): each view pixel that a point won
-// in lfdpr_visibility.comp is shaded once, as mvr shades a fragment - the same material
+// in lfdpr_visibility_splat.comp is shaded once, as mvr shades a fragment - the same material
 // function (material_shading.glsl), the point's triangle interpolated perspective-correctly
 // at the pixel centre, and every texture fetched with textureGrad at the pixel's exact
 // footprint in this view (analytic uv gradients: the pixel's neighbours on the triangle
@@ -8,7 +8,7 @@
 // replaces the paper's per-splat shading with tv_min / tv_max (multiview mipmapping),
 // which the paper's pipeline keeps.
 //
-// One dispatch per shading group (lfdpr_shade_list.comp): a workgroup per listed tile chunk
+// One dispatch per shading group (lfdpr_visibility_shade_list.comp): a workgroup per listed tile chunk
 // (one tile position over a run of views) and slice of its views (lfdpr_work_shape.glsl:
 // the whole chunk on llvmpipe, LFDPR_SHADE_VIEWS on a GPU), each invocation finding the views of the
 // chunk's mask in which its pixel is group u_group's and shading those (a textured group
@@ -18,7 +18,7 @@
 // program reads a stream the scene lacks (llvmpipe would run those loads under an off mask).
 // On the 32-bit path, u_pass 0 first checks that the stored record belongs to the
 // stored depth key; a pixel that fails gets no index, its tile chunk goes on the repair
-// list, and after lfdpr_visibility.comp's index pass the listed chunks are shaded again
+// list, and after lfdpr_visibility_splat.comp's index pass the listed chunks are shaded again
 // (u_pass 2).
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
@@ -54,7 +54,7 @@ layout(binding = LFDPR_UNIT_TANGENTS) uniform samplerBuffer t_sceneTangents;
 layout(binding = LFDPR_UNIT_UVS) uniform samplerBuffer t_sceneUvs;
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
 #ifndef LFDPR_INT64
-layout(std430, binding = LFDPR_SSBO_VIEW_COLOR) writeonly buffer ViewIndex {
+layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) writeonly buffer ViewIndex {
     uint viewIndex[];
 };
 #endif
@@ -65,16 +65,16 @@ vec3 objectNormal(uint vertex)
 }
 
 // A visible point's triangle in one view: its draw, vertices, scene positions and window
-// positions (projected as lfdpr_visibility.comp projects them).
+// positions (projected as lfdpr_visibility_splat.comp projects them).
 struct ViewTriangle {
-    LfdprDrawGpu draw;
+    LfdprVisibilityDrawGpu draw;
     uvec3 vi;
     vec3 p0, p1, p2;
     vec2 s0, s1, s2;
     vec3 invW;
 };
 
-ViewTriangle viewTriangle(LfdprRecordGpu r, LfdprDrawGpu draw, uint view)
+ViewTriangle viewTriangle(LfdprVisibilityRecordGpu r, LfdprVisibilityDrawGpu draw, uint view)
 {
     ViewTriangle t;
     t.draw = draw;
@@ -94,7 +94,7 @@ ViewTriangle viewTriangle(LfdprRecordGpu r, LfdprDrawGpu draw, uint view)
 vec4 shadePixel(ViewTriangle t, uint view, LfdViewTriangle vt, vec3 edges)
 {
     // Step 1: the triangle in this view.
-    LfdprDrawGpu draw = t.draw;
+    LfdprVisibilityDrawGpu draw = t.draw;
     uvec3 vi = t.vi;
     vec3 p0 = t.p0, p1 = t.p1, p2 = t.p2;
     vec3 invW = t.invW;
@@ -150,19 +150,19 @@ vec4 shadePixel(ViewTriangle t, uint view, LfdViewTriangle vt, vec3 edges)
 // Whether view pixel `pixel`'s winning point belongs to the group being shaded (the chunk
 // was listed for the group's points, which may be hidden here; decided from the draw,
 // before any vertex is fetched); a shared group shades one material.
-bool groupWinner(uint pixel, out LfdprRecordGpu record)
+bool groupWinner(uint pixel, out LfdprVisibilityRecordGpu record)
 {
     uint winner = lfdPixelWinner(pixel);
     if (winner == 0xFFFFFFFFu)
         return false; // background (the views were cleared to it)
     record = lfdRecord(winner);
-    LfdprDrawGpu draw = lfdDraw(record.draw);
+    LfdprVisibilityDrawGpu draw = lfdDraw(record.draw);
     return draw.group == u_group && (u_group == 0u || draw.material == u_shadeMaterial);
 }
 
 // Shades view pixel `pixel` (xy of view `view`), whose winner's record is `record`
 // (steps 3-4 of main).
-void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint chunkTile)
+void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprVisibilityRecordGpu record, uint chunkTile)
 {
     ViewTriangle t = viewTriangle(record, lfdDraw(record.draw), view);
     vec2 centre = vec2(xy) + 0.5;
@@ -172,10 +172,10 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint
     // Step 3 (32-bit path): the single splat pass stores depth by atomicMin and the index
     // by a plain store, so a racing point may have left its index under another's depth.
     if (u_pass == 0u && lfdPlaneDepthKey(vt, edges) != lfdPixelKey(pixel)) {
-        viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility.comp LFDPR_INDEX_PASS sets it again
+        viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility_splat.comp LFDPR_INDEX_PASS sets it again
         uint entry = atomicAdd(shadeCounters.repairCount, 1u);
         if (entry < shadeCounters.repairCapacity)
-            groupTiles[shadeCounters.repairBase + entry] = chunkTile; // listed again (lfdpr_shade_list.comp)
+            groupTiles[shadeCounters.repairBase + entry] = chunkTile; // listed again (lfdpr_visibility_shade_list.comp)
         return;
     }
 #endif
@@ -188,7 +188,7 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprRecordGpu record, uint
 void main()
 {
     // Step 1: this workgroup's tile chunk and its views with pixels of the group, from
-    // the group's list (lfdpr_shade_list.comp).
+    // the group's list (lfdpr_visibility_shade_list.comp).
     uvec2 size = uvec2(u_lfd.viewSize.xy);
     uvec2 tiles = lfdShadeTiles(size);
     uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;
@@ -212,7 +212,7 @@ void main()
     uvec2 mine = uvec2(0u);
     for (uvec2 bits = mask; bits != uvec2(0u);) {
         uint v = lfdTakeChunkView(bits);
-        LfdprRecordGpu record;
+        LfdprVisibilityRecordGpu record;
         if (groupWinner(lfdViewWord(c.firstView + v, xy.x, xy.y, size.x, u_lfd.counts.x), record))
             mine[v >> 5] |= 1u << (v & 31u);
     }

@@ -1,4 +1,4 @@
-// LFDPR point generation (paper section 3.1; shaders/lfdpr_points.{vert,geom,frag}): the
+// LFDPR point generation (paper section 3.1; shaders/lfdpr_paper_points.{vert,geom,frag}): the
 // frame constants the stage needs, and the pass itself - every draw of the scene through
 // VS -> GS -> FS into a framebuffer without attachments (the LFDPR_TILE_SIZE^2 sampling
 // viewport), appending points to the point buffer and writing one record per emitting
@@ -33,9 +33,9 @@ std::array<glm::dvec4, 6> unionFrustumPlanesDisplay(const FrameSetup& frame, dou
 // The frame constants for `frame` (planes taken to scene space).
 LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, uint32_t options);
 
-class LfdprPointGeneration {
+class LfdprPaperPointGeneration {
 public:
-    LfdprPointGeneration(); // builds the program and the attachment-less framebuffer
+    LfdprPaperPointGeneration(); // builds the program and the attachment-less framebuffer
 
     unsigned program() const { return program_.get(); }
     // Number of triangle records the scene needs (sum over draws; instanced meshes count

@@ -1,20 +1,20 @@
 #version 450 core
 // LFDPR shading, step 1 of 2 (the visibility pipeline): each shading group's list of tile
-// chunks to shade. lfdpr_visibility.comp marked, per group and tile chunk (one
+// chunks to shade. lfdpr_visibility_splat.comp marked, per group and tile chunk (one
 // LFDPR_SHADE_TILE-square tile position over up to LFDPR_VIEW_CHUNK views), the views in
 // which a point of the group wrote a pixel there (LFDPR_SSBO_CHUNK_MASKS); every marked
 // chunk becomes one entry (chunk index, view mask) of the group's list, and
-// lfdpr_shade.comp runs a workgroup per entry over the views of its mask.
+// lfdpr_visibility_shade.comp runs a workgroup per entry over the views of its mask.
 // Why marks from the splat rather than a pass over the pixels: classifying every view pixel
 // (the chain winner -> record -> draw -> material) cost 25-50 ms per frame on
 // llvmpipe for the prototype's 8.3M view pixels; a point marks each tile chunk it touches
 // once per run of views (a few atomics per point), and this pass reads one mask per group
-// and chunk. A group may be listed where its points were then hidden; lfdpr_shade.comp
+// and chunk. A group may be listed where its points were then hidden; lfdpr_visibility_shade.comp
 // checks each pixel's winner.
 //   Pass 0: one invocation per (group, chunk). LFDPR_REPAIR_LIST: the 32-bit path's repair,
 //   one invocation per (repair-list entry, group): the listed chunks again, with the same
 //   masks (a chunk listed twice is shaded twice, to the same colours). The repair's
-//   dispatches are indirect (lfdpr_repair_dispatch.comp).
+//   dispatches are indirect (lfdpr_visibility_repair_dispatch.comp).
 #include "scene_bindings.glsl"
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"
@@ -26,7 +26,7 @@ layout(local_size_x = 64) in;
 layout(location = LFDPR_LOC_SHADE_GROUPS) uniform uint u_groups;
 #ifdef LFDPR_REPAIR_LIST
 layout(std430, binding = LFDPR_SSBO_REPAIR) readonly buffer Repair {
-    LfdprRepairGpu repair; // indexPass.w: entries in the repair list (lfdpr_repair_dispatch.comp)
+    LfdprVisibilityRepairGpu repair; // indexPass.w: entries in the repair list (lfdpr_visibility_repair_dispatch.comp)
 };
 #endif
 

@@ -1,0 +1,76 @@
+#include "tool_flags.h"
+
+#include "cli_support.h"
+
+#include <cmath>
+
+namespace lfd::player {
+
+using cli::UsageError;
+
+void addSharedFlags(CLI::App& app, SharedFlags& flags)
+{
+    app.add_option("--display", flags.displayProfile,
+                   "display profile JSON or Looking Glass visual.json (default: the paper's prototype)");
+    flags.viewSizeOpt = app.add_option("--view-size", flags.viewSizeText, "view size WxH (overrides the profile)");
+    app.add_option("--fps", flags.fps, "frame k is at time k / fps")->capture_default_str();
+    app.add_option("--turntable-period", flags.turntablePeriod, "seconds per turntable revolution (0 = still)")
+        ->capture_default_str();
+    app.add_option("--gstd-factor", flags.gstdFactor,
+                   "gstd: sub-views render at this many times the view resolution (slow gold standard)")
+        ->capture_default_str();
+    app.add_option("--lfdpr-work", flags.lfdprWorkText,
+                   "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
+                   "short invocations) | cpu (long invocations); the views are the same")
+        ->capture_default_str();
+    app.add_flag("--gl-debug", flags.glDebug,
+                 "debug GL context: print every KHR_debug message; a GL error fails the run naming the call");
+}
+
+void finishSharedFlags(SharedFlags& flags)
+{
+    if (*flags.viewSizeOpt)
+        flags.viewSize = cli::parseSize("--view-size", flags.viewSizeText);
+    if (!std::isfinite(flags.fps) || flags.fps <= 0.0)
+        throw UsageError("--fps: must be a positive number");
+    if (!std::isfinite(flags.turntablePeriod) || flags.turntablePeriod < 0.0)
+        throw UsageError("--turntable-period: must be >= 0");
+    GstdOptions gstd;
+    gstd.factor = flags.gstdFactor;
+    try {
+        validateGstdOptions(gstd);
+    } catch (const std::exception& e) {
+        throw UsageError(std::string("--gstd-factor: ") + e.what());
+    }
+    try {
+        flags.lfdprWork = parseLfdprWorkShape(flags.lfdprWorkText);
+    } catch (const std::exception& e) {
+        throw UsageError(e.what());
+    }
+}
+
+void applySharedFlags(const SharedFlags& flags, RendererOptions& options)
+{
+    options.gstd.factor = flags.gstdFactor;
+    options.lfdpr.workShape = flags.lfdprWork;
+}
+
+Reconstruction parseReconstructionFlag(const std::string& flag, const std::string& text)
+{
+    try {
+        return parseReconstruction(text);
+    } catch (const std::exception& e) {
+        throw UsageError(flag + ": " + e.what());
+    }
+}
+
+Supersampling parseSupersamplingFlag(const std::string& flag, const std::string& text)
+{
+    try {
+        return parseSupersampling(text);
+    } catch (const std::exception& e) {
+        throw UsageError(flag + ": " + e.what());
+    }
+}
+
+} // namespace lfd::player

@@ -1,0 +1,43 @@
+// The flags lfd-play and lfd-bench both take, declared once (addSharedFlags) and parsed
+// once into typed values (finishSharedFlags), and the typed --aa / --ss parsers both tools'
+// flags go through. Each tool copies the values into its own options.
+#pragma once
+
+#include "eia_builder.h"
+#include "frame_pipeline.h"
+#include "renderer_registry.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+
+namespace lfd::player {
+
+struct SharedFlags {
+    // Typed values, after finishSharedFlags.
+    std::string displayProfile;                             // --display; empty: the paper's prototype
+    std::optional<std::pair<uint32_t, uint32_t>> viewSize; // --view-size
+    double fps = 60.0;                                      // --fps: frame k is at time k / fps
+    double turntablePeriod = 10.0;                          // --turntable-period: 0 = still
+    uint32_t gstdFactor = GstdOptions{}.factor;             // --gstd-factor
+    LfdprOptions::WorkShape lfdprWork = LfdprOptions::WorkShape::Auto; // --lfdpr-work
+    bool glDebug = false;                                   // --gl-debug
+    // As CLI11 fills them.
+    std::string viewSizeText, lfdprWorkText = "auto";
+    CLI::Option* viewSizeOpt = nullptr;
+};
+
+void addSharedFlags(CLI::App& app, SharedFlags& flags);
+// Checks and types the parsed flags; cli::UsageError naming the flag.
+void finishSharedFlags(SharedFlags& flags);
+// --gstd-factor and --lfdpr-work into the renderers' options.
+void applySharedFlags(const SharedFlags& flags, RendererOptions& options);
+
+// --aa / --ss values; cli::UsageError naming `flag` and the choices.
+Reconstruction parseReconstructionFlag(const std::string& flag, const std::string& text);
+Supersampling parseSupersamplingFlag(const std::string& flag, const std::string& text);
+
+} // namespace lfd::player
