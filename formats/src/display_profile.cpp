@@ -149,8 +149,8 @@ double optionalDouble(const json& root, const char* key, double fallback,
     return it == root.end() ? fallback : toDouble(*it, source, key);
 }
 
-DisplayProfile parseProjectProfile(const json& root, const std::string& source) {
-    // Step 1: reject unknown keys first, so a typo is reported as such and not as the
+void checkProjectKeys(const json& root, const std::string& source) {
+    // Reject unknown keys first, so a typo is reported as such and not as the
     // "missing" key it was meant to be.
     for (const auto& item : root.items()) {
         const std::string& key = item.key();
@@ -163,10 +163,10 @@ DisplayProfile parseProjectProfile(const json& root, const std::string& source) 
             throwProfileError(source, "format",
                               std::string("must be \"") + kFormatMarker + "\", got " + it->dump());
     }
+}
 
-    DisplayProfile p;
-
-    // Step 2: name (optional, defaults to the file stem).
+void readProjectName(const json& root, const std::string& source, DisplayProfile& p) {
+    // Name (optional, defaults to the file stem).
     if (auto it = root.find("name"); it != root.end()) {
         if (!it->is_string())
             throwProfileError(source, "name", "must be a string");
@@ -174,8 +174,10 @@ DisplayProfile parseProjectProfile(const json& root, const std::string& source) 
     }
     if (p.name.empty())
         p.name = detail::defaultProfileName(source);
+}
 
-    // Step 3: panel.
+void readProjectPanel(const json& root, const std::string& source, DisplayProfile& p) {
+    // Panel.
     p.panelWidth = detail::toUint32(requireKey(root, "panel_width", source), source, "panel_width");
     p.panelHeight =
         detail::toUint32(requireKey(root, "panel_height", source), source, "panel_height");
@@ -193,8 +195,10 @@ DisplayProfile parseProjectProfile(const json& root, const std::string& source) 
             throwProfileError(source, "subpixel_order",
                               "must be \"RGB\" or \"BGR\", got " + it->dump());
     }
+}
 
-    // Step 4: lenticular sheet. lens_count (the measured ratio screen width / lens width)
+void readProjectLenticularSheet(const json& root, const std::string& source, DisplayProfile& p) {
+    // Lenticular sheet. lens_count (the measured ratio screen width / lens width)
     // wins over lens_width_mm for the mapping when both are given, as for the prototype.
     const auto lensWidthIt = root.find("lens_width_mm");
     const auto lensCountIt = root.find("lens_count");
@@ -228,8 +232,10 @@ DisplayProfile parseProjectProfile(const json& root, const std::string& source) 
         p.mapping = vanBerkelMapping(p.panelWidth, lensCount, p.lensTiltDeg, p.offsetSubpixels);
         p.mapping.invert = invert;
     }
+}
 
-    // Step 5: views and viewing geometry; cone and distance have documented defaults.
+void readProjectViews(const json& root, const std::string& source, DisplayProfile& p) {
+    // Views and viewing geometry; cone and distance have documented defaults.
     p.viewCount = detail::toUint32(requireKey(root, "view_count", source), source, "view_count");
     p.viewWidth = detail::toUint32(requireKey(root, "view_width", source), source, "view_width");
     p.viewHeight = detail::toUint32(requireKey(root, "view_height", source), source, "view_height");
@@ -237,6 +243,15 @@ DisplayProfile parseProjectProfile(const json& root, const std::string& source) 
     p.viewingDistanceMm = optionalDouble(
         root, "viewing_distance_mm",
         detail::kDefaultViewingDistanceScreenHeights * p.screenHeightMm, source);
+}
+
+DisplayProfile parseProjectProfile(const json& root, const std::string& source) {
+    checkProjectKeys(root, source);
+    DisplayProfile p;
+    readProjectName(root, source, p);
+    readProjectPanel(root, source, p);
+    readProjectLenticularSheet(root, source, p);
+    readProjectViews(root, source, p);
     return p;
 }
 
