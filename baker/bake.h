@@ -54,6 +54,8 @@ struct ImportedScene {
     std::vector<TextureSource> textureSources; // parallel to scene.textures
     std::vector<std::string> warnings;  // also sent to Log::warn
     size_t sourceTriangles = 0;
+    // Files read besides the textures' (textureSources[].file): the glTF and its buffers.
+    std::vector<std::filesystem::path> filesRead;
 };
 
 // Reads .gltf (external .bin / images or data URIs) and .glb. Converts strips/fans to

@@ -1050,6 +1050,8 @@ void importInto(const std::filesystem::path& path, const std::string& file, cons
     // Step 1: load and check the whole document (no image decoding); its warnings first.
     std::vector<gltf::SchemaIssue> issues;
     const gltf::LoadedGltf loaded = gltf::loadGltf(path, file, issues);
+    result.filesRead.push_back(path);
+    result.filesRead.insert(result.filesRead.end(), loaded.bufferFiles.begin(), loaded.bufferFiles.end());
     for (const gltf::SchemaIssue& issue : issues)
         warnings.add(issue.text());
     const tinygltf::Model& model = loaded.model;

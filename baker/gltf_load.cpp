@@ -349,6 +349,7 @@ LoadedGltf loadGltf(const fs::path& path, const std::string& file, std::vector<S
     out.model = parseWithTinygltf(forTinygltf, memory, path, file, warnings);
     out.dataImages = std::move(resources.dataImages);
     out.buffersWithoutData = resources.withoutData;
+    out.bufferFiles = std::move(resources.files);
     if (document.contains("accessors") && document["accessors"].is_array())
         for (size_t a = 0; a < document["accessors"].size(); ++a) {
             const json& acc = document["accessors"][a];

@@ -31,6 +31,8 @@ struct LoadedGltf {
     // Accessors without a bufferView and without sparse data: zeros, "unless an extension
     // overrides them" (section 3.6.2.3), so what they stand for is not in the file.
     std::set<size_t> accessorsWithoutData;
+    // The buffer files read besides the glTF itself (for the bake's depfile).
+    std::vector<std::filesystem::path> bufferFiles;
 };
 
 // The extensions the baker honours when a file requires them: KHR_mesh_quantization

@@ -174,6 +174,7 @@ public:
         for (size_t i = 0; i < images.size(); ++i)
             if (auto bytes = image(images[i], i, used.count(i) != 0))
                 out.dataImages.emplace(i, std::move(*bytes));
+        out.files = std::move(filesRead_);
         return out;
     }
 
@@ -243,6 +244,7 @@ private:
         }
         const std::filesystem::path file = baseDir_ / uri.payload;
         std::optional<std::vector<uint8_t>> data = readFile(file);
+        filesRead_.push_back(file);
         if (!data) {
             problem(uriPath, "file '" + file.string() + "' not found" + reader);
             return zeros();
@@ -318,6 +320,7 @@ private:
     const GltfContainer& container_;
     std::filesystem::path baseDir_;
     std::vector<SchemaIssue>& issues_;
+    std::vector<std::filesystem::path> filesRead_;
 };
 
 } // namespace

@@ -50,6 +50,8 @@ struct ResolvedResources {
     std::set<size_t> withoutData;
     // Images given by data URIs, decoded (index -> encoded bytes).
     std::map<size_t, std::vector<uint8_t>> dataImages;
+    // The buffer files read (relative URIs resolved), for the bake's depfile.
+    std::vector<std::filesystem::path> files;
 };
 
 // Resolves every buffer of `document` (already schema-checked) and decodes the images' data

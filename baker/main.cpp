@@ -1,9 +1,11 @@
 // lfd-bake: glTF 2.0 -> .lfdpack (see README.md "Baking") and `lfd-bake --inspect PACK`.
 #include "bake.h"
 #include "bake_bench.h"
+#include "bake_outputs.h"
 #include "bake_report.h"
 #include "mip_chain.h"
 #include "parallel.h"
+#include "rgbd_import.h"
 #include "texture_compression.h"
 #include "texture_prefetch.h"
 #include "lfd/pack.h"
@@ -29,6 +31,7 @@ constexpr uint64_t kTextureMemoryLimit = uint64_t(1) << 30;
 
 struct Options {
     std::filesystem::path input, output, display, inspect;
+    std::filesystem::path depfile; // --depfile: the files the bake read, Make/Ninja syntax
     double maxEdgePx = 100.0;
     double fill = 1.0;
     uint32_t maxTextureSize = 16384;
@@ -41,6 +44,9 @@ struct Options {
     bool bench = false;
     unsigned benchRun = 0; // > 0: one --bench run in this process (started by --bench)
     BenchOptions benchOptions;
+    std::vector<std::filesystem::path> rgbd; // --rgbd COLOR [DEPTH]: an RGB-D image instead of glTF
+    RgbdOptions rgbdOptions;
+    std::vector<double> rgbdDepthRange;
 };
 
 double secondsSince(Clock::time_point start)
@@ -66,7 +72,7 @@ Log bakeLog(const Options& o)
         // --strict: the first warning (schema or otherwise) refuses the input.
         log.warn = [file](const std::string& s) { throw BakeError(file + ": " + s + " (--strict)"); };
     } else {
-        log.warn = [file](const std::string& s) { std::cerr << "warning: " << file << ": " << s << "\n"; };
+        log.warn = [file](const std::string& s) { std::cerr << "lfd-bake: warning: " << file << ": " << s << "\n"; };
     }
     if (!o.quiet)
         log.info = [](const std::string& s) { std::cout << s << "\n" << std::flush; };
@@ -174,6 +180,47 @@ void finishReport(const ImportedScene& imported, double viewPixelWorld, const Op
     report.threads = resolveThreads(o.threads);
 }
 
+// RGB-D input (rgbd_import.h): a photo and depth map, or one side-by-side image.
+void addRgbdFlags(CLI::App& app, Options& o)
+{
+    RgbdOptions& r = o.rgbdOptions;
+    app.add_option("--rgbd", o.rgbd,
+                   "bake a photo and its depth map (COLOR DEPTH), or one side-by-side image (COLOR|DEPTH), instead "
+                   "of a glTF scene")
+        ->expected(1, 2);
+    app.add_option("--rgbd-relief", r.relief, "RGB-D: depth of the relief in image heights (default 0.5)")
+        ->check(CLI::Range(0.0, 100.0));
+    app.add_option("--rgbd-depth-range", o.rgbdDepthRange,
+                   "RGB-D: the depth-map values (0..1) mapped to far and near; others are clamped (default 0 1)")
+        ->expected(2);
+    app.add_flag("--rgbd-invert", r.invert, "RGB-D: black is near (default: white is near)");
+    app.add_option("--rgbd-edges", r.edges,
+                   "RGB-D: triangles across a depth discontinuity: drop (default) or stretch")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, RgbdEdges>{{"drop", RgbdEdges::Drop}, {"stretch", RgbdEdges::Stretch}},
+            CLI::ignore_case));
+    app.add_option("--rgbd-edge-threshold", r.edgeThreshold,
+                   "RGB-D: a triangle spanning more than this fraction of the depth range is a discontinuity "
+                   "(default 0.05)")
+        ->check(CLI::Range(0.0, 1.0));
+    app.add_option("--rgbd-flatness", r.flatness,
+                   "RGB-D: merge grid triangles where the surface is flat within this many image heights "
+                   "(default 0.001; 0: one vertex per depth pixel)")
+        ->check(CLI::Range(0.0, 1.0));
+}
+
+// Every file the bake read: the glTF, its buffer and image files, the display profile.
+std::vector<std::filesystem::path> bakeInputs(const ImportedScene& imported, const Options& o)
+{
+    std::vector<std::filesystem::path> files = imported.filesRead;
+    for (const TextureSource& source : imported.textureSources)
+        if (!source.file.empty())
+            files.push_back(source.file);
+    if (!o.display.empty())
+        files.push_back(o.display);
+    return files;
+}
+
 // The bake, stage by stage (README "Baking"), each stage timed for the report.
 int bakeScene(const Options& o)
 {
@@ -188,7 +235,7 @@ int bakeScene(const Options& o)
     };
 
     ImportedScene imported;
-    timed("import", [&] { imported = importGltf(o.input, log); });
+    timed("import", [&] { imported = o.rgbd.empty() ? importGltf(o.input, log) : importRgbd(o.rgbdOptions, log); });
     Scene& scene = imported.scene;
     double viewPixelWorld = 0.0;
     timed("bounds", [&] {
@@ -205,6 +252,8 @@ int bakeScene(const Options& o)
     timed("textures + write", [&] { bakeTexturesAndWrite(imported, o, log, report); });
 
     finishReport(imported, viewPixelWorld, o, report);
+    if (!o.depfile.empty())
+        writeDepfile(o.depfile, o.output, bakeInputs(imported, o));
     if (!o.quiet) // --quiet: warnings and errors only
         printBakeReport(std::cout, o.output, report);
     return 0;
@@ -236,6 +285,10 @@ int main(int argc, char** argv)
         ->transform(CLI::CheckedTransformer(
             std::map<std::string, TextureCompression>{{"none", TextureCompression::None}, {"bc", TextureCompression::Bc}},
             CLI::ignore_case));
+    app.add_option("--depfile", o.depfile,
+                   "also write the files the bake read (glTF, buffers, images, display profile) as a Make/Ninja "
+                   "depfile with the output as its target, for incremental batch builds");
+    addRgbdFlags(app, o);
     app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
     app.add_flag("--strict", o.strict, "treat every warning (e.g. a glTF schema violation the baker can work around) as an error");
     app.add_option("--threads", o.threads,
@@ -274,10 +327,26 @@ int main(int argc, char** argv)
                 o.benchOptions.threads.push_back(o.threads);
             return runBench(o.benchOptions, std::cout);
         }
+        if (!o.rgbd.empty()) {
+            if (!o.input.empty())
+                throw BakeError("--rgbd: give either a glTF INPUT or --rgbd, not both");
+            o.rgbdOptions.color = o.rgbd[0];
+            o.rgbdOptions.depth = o.rgbd.size() > 1 ? o.rgbd[1] : std::filesystem::path();
+            if (o.rgbdDepthRange.size() == 2) {
+                o.rgbdOptions.depthLow = o.rgbdDepthRange[0];
+                o.rgbdOptions.depthHigh = o.rgbdDepthRange[1];
+            }
+            o.input = o.rgbd[0]; // names the bake in messages, the settings and a folder output
+        }
         if (o.input.empty() || o.output.empty()) {
             std::cerr << "lfd-bake: need INPUT and -o OUTPUT (or --inspect PACK); see --help\n";
             return 2;
         }
+        // Checked before the import: a wrong output path is reported in a moment, not
+        // after the whole bake.
+        o.output = resolveOutputPath(o.input, o.output);
+        if (!o.depfile.empty())
+            o.depfile = resolveOutputPath(o.input, o.depfile, ".d");
         return bakeScene(o);
     } catch (const std::bad_alloc&) {
         // Input sizes are checked before allocation; this is the last line of defence.

@@ -43,6 +43,7 @@
 #include "bilinear_surface.h"
 #include "face_pattern.h"
 #include "parallel.h"
+#include "progress_clock.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
@@ -69,8 +70,9 @@ static_assert(kMaxOutputTriangles * 3 < std::numeric_limits<uint32_t>::max(),
 // Most pieces per edge: a face of rate n has about n^2 triangles, so a larger rate could
 // never fit kMaxOutputTriangles anyway (and Bfr's rates are ints).
 constexpr int kMaxEdgeRate = 1 << 14;
-// Input triangles between two progress lines on very large meshes.
-constexpr size_t kProgressInterval = size_t(1) << 20;
+// Seconds between two progress lines while a mesh is cut (a fine bound can keep one mesh
+// busy for many seconds; a line per chunk would flood the log on fast ones).
+constexpr double kProgressSeconds = 1.0;
 // Faces planned at a time (MeshTessellator::plan): enough work to share between threads,
 // few enough patterns held at once. A chunk also ends at about kPiecesPerChunk pieces, so
 // its patterns stay a few MiB however finely its faces are cut.
@@ -835,6 +837,7 @@ void splitGroup(const Scene& scene, const Group& group, size_t groupIndex, const
 
     // Triangle by triangle; each primitive's pieces stay together and in order.
     size_t groupOut = 0, done = 0;
+    ProgressClock progress(kProgressSeconds);
     for (uint32_t p : group.primitives) {
         const Primitive& prim = scene.primitives[p];
         std::vector<uint32_t>& out = pieces[p].indices;
@@ -855,11 +858,13 @@ void splitGroup(const Scene& scene, const Group& group, size_t groupIndex, const
                     pieces[p].changed = true;
                     bookCutFace(position, out, before, group, shared, result);
                 }
-                if (++done % kProgressInterval == 0)
-                    log.info("tessellation: " + label + ": " + std::to_string(done) + " / " +
-                             std::to_string(groupTriangles) + " triangles");
             }
             i += uint32_t(3 * faces);
+            done += faces;
+            if (progress.due())
+                log.info("tessellation: " + label + ": " + std::to_string(done) + " / " +
+                         std::to_string(groupTriangles) + " triangles, " +
+                         std::to_string(groupOut + out.size() / 3) + " pieces so far");
         }
         groupOut += out.size() / 3;
         if (!pieces[p].changed)

@@ -1,6 +1,6 @@
 // lfd-make-samples: writes the project's own glTF 2.0 sample scenes.
 //
-//   lfd-make-samples OUTDIR [--scene gallery|car|room|dense|all] [--texture-size N]
+//   lfd-make-samples OUTDIR [--scene gallery|car|room|dense|rgbd|all] [--texture-size N]
 //                    [--instances N] [--quiet]
 //
 // Each scene goes to OUTDIR/<scene>/ (<scene>.gltf, <scene>.bin, PNG textures). A scene
@@ -28,7 +28,7 @@ using namespace lfd::samples;
 namespace {
 
 constexpr const char* kUsage =
-    "usage: lfd-make-samples OUTDIR [--scene gallery|car|room|dense|all] [--texture-size N] "
+    "usage: lfd-make-samples OUTDIR [--scene gallery|car|room|dense|rgbd|all] [--texture-size N] "
     "[--instances N] [--quiet]\n"
     "  --scene         which scene to write (default: all)\n"
     "  --texture-size  gallery painting size in pixels, 16..32768 (default: 2048)\n"
@@ -104,10 +104,10 @@ Options parseArguments(int argc, char** argv)
         throw UsageError("missing OUTDIR");
     if (scene == "all")
         options.scenes = {"gallery", "car", "room"}; // dense is for benchmarks: ask for it
-    else if (scene == "gallery" || scene == "car" || scene == "room" || scene == "dense")
+    else if (scene == "gallery" || scene == "car" || scene == "room" || scene == "dense" || scene == "rgbd")
         options.scenes = {scene};
     else
-        throw UsageError("unknown scene '" + scene + "' (expected gallery, car, room, dense or all)");
+        throw UsageError("unknown scene '" + scene + "' (expected gallery, car, room, dense, rgbd or all)");
     return options;
 }
 
@@ -141,6 +141,8 @@ SceneSummary writeSceneAtomically(const Options& options, const std::string& nam
             summary = writeGalleryScene(staging, options.textureSize);
         else if (name == "car")
             summary = writeCarScene(staging);
+        else if (name == "rgbd")
+            summary = writeRgbdSample(staging);
         else if (name == "room")
             summary = writeRoomScene(staging, options.instances > 0 ? options.instances : 16);
         else
@@ -180,10 +182,14 @@ void run(const Options& options)
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (!options.quiet) {
             const fs::path dir = options.outDir / name;
-            std::printf("%s: %zu triangles stored, %zu drawn, %d textures, %.1f MiB -> %s (%.1f s)\n",
-                        name.c_str(), summary.storedTriangles, summary.drawnTriangles,
-                        summary.textures, double(directoryBytes(dir)) / (1024.0 * 1024.0),
-                        (dir / (name + ".gltf")).c_str(), seconds);
+            if (name == "rgbd")
+                std::printf("rgbd: photo, depth map and side-by-side image -> %s (for lfd-bake --rgbd; %.1f s)\n",
+                            dir.c_str(), seconds);
+            else
+                std::printf("%s: %zu triangles stored, %zu drawn, %d textures, %.1f MiB -> %s (%.1f s)\n",
+                            name.c_str(), summary.storedTriangles, summary.drawnTriangles,
+                            summary.textures, double(directoryBytes(dir)) / (1024.0 * 1024.0),
+                            (dir / (name + ".gltf")).c_str(), seconds);
         }
     }
 }

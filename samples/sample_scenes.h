@@ -32,4 +32,8 @@ SceneSummary writeRoomScene(const std::filesystem::path& dir, int instances);
 // 4.5K-triangle object (240: about 1.1M drawn triangles), rows behind rows.
 SceneSummary writeDenseScene(const std::filesystem::path& dir, int instances);
 
+// An RGB-D photo for `lfd-bake --rgbd`, not a glTF scene: photo.png, depth.png (white =
+// near) and photo_rgbd.png (the two side by side), 512 x 384 each.
+SceneSummary writeRgbdSample(const std::filesystem::path& dir);
+
 } // namespace lfd::samples

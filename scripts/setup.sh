@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config git
+  build-essential cmake pkg-config git ninja-build
   libglm-dev nlohmann-json3-dev libtinygltf-dev libstb-dev libopenmesh-dev
   libopenimageio-dev openimageio-tools libxxhash-dev libcli11-dev libosd-dev libzstd-dev libsquish-dev
   libegl-dev libepoxy-dev libglfw3-dev libegl-mesa0 libgl1-mesa-dri mesa-utils

@@ -268,8 +268,8 @@ TEST_F(BakeCli, StrictTurnsSchemaWarningsIntoErrors)
     const fs::path pack = dir_ / "schema_warnings.lfdpack";
     const RunResult lenient = run(kBake + " " + quoted(input) + " -o " + quoted(pack) + " --quiet");
     EXPECT_EQ(lenient.exitCode, 0) << lenient.out;
-    EXPECT_EQ(lenient.out, "warning: " + input.string() + ": nodes[0].name: expected a string, got 7: name ignored\n" +
-                               "warning: " + input.string() +
+    EXPECT_EQ(lenient.out, "lfd-bake: warning: " + input.string() + ": nodes[0].name: expected a string, got 7: name ignored\n" +
+                               "lfd-bake: warning: " + input.string() +
                                ": materials[0].pbrMetallicRoughness.metallicFactor: 1.5 is outside [0.0, 1.0]: clamped\n");
     EXPECT_EQ(lfd::readPack(pack).materials.at(0).metallicFactor, 1.0f);
 
