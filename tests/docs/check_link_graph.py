@@ -38,7 +38,7 @@ def cmake_graph(root):
     for text in texts:
         for kind in ("add_library", "add_executable"):
             for args in commands(text, kind):
-                if args and "${" not in args[0] and "IMPORTED" not in args:
+                if args and "${" not in args[0] and "IMPORTED" not in args and "ALIAS" not in args:
                     targets.add(args[0])
     graph = {t: set() for t in targets}
     for text in texts:
