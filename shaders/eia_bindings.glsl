@@ -1,14 +1,15 @@
-// eia_construct.comp's interface: reconstruction modes, sample count, units, uniform
-// locations and workgroup size. The only definition: the build generates
-// eia_bindings_gpu.h from it for eia_builder.cpp, and tests/player/gpu_layout_test.cpp
-// checks every value against what the driver reports for the compiled program.
+// The EIA programs' interface: eia_construct.comp (reconstruction modes, units, uniform
+// locations, workgroup size) and eia_prefilter.comp (the spatial modes' first step). The
+// only definition: the build generates eia_bindings_gpu.h from it for eia_builder.cpp, and
+// tests/player/program_interface_test.cpp checks every value against what the driver
+// reports for the compiled programs.
 #define EIA_MODE_NONE 0
 #define EIA_MODE_SPATIAL 1
 #define EIA_MODE_VIEW 2
 #define EIA_MODE_VIEW_SPATIAL 3
-#define EIA_SAMPLES 8
 #define EIA_LOCAL_SIZE 8              // x and y: one invocation per panel pixel
-#define EIA_UNIT_VIEWS 0              // sampler2DArray: the N views
+#define EIA_UNIT_VIEWS 0              // sampler2DArray: the N views (as stored; sRGB-decoded in mode view)
+#define EIA_UNIT_PREFILTERED 1        // sampler3D: the prefiltered linear views (spatial modes), z = view, trilinear
 #define EIA_IMAGE_EIA 0               // rgba8 image2D: the panel-size output
 #define EIA_LOC_PANEL_SIZE 0          // uvec2
 #define EIA_LOC_VIEW_SIZE 1           // uvec2
@@ -18,5 +19,8 @@
 #define EIA_LOC_PHASE_OFFSET 5        // double
 #define EIA_LOC_INVERT_PHASE 6        // bool
 #define EIA_LOC_SUBPIXELS_BGR 7       // bool
-#define EIA_LOC_SAMPLES 8             // vec3[EIA_SAMPLES]: 8 .. 15
-#define EIA_LOC_LINEAR_FROM_BYTE 16   // float[256]: 16 .. 271
+#define EIA_PREFILTER_LOCAL_SIZE 8    // x and y (each invocation 2x2 texels); z = 1 (one view per z)
+#define EIA_PREFILTER_UNIT_VIEWS 0    // sampler2DArray: the N views through an sRGB view (linear fetches)
+#define EIA_PREFILTER_IMAGE_OUT 0     // rgba16f image3D: the prefiltered linear views, z = view
+#define EIA_PREFILTER_LOC_SIZE 0      // uvec3: view width, height, count
+#define EIA_PREFILTER_LOC_TAP 1       // float: the 3-tap kernel's outer weight a ([a, 1 - 2a, a])

@@ -15,14 +15,16 @@
 // the CPU (x86-64 SSE2, -ffp-contract=off in ISO C++ mode) does not use either.
 
 // Reconstruction modes (C++: lfd::player::Reconstruction, checked by a test), paper
-// section 4: Gaussian filters integrated with EIA_SAMPLES random Gaussian samples (the
-// offsets come from C++, lfd::player::reconstructionSamples, seeded, the same for every
-// subpixel, so the filter is fixed and reproducible) and averaged in linear light.
-//   spatial: 2.25 view-pixel diameter (sigma 0.375, truncated at 3 sigma) around the
-//            subpixel's screen position, each sample a bilinear fetch of the view;
-//   view:    support of 2 view intervals (sigma 1/3, truncated at 3 sigma) around the
-//            subpixel's view coordinate phase * N, each sample the nearest view there;
-//   view-spatial: both at once (samples offset in x, y and view).
+// section 4, in linear light, computed exactly (no random samples: no fixed noise pattern,
+// one or two fetches per subpixel):
+//   spatial: the view prefiltered by eia_prefilter.comp (a 3-tap kernel of variance
+//            sigma^2, sigma = 0.375 view pixels), read bilinearly at the subpixel's
+//            screen position: tent * kernel, the spread of the paper's 2.25 view-pixel
+//            Gaussian applied to the bilinear image;
+//   view:    linear between the two view centres around the subpixel's view coordinate
+//            c = phase * N: a tent over the paper's support of 2 view intervals (the
+//            views at the cone's ends repeat);
+//   view-spatial: both, one trilinear fetch of the prefiltered views (z = view).
 #include "eia_bindings.glsl"
 // The mode is compiled in (C++ builds one program per mode, prepending "#define EIA_MODE
 // n"), not a uniform: llvmpipe runs an untaken branch under an all-off lane mask at full
@@ -33,9 +35,13 @@
 
 layout(local_size_x = EIA_LOCAL_SIZE, local_size_y = EIA_LOCAL_SIZE) in;
 
-// N views, RGBA8 (sRGB-encoded values, passed through untouched), layer = view, GL row 0 =
-// bottom. Read with texelFetch: no filtering, so the result is bit-exact with the CPU.
+// N views, layer = view, GL row 0 = bottom, read with texelFetch (no filtering): in mode
+// none as stored (sRGB-encoded values passed through untouched, bit-exact with the CPU),
+// in mode view through an sRGB texture view (linear values).
 layout(binding = EIA_UNIT_VIEWS) uniform sampler2DArray views;
+// Spatial modes: the views prefiltered in linear light (eia_prefilter.comp), RGBA16F, a 3D
+// texture (z = view) with trilinear filtering, edges clamped.
+layout(binding = EIA_UNIT_PREFILTERED) uniform sampler3D prefiltered;
 // Panel-size RGBA8 output, GL row 0 = bottom (panel row l = H - 1 - GL row).
 layout(binding = EIA_IMAGE_EIA, rgba8) uniform writeonly image2D eia;
 
@@ -47,10 +53,6 @@ layout(location = EIA_LOC_PER_ROW) uniform double perRow;
 layout(location = EIA_LOC_PHASE_OFFSET) uniform double phaseOffset;
 layout(location = EIA_LOC_INVERT_PHASE) uniform bool invertPhase;
 layout(location = EIA_LOC_SUBPIXELS_BGR) uniform bool subpixelsBgr;
-// Filter samples: x, y in view pixels (image order: +y down), z in view intervals.
-layout(location = EIA_LOC_SAMPLES) uniform vec3 samples[EIA_SAMPLES];
-// sRGB-encoded byte -> linear value, from C++ (so the CPU reference decodes identically).
-layout(location = EIA_LOC_LINEAR_FROM_BYTE) uniform float linearFromByte[256];
 
 // Same operations, in the same order, as lfd::subpixelPhase (formats/src/display_profile.cpp).
 double subpixelPhase(uint k, uint l)
@@ -94,34 +96,6 @@ float nearestView(uint k, uint l, uint channel, double phase)
     return texelFetch(views, ivec3(viewTexelUnder(k, l), int(view)), 0)[channel];
 }
 
-// The view a sample at view coordinate c lands in (views clamp at the cone's ends).
-uint viewAt(double c)
-{
-    return uint(clamp(floor(c), 0.0LF, double(viewCount - 1u)));
-}
-
-// Linear value of channel `channel` of view texel (x, image row y), clamped to the view.
-float linearTexel(int x, int y, uint view, uint channel)
-{
-    x = clamp(x, 0, int(viewSize.x) - 1);
-    y = clamp(y, 0, int(viewSize.y) - 1);
-    const float v = texelFetch(views, ivec3(x, int(viewSize.y) - 1 - y, int(view)), 0)[channel];
-    return linearFromByte[uint(round(v * 255.0))];
-}
-
-// Bilinear fetch (linear light) at view-pixel position p (image order, pixel centres at
-// integer + 0.5), edge texels repeated.
-float bilinear(vec2 p, uint view, uint channel)
-{
-    const vec2 f = p - vec2(0.5);
-    const vec2 base = floor(f);
-    const vec2 a = f - base;
-    const int x = int(base.x), y = int(base.y);
-    const float top = mix(linearTexel(x, y, view, channel), linearTexel(x + 1, y, view, channel), a.x);
-    const float bottom = mix(linearTexel(x, y + 1, view, channel), linearTexel(x + 1, y + 1, view, channel), a.x);
-    return mix(top, bottom, a.y);
-}
-
 #include "srgb.glsl"
 
 // Linear -> sRGB-encoded value, quantised to the 8-bit level the image stores.
@@ -131,29 +105,35 @@ float encodeSrgb(float linear)
     return round(clamp(e, 0.0, 1.0) * 255.0) / 255.0;
 }
 
-// The Gaussian reconstructions: EIA_SAMPLES samples averaged in linear light.
+// View v clamped to the cone (the cone's ends repeat their views).
+uint clampedView(int v)
+{
+    return uint(clamp(v, 0, int(viewCount) - 1));
+}
+
 float filtered(uint k, uint l, uint channel, double phase)
 {
     const double c = phase * double(viewCount);
+#if EIA_MODE == EIA_MODE_VIEW
+    // The view centres around c: views floor(c - 1/2) and the next, weighted linearly.
+    const double below = floor(c - 0.5LF);
+    const float a = float(c - 0.5LF - below);
+    const ivec2 texel = viewTexelUnder(k, l);
+    const float v0 = texelFetch(views, ivec3(texel, int(clampedView(int(below)))), 0)[channel];
+    const float v1 = texelFetch(views, ivec3(texel, int(clampedView(int(below) + 1))), 0)[channel];
+    return encodeSrgb(mix(v0, v1, a));
+#else
     // The subpixel's screen position in view pixels: ((2k + 1) w / 6W, (2l + 1) h / 2H).
     const vec2 p = vec2(float((2u * k + 1u) * viewSize.x) / float(6u * panelSize.x),
                         float((2u * l + 1u) * viewSize.y) / float(2u * panelSize.y));
-    const ivec2 texel = viewTexelUnder(k, l);
-    const int imageRow = int(viewSize.y) - 1 - texel.y;
-    float sum = 0.0;
-    for (int s = 0; s < EIA_SAMPLES; ++s) {
 #if EIA_MODE == EIA_MODE_SPATIAL
-        const uint view = viewAt(c);
+    const float z = (float(clampedView(int(floor(c)))) + 0.5) / float(viewCount); // the view's centre
 #else
-        const uint view = viewAt(c + double(samples[s].z));
+    const float z = float(c / double(viewCount)); // linear between the two view centres around c
 #endif
-#if EIA_MODE == EIA_MODE_VIEW
-        sum += linearTexel(texel.x, imageRow, view, channel);
-#else
-        sum += bilinear(p + samples[s].xy, view, channel);
+    const vec3 uvw = vec3(p.x / float(viewSize.x), 1.0 - p.y / float(viewSize.y), z);
+    return encodeSrgb(textureLod(prefiltered, uvw, 0.0)[channel]);
 #endif
-    }
-    return encodeSrgb(sum / float(EIA_SAMPLES));
 }
 
 float subpixelValue(uint k, uint l, uint channel)

@@ -2,8 +2,8 @@
 // Both implement the same nearest-view mapping with the same arithmetic (phase in double
 // precision through lfd::subpixelPhase's operations, view texel in integer arithmetic,
 // no filtering), so their outputs are bit-identical; eia_test checks that. The filtered
-// modes share the sample offsets and the sRGB decoding table and mirror the shader's float
-// arithmetic step by step (within one 8-bit level, see eia_builder.h).
+// modes mirror the two passes (eia_prefilter.comp, eia_construct.comp) step by step in
+// float (within one 8-bit level, see eia_builder.h).
 #include "eia_builder.h"
 
 #include "eia_bindings_gpu.h"
@@ -15,6 +15,7 @@
 #include "view_targets.h"
 
 #include <epoxy/gl.h>
+#include <glm/gtc/packing.hpp>
 
 #include <algorithm>
 #include <array>
@@ -35,25 +36,7 @@ inline uint32_t viewRowUnder(uint32_t l, uint32_t panelHeight, uint32_t viewHeig
     return uint32_t((uint64_t(2 * l + 1) * viewHeight) / (2ull * panelHeight));
 }
 
-// splitmix64 (Steele, Lea & Flood 2014): fully specified, so a seed gives the same samples
-// with every compiler and standard library.
-struct SplitMix64 {
-    uint64_t state;
-    uint64_t next() {
-        uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return (double(next() >> 11) + 1.0) * 0x1.0p-53; } // (0, 1]
-    // One standard normal value (Box-Muller, the cosine branch).
-    double normal() {
-        const double u1 = uniform(), u2 = uniform();
-        return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * 3.14159265358979323846 * u2);
-    }
-};
-
-// sRGB-encoded byte -> linear value (IEC 61966-2-1), float: the shader gets this table.
+// sRGB-encoded byte -> linear value (IEC 61966-2-1), as the GPU's sRGB texture view decodes.
 const std::array<float, 256>& linearFromByte() {
     static const std::array<float, 256> table = [] {
         std::array<float, 256> t{};
@@ -102,32 +85,7 @@ std::string reconstructionName(Reconstruction mode) {
     return names[i];
 }
 
-std::vector<glm::vec3> reconstructionSamples(Reconstruction mode, uint64_t seed) {
-    // Step 1: which dimensions the mode filters, each with sigma = support / 6.
-    const bool spatial = mode == Reconstruction::Spatial || mode == Reconstruction::ViewSpatial;
-    const bool view = mode == Reconstruction::View || mode == Reconstruction::ViewSpatial;
-    const double sigmaXy = ReconstructionFilter::kSpatialDiameter / 6.0;
-    const double sigmaV = ReconstructionFilter::kViewSupport / 6.0;
-    // Step 2: Gaussian samples, resampled outside 3 sigma (a disc in x, y; an interval in v).
-    SplitMix64 rng{seed};
-    std::vector<glm::vec3> samples;
-    for (uint32_t s = 0; s < ReconstructionFilter::kSamples; ++s) {
-        glm::dvec3 o(0.0);
-        if (spatial)
-            do {
-                o.x = rng.normal();
-                o.y = rng.normal();
-            } while (o.x * o.x + o.y * o.y > 9.0);
-        if (view)
-            do
-                o.z = rng.normal();
-            while (std::abs(o.z) > 3.0);
-        samples.push_back(glm::vec3(o.x * sigmaXy, o.y * sigmaXy, o.z * sigmaV));
-    }
-    return samples;
-}
-
-EiaBuilder::EiaBuilder(const DisplayProfile& profile, uint64_t seed) : profile_(profile), seed_(seed) {
+EiaBuilder::EiaBuilder(const DisplayProfile& profile) : profile_(profile) {
     validateDisplayProfile(profile_, profile_.name.empty() ? "display profile" : profile_.name);
     program(Reconstruction::None); // the default mode; compile errors surface here
     eia_ = gl::createTexture(GL_TEXTURE_2D);
@@ -138,6 +96,12 @@ EiaBuilder::EiaBuilder(const DisplayProfile& profile, uint64_t seed) : profile_(
     nearest_ = gl::createSampler();
     glSamplerParameteri(nearest_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(nearest_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    bilinear_ = gl::createSampler();
+    glSamplerParameteri(bilinear_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(bilinear_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(bilinear_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(bilinear_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(bilinear_, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
     if (glGetError() != GL_NO_ERROR) {
         throw gl::GlError("EIA: cannot allocate a " + std::to_string(profile_.panelWidth) + "x" +
                           std::to_string(profile_.panelHeight) +
@@ -154,6 +118,37 @@ unsigned EiaBuilder::program(Reconstruction mode) {
     return p.get();
 }
 
+// The spatial modes' first step: every view in linear light through the 3-tap kernel
+// (eia_prefilter.comp), into prefiltered_ (RGBA16F, made or remade for the view size).
+void EiaBuilder::prefilter(const ViewTargets& views) {
+    const uint32_t size[3] = {views.width(), views.height(), views.viewCount()};
+    if (!std::equal(size, size + 3, prefilteredSize_)) {
+        GLint max3d = 0;
+        glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
+        if (*std::max_element(size, size + 3) > uint32_t(max3d))
+            throw gl::GlError("EIA: " + std::to_string(size[2]) + " views of " + std::to_string(size[0]) + "x" +
+                              std::to_string(size[1]) + " exceed the driver's 3D texture limit of " +
+                              std::to_string(max3d) + " for the spatial reconstruction; use --aa none or view");
+        prefiltered_ = gl::createTexture(GL_TEXTURE_3D);
+        glTextureStorage3D(prefiltered_, 1, GL_RGBA16F, GLsizei(size[0]), GLsizei(size[1]), GLsizei(size[2]));
+        std::copy(size, size + 3, prefilteredSize_);
+    }
+    if (!prefilter_)
+        prefilter_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_prefilter.comp"}}));
+    glUseProgram(prefilter_);
+    glUniform3ui(eb::kPrefilterLocSize, size[0], size[1], size[2]);
+    glUniform1f(eb::kPrefilterLocTap, float(ReconstructionFilter::kSpatialTap));
+    glBindTextureUnit(eb::kPrefilterUnitViews, views.linearColorArray());
+    glBindSampler(eb::kPrefilterUnitViews, nearest_);
+    glBindImageTexture(eb::kPrefilterImageOut, prefiltered_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F); // all slices
+    // One invocation per 2x2 texels.
+    const uint32_t blockGroup = 2 * eb::kPrefilterLocalSize;
+    glDispatchCompute((size[0] + blockGroup - 1) / blockGroup, (size[1] + blockGroup - 1) / blockGroup, size[2]);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    glBindSampler(eb::kPrefilterUnitViews, 0);
+    glBindImageTexture(eb::kPrefilterImageOut, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+}
+
 void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& timer) {
     if (views.viewCount() != profile_.viewCount)
         throw std::invalid_argument("EIA: " + std::to_string(views.viewCount()) +
@@ -161,7 +156,13 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
                                     "' needs " + std::to_string(profile_.viewCount));
     const SubpixelMapping& m = profile_.mapping;
 
-    // Step 1: the mode's program and its uniforms (locations from eia_bindings.glsl).
+    // Step 1: the spatial modes' prefilter; the mode's program and its uniforms
+    // (locations from eia_bindings.glsl).
+    // The stage "eia" covers both passes.
+    const bool spatial = mode == Reconstruction::Spatial || mode == Reconstruction::ViewSpatial;
+    timer.begin(stage::kEia);
+    if (spatial)
+        prefilter(views);
     const unsigned prog = program(mode);
     glUseProgram(prog);
     glUniform2ui(eb::kLocPanelSize, profile_.panelWidth, profile_.panelHeight);
@@ -172,21 +173,20 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
     glUniform1d(eb::kLocPhaseOffset, m.offset);
     glUniform1i(eb::kLocInvertPhase, m.invert ? 1 : 0);
     glUniform1i(eb::kLocSubpixelsBgr, profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
-    if (mode != Reconstruction::None) {
-        const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed_);
-        glUniform3fv(eb::kLocSamples, GLsizei(samples.size()), &samples[0].x);
-        glUniform1fv(eb::kLocLinearFromByte, 256, linearFromByte().data());
-    }
 
     // Step 2: inputs and output on the shader's units. A nearest-filter sampler object
     // keeps the view array complete whatever its own filter state (texelFetch does not
     // filter, but an incomplete texture would read as zero).
-    glBindTextureUnit(eb::kUnitViews, views.colorArray());
+    glBindTextureUnit(eb::kUnitViews, mode == Reconstruction::View ? views.linearColorArray() : views.colorArray());
     glBindSampler(eb::kUnitViews, nearest_);
+    if (spatial) {
+        glBindTextureUnit(eb::kUnitPrefiltered, prefiltered_);
+        glBindSampler(eb::kUnitPrefiltered, bilinear_);
+    }
+
     glBindImageTexture(eb::kImageEia, eia_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
 
     // Step 3: one invocation per panel pixel.
-    timer.begin(stage::kEia);
     glDispatchCompute((profile_.panelWidth + eb::kLocalSize - 1) / eb::kLocalSize,
                       (profile_.panelHeight + eb::kLocalSize - 1) / eb::kLocalSize, 1);
     timer.end();
@@ -195,6 +195,8 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
                     GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 
     glBindSampler(eb::kUnitViews, 0);
+    glBindSampler(eb::kUnitPrefiltered, 0);
+
     glBindImageTexture(eb::kImageEia, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glUseProgram(0);
 }
@@ -236,50 +238,87 @@ void requireEiaInputs(const DisplayProfile& profile, const std::vector<std::vect
                                         std::to_string(viewHeight) + " RGBA8)");
 }
 
+// eia_prefilter.comp on the CPU: each view in linear light through the 3-tap kernel, stored
+// as half floats (as the RGBA16F texture holds it), image order.
+std::vector<std::vector<glm::vec4>> prefilterCpu(const std::vector<std::vector<uint8_t>>& views, uint32_t width,
+                                                 uint32_t height) {
+    const std::array<float, 256>& linear = linearFromByte();
+    const auto a = float(ReconstructionFilter::kSpatialTap);
+    const float w[3] = {a, 1.0f - 2.0f * a, a};
+    std::vector<std::vector<glm::vec4>> out;
+    for (const std::vector<uint8_t>& view : views) {
+        auto texel = [&](int x, int y) {
+            const uint8_t* t = &view[(size_t(std::clamp(y, 0, int(height) - 1)) * width +
+                                      size_t(std::clamp(x, 0, int(width) - 1))) * 4];
+            return glm::vec4(linear[t[0]], linear[t[1]], linear[t[2]], linear[t[3]]);
+        };
+        std::vector<glm::vec4> filtered(size_t(width) * height);
+        for (int y = 0; y < int(height); ++y)
+            for (int x = 0; x < int(width); ++x) {
+                glm::vec4 sum(0.0f);
+                // GL row order is bottom-up: the shader's dy = -1 is the image row below.
+                for (int dy = -1; dy <= 1; ++dy) {
+                    const int row = y - dy;
+                    sum += w[dy + 1] * (w[0] * texel(x - 1, row) + w[1] * texel(x, row) + w[2] * texel(x + 1, row));
+                }
+                for (int c = 0; c < 4; ++c)
+                    sum[c] = glm::unpackHalf1x16(glm::packHalf1x16(sum[c]));
+                filtered[size_t(y) * width + size_t(x)] = sum;
+            }
+        out.push_back(std::move(filtered));
+    }
+    return out;
+}
+
+// GL's bilinear read of a prefiltered view at screen position p (view pixels, image
+// order), edges clamped.
+float bilinearCpu(const std::vector<glm::vec4>& view, uint32_t width, uint32_t height, glm::vec2 p, uint32_t channel) {
+    // GL addresses rows bottom-up: t = 1 - p.y / h, so the row coordinate is h - p.y.
+    const float fx = p.x - 0.5f, fy = (float(height) - p.y) - 0.5f;
+    const float bx = std::floor(fx), by = std::floor(fy);
+    const float ax = fx - bx, ay = fy - by;
+    auto at = [&](int x, int glRow) {
+        const int row = int(height) - 1 - std::clamp(glRow, 0, int(height) - 1);
+        return view[size_t(row) * width + size_t(std::clamp(x, 0, int(width) - 1))][int(channel)];
+    };
+    const int x0 = int(bx), y0 = int(by);
+    return mixf(mixf(at(x0, y0), at(x0 + 1, y0), ax), mixf(at(x0, y0 + 1), at(x0 + 1, y0 + 1), ax), ay);
+}
+
 // The filtered modes, step for step as eia_construct.comp's filtered().
 void filteredEiaCpu(const DisplayProfile& profile, const std::vector<std::vector<uint8_t>>& views,
-                    uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode, uint64_t seed,
-                    std::vector<uint8_t>& eia) {
-    const uint32_t W = profile.panelWidth, H = profile.panelHeight;
+                    uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode, std::vector<uint8_t>& eia) {
+    const uint32_t W = profile.panelWidth, H = profile.panelHeight, N = profile.viewCount;
     const bool bgr = profile.subpixelOrder == SubpixelOrder::BGR;
-    const std::vector<glm::vec3> samples = reconstructionSamples(mode, seed);
+    const std::vector<std::vector<glm::vec4>> prefiltered = mode == Reconstruction::View
+                                                                ? std::vector<std::vector<glm::vec4>>()
+                                                                : prefilterCpu(views, viewWidth, viewHeight);
     const std::array<float, 256>& linear = linearFromByte();
-    const uint32_t N = profile.viewCount;
-    auto viewAt = [&](double c) { return uint32_t(std::clamp(std::floor(c), 0.0, double(N - 1))); };
-    auto texel = [&](int x, int y, uint32_t view, uint32_t channel) {
-        x = std::clamp(x, 0, int(viewWidth) - 1);
-        y = std::clamp(y, 0, int(viewHeight) - 1);
-        return linear[views[view][(size_t(y) * viewWidth + size_t(x)) * 4 + channel]];
-    };
+    auto clampedView = [&](double v) { return uint32_t(std::clamp(v, 0.0, double(N - 1))); };
     for (uint32_t l = 0; l < H; ++l) {
-        const int imageRow = int(viewRowUnder(l, H, viewHeight));
+        const uint32_t imageRow = viewRowUnder(l, H, viewHeight);
         const float py = float((2u * l + 1u) * viewHeight) / float(2u * H);
         for (uint32_t x = 0; x < W; ++x) {
             uint8_t* out = &eia[(size_t(l) * W + x) * 4];
             for (uint32_t i = 0; i < 3; ++i) {
-                const uint32_t k = 3 * x + i;
-                const uint32_t channel = bgr ? 2 - i : i;
+                const uint32_t k = 3 * x + i, channel = bgr ? 2 - i : i;
                 const double c = subpixelPhase(profile, k, l) * double(N);
-                const float px = float((2u * k + 1u) * viewWidth) / float(6u * W);
-                const int column = int(viewColumnUnder(k, W, viewWidth));
-                float sum = 0.0f;
-                for (const glm::vec3& o : samples) {
-                    const uint32_t view = mode == Reconstruction::Spatial ? viewAt(c) : viewAt(c + double(o.z));
-                    if (mode == Reconstruction::View) {
-                        sum += texel(column, imageRow, view, channel);
-                        continue;
-                    }
-                    // Bilinear in linear light at (px, py) + (o.x, o.y).
-                    const float fx = (px + o.x) - 0.5f, fy = (py + o.y) - 0.5f;
-                    const float bx = std::floor(fx), by = std::floor(fy);
-                    const float ax = fx - bx, ay = fy - by;
-                    const int x0 = int(bx), y0 = int(by);
-                    const float top = mixf(texel(x0, y0, view, channel), texel(x0 + 1, y0, view, channel), ax);
-                    const float bottom =
-                        mixf(texel(x0, y0 + 1, view, channel), texel(x0 + 1, y0 + 1, view, channel), ax);
-                    sum += mixf(top, bottom, ay);
+                // The view centres around c (view modes): floor(c - 1/2) and the next.
+                const double below = std::floor(c - 0.5);
+                const auto a = float(c - 0.5 - below);
+                const uint32_t v0 = clampedView(below), v1 = clampedView(below + 1.0);
+                const glm::vec2 p(float((2u * k + 1u) * viewWidth) / float(6u * W), py);
+                float value = 0.0f;
+                if (mode == Reconstruction::View) {
+                    const size_t texel = (size_t(imageRow) * viewWidth + viewColumnUnder(k, W, viewWidth)) * 4 + channel;
+                    value = mixf(linear[views[v0][texel]], linear[views[v1][texel]], a);
+                } else if (mode == Reconstruction::Spatial) {
+                    value = bilinearCpu(prefiltered[clampedView(std::floor(c))], viewWidth, viewHeight, p, channel);
+                } else {
+                    value = mixf(bilinearCpu(prefiltered[v0], viewWidth, viewHeight, p, channel),
+                                 bilinearCpu(prefiltered[v1], viewWidth, viewHeight, p, channel), a);
                 }
-                out[channel] = encodeSrgb(sum / float(ReconstructionFilter::kSamples));
+                out[channel] = encodeSrgb(value);
             }
             out[3] = 255;
         }
@@ -314,12 +353,11 @@ void nearestEiaCpu(const DisplayProfile& profile, const std::vector<std::vector<
 
 std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
                                  const std::vector<std::vector<uint8_t>>& views,
-                                 uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode,
-                                 uint64_t seed) {
+                                 uint32_t viewWidth, uint32_t viewHeight, Reconstruction mode) {
     requireEiaInputs(profile, views, viewWidth, viewHeight);
     std::vector<uint8_t> eia(size_t(profile.panelWidth) * profile.panelHeight * 4);
     if (mode != Reconstruction::None)
-        filteredEiaCpu(profile, views, viewWidth, viewHeight, mode, seed, eia);
+        filteredEiaCpu(profile, views, viewWidth, viewHeight, mode, eia);
     else
         nearestEiaCpu(profile, views, viewWidth, viewHeight, eia);
     return eia;

@@ -3,9 +3,9 @@
 // SubpixelMapping; nearest-view mode takes that subpixel's channel from view
 // floor(phase * N), sampled at the subpixel's screen position (each view covers the whole
 // screen). The reconstruction modes of the paper's section 4 (`--aa`) filter around that
-// sample with a Gaussian - spatial (2.25 view-pixel diameter), view (angular, a support of
-// 2 view intervals) or both - integrated with 8 seeded random Gaussian samples, the same
-// offsets for every subpixel, averaged in linear light.
+// sample in linear light - spatial (the spread of a 2.25 view-pixel Gaussian), view (a
+// tent over the 2 view intervals around it) or both - computed exactly, with one filtered
+// fetch per subpixel after a prefilter pass (README "Reconstruction and supersampling").
 #pragma once
 
 #include "eia_bindings_gpu.h"
@@ -33,23 +33,19 @@ std::vector<std::string> reconstructionNames(); // in enum order (the window's C
 
 // The reconstruction filters (paper section 4).
 struct ReconstructionFilter {
-    static constexpr uint32_t kSamples = eia_bindings::kSamples;
     static constexpr double kSpatialDiameter = 2.25; // view pixels, = 6 sigma
-    static constexpr double kViewSupport = 2.0;      // view intervals, = 6 sigma
-    static constexpr uint64_t kDefaultSeed = 0x5eed'0e1a'0000'0001ull;
+    static constexpr double kViewSupport = 2.0;      // view intervals: the tent between the two nearest view centres
+    static constexpr double kSpatialSigma = kSpatialDiameter / 6.0;
+    // The prefilter's 3-tap kernel [a, 1 - 2a, a] has variance 2a = sigma^2: with the
+    // bilinear read after it, the spatial filter spreads light as the Gaussian integral of
+    // the bilinear image does (variance 1/6 + sigma^2 per axis).
+    static constexpr double kSpatialTap = kSpatialSigma * kSpatialSigma / 2.0;
 };
-
-// The mode's kSamples filter offsets: x, y in view pixels (image order, +y down), z in view
-// intervals; components the mode does not filter are 0. Gaussian by Box-Muller over a
-// splitmix64 stream seeded with `seed`, resampled outside the 3-sigma support; pure CPU and
-// platform-independent, so the GPU pass and the CPU reference use the same offsets.
-std::vector<glm::vec3> reconstructionSamples(Reconstruction mode,
-                                             uint64_t seed = ReconstructionFilter::kDefaultSeed);
 
 class EiaBuilder {
 public:
-    // Panel-size RGBA8 output texture; `seed` picks the reconstruction samples.
-    explicit EiaBuilder(const DisplayProfile& profile, uint64_t seed = ReconstructionFilter::kDefaultSeed);
+    // Panel-size RGBA8 output texture.
+    explicit EiaBuilder(const DisplayProfile& profile);
     EiaBuilder(const EiaBuilder&) = delete;
     EiaBuilder& operator=(const EiaBuilder&) = delete;
 
@@ -60,23 +56,28 @@ public:
 
 private:
     DisplayProfile profile_;
-    uint64_t seed_;
     gl::Texture eia_;
-    gl::Sampler nearest_; // keeps the view array complete whatever its own filter state
+    gl::Sampler nearest_;  // keeps the view array complete whatever its own filter state
+    gl::Sampler bilinear_; // the prefiltered views: linear filtering, edges clamped
     // One program per Reconstruction mode (EIA_MODE compiled in), built on first use.
     gl::Program programs_[4];
+    gl::Program prefilter_; // eia_prefilter.comp, built on first use
+    // The spatial modes' prefiltered linear views (RGBA16F, 3D: z = view), sized on first use.
+    gl::Texture prefiltered_;
+    uint32_t prefilteredSize_[3] = {0, 0, 0};
     unsigned program(Reconstruction mode);
+    void prefilter(const ViewTargets& views);
 };
 
 // CPU reference of the same mapping (tests, simulated viewer): views are RGBA8 images in
 // image order (row 0 = top), all of size viewWidth x viewHeight. Mode none is bit-identical
-// to the GPU pass; the filtered modes use the same samples, decoding table and float
-// arithmetic, and differ from it by at most one 8-bit level where the GPU fuses a
-// multiply-add or rounds pow differently (eia_test states the tolerance).
+// to the GPU pass; the filtered modes follow the GPU's steps (the prefilter stored as
+// half floats, bilinear reads, the same erf polynomial) in float, and differ from it by at
+// most one 8-bit level where the GPU fuses a multiply-add, decodes sRGB or filters with
+// other rounding (reconstruction_test states the tolerance).
 std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
                                  const std::vector<std::vector<uint8_t>>& views,
                                  uint32_t viewWidth, uint32_t viewHeight,
-                                 Reconstruction mode = Reconstruction::None,
-                                 uint64_t seed = ReconstructionFilter::kDefaultSeed);
+                                 Reconstruction mode = Reconstruction::None);
 
 } // namespace lfd::player

@@ -30,6 +30,12 @@ ViewTargets::ViewTargets(uint32_t viewCount, uint32_t width, uint32_t height)
     glTextureParameteri(color_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     glTextureParameteri(color_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(color_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    GLuint view = 0;
+    glGenTextures(1, &view); // a texture view needs a name no target has been bound to
+    glTextureView(view, GL_TEXTURE_2D_ARRAY, color_, GL_SRGB8_ALPHA8, 0, 1, 0, GLuint(viewCount));
+    srgbView_ = gl::Texture(view);
+    glTextureParameteri(srgbView_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(srgbView_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     depth_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
     glTextureStorage3D(depth_, 1, GL_DEPTH_COMPONENT32F, GLsizei(width), GLsizei(height),
                        GLsizei(viewCount));

@@ -19,6 +19,9 @@ public:
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
     unsigned colorArray() const { return color_.get(); } // GL texture name, GL_RGBA8
+    // The same texels through a GL_SRGB8_ALPHA8 texture view: fetches return linear values
+    // (the EIA's reconstruction filters average in linear light).
+    unsigned linearColorArray() const { return srgbView_.get(); }
     unsigned depthArray() const { return depth_.get(); } // GL texture name, GL_DEPTH_COMPONENT32F
     // Framebuffer with all layers attached (layered rendering) and per-layer framebuffers.
     unsigned layeredFramebuffer() const { return layeredFbo_.get(); }
@@ -31,7 +34,7 @@ public:
 
 private:
     uint32_t viewCount_, width_, height_;
-    gl::Texture color_, depth_;
+    gl::Texture color_, depth_, srgbView_;
     gl::Framebuffer layeredFbo_;
     std::vector<gl::Framebuffer> layerFbos_;
 };

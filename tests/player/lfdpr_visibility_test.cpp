@@ -550,6 +550,7 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"eia_construct.comp", "comp", {"EIA_MODE 1"}},
         {"eia_construct.comp", "comp", {"EIA_MODE 2"}},
         {"eia_construct.comp", "comp", {"EIA_MODE 3"}},
+        {"eia_prefilter.comp", "comp", {}},
         {"gstd_reconstruct.comp", "comp", {}},
         {"view_downsample.comp", "comp", {}},
         {"lfdpr_paper_points.vert", "vert", {}},

@@ -1,5 +1,5 @@
-// The interfaces of the image programs - gstd_reconstruct.comp, view_downsample.comp and
-// eia_construct.comp - are written once, in shaders/<program>_bindings.glsl, and generated
+// The interfaces of the image programs - gstd_reconstruct.comp, view_downsample.comp,
+// eia_construct.comp and eia_prefilter.comp - are written once, in shaders/<program>_bindings.glsl, and generated
 // into C++ (player/gl/gpu_layout_gen.cpp). Here every generated constant is checked against
 // the shader's #define and against what the driver reports for the compiled program: the
 // workgroup size, every uniform location, every sampler and image unit.
@@ -50,14 +50,20 @@ std::vector<ProgramInterface> interfaces()
         {"view_downsample.comp", {}, &db::kLayoutFile, db::kLocalSize,
          {{"source", {}, db::kUnitSource}, {"target", {}, db::kImageTarget},
           {"targetSize", db::kLocTargetSize, {}}, {"mode", db::kLocMode, {}}}},
-        // View-spatial: the mode that reads every uniform.
+        // View-spatial: the mode that reads every uniform but the views (it reads them prefiltered).
         {"eia_construct.comp", {"EIA_MODE " + std::to_string(eb::kModeViewSpatial)}, &eb::kLayoutFile, eb::kLocalSize,
-         {{"views", {}, eb::kUnitViews}, {"eia", {}, eb::kImageEia},
+         {{"eia", {}, eb::kImageEia},
           {"panelSize", eb::kLocPanelSize, {}}, {"viewSize", eb::kLocViewSize, {}},
           {"viewCount", eb::kLocViewCount, {}}, {"perSubpixel", eb::kLocPerSubpixel, {}},
           {"perRow", eb::kLocPerRow, {}}, {"phaseOffset", eb::kLocPhaseOffset, {}},
           {"invertPhase", eb::kLocInvertPhase, {}}, {"subpixelsBgr", eb::kLocSubpixelsBgr, {}},
-          {"samples", eb::kLocSamples, {}}, {"linearFromByte", eb::kLocLinearFromByte, {}}}},
+          {"prefiltered", {}, eb::kUnitPrefiltered}}},
+        // The view mode: the only one that reads the views themselves besides mode none.
+        {"eia_construct.comp", {"EIA_MODE " + std::to_string(eb::kModeView)}, &eb::kLayoutFile, eb::kLocalSize,
+         {{"views", {}, eb::kUnitViews}, {"eia", {}, eb::kImageEia}, {"viewCount", eb::kLocViewCount, {}}}},
+        {"eia_prefilter.comp", {}, &eb::kLayoutFile, eb::kPrefilterLocalSize,
+         {{"views", {}, eb::kPrefilterUnitViews}, {"prefiltered", {}, eb::kPrefilterImageOut},
+          {"size", eb::kPrefilterLocSize, {}}, {"tap", eb::kPrefilterLocTap, {}}}},
     };
 }
 

@@ -120,49 +120,22 @@ TEST(Reconstruction, NamesParseAndRoundTrip)
     EXPECT_THROW(player::parseSupersampling("4x"), std::invalid_argument);
 }
 
-TEST(Reconstruction, SamplesAreSeededGaussiansInsideTheSupport)
+TEST(Reconstruction, SpatialKernelHasTheGaussiansVariance)
 {
-    // Reproducible and seed-dependent; only the mode's dimensions are offset, within 3 sigma.
-    for (Reconstruction mode : {Reconstruction::Spatial, Reconstruction::View, Reconstruction::ViewSpatial}) {
-        const auto a = player::reconstructionSamples(mode, 7), b = player::reconstructionSamples(mode, 7);
-        const auto c = player::reconstructionSamples(mode, 8);
-        ASSERT_EQ(a.size(), ReconstructionFilter::kSamples);
-        EXPECT_EQ(a, b);
-        EXPECT_NE(a, c);
-        const bool spatial = mode != Reconstruction::View, view = mode != Reconstruction::Spatial;
-        for (const glm::vec3& o : a) {
-            EXPECT_EQ(o.x != 0.0f, spatial);
-            EXPECT_EQ(o.z != 0.0f, view);
-            EXPECT_LE(std::hypot(o.x, o.y), 1.125f + 1e-6f);
-            EXPECT_LE(std::abs(o.z), 1.0f + 1e-6f);
-        }
-    }
-    // Over many seeds the offsets have the Gaussians' spread: sigma = 2.25 / 6 view pixels,
-    // 2 / 6 view intervals. A 3-sigma truncation lowers the variance: in 1D by the factor
-    // 1 - 6 phi(3) / (1 - 2 Phi(-3)) = 0.9733; on a disc of radius 3 sigma (r^2 / sigma^2 is
-    // chi-square with 2 degrees of freedom) by (1 - 5.5 e^-4.5) / (1 - e^-4.5) = 0.9494 per
-    // axis. Tolerance 2% of sigma: the statistics of 4000 x 8 samples are within 1%.
-    double xx = 0.0, zz = 0.0;
-    const int seeds = 4000;
-    for (int s = 0; s < seeds; ++s)
-        for (const glm::vec3& o : player::reconstructionSamples(Reconstruction::ViewSpatial, uint64_t(s))) {
-            xx += double(o.x) * o.x;
-            zz += double(o.z) * o.z;
-        }
-    const double n = double(seeds) * ReconstructionFilter::kSamples;
-    EXPECT_NEAR(std::sqrt(xx / n), 0.375 * std::sqrt(0.9494), 0.375 * 0.02);
-    EXPECT_NEAR(std::sqrt(zz / n), (1.0 / 3.0) * std::sqrt(0.9733), (1.0 / 3.0) * 0.02);
+    // The prefilter's [a, 1 - 2a, a] has variance 2a: the paper's sigma^2 = (2.25 / 6)^2.
+    const double a = ReconstructionFilter::kSpatialTap;
+    EXPECT_DOUBLE_EQ(2.0 * a, 0.375 * 0.375);
+    EXPECT_GT(1.0 - 2.0 * a, 0.0);
 }
 
 TEST(Reconstruction, SpatialFilterSpreadsASinglePixelAsTheGaussianPredicts)
 {
     // One white view pixel (all views): without a filter the EIA shows it as a box of one
-    // view pixel (variance 1/12 per axis). The spatial filter is the mean of 8 bilinear
-    // fetches at the sample offsets o_s: in x a tent of variance 1/6 around each of
-    // -o_s.x, so the variance is 1/6 + the offsets' own variance (about sigma^2 =
-    // 0.375^2), the centroid moves by -mean(o_s), the light stays within 1 + 1.125 view
-    // pixels, and its total is kept (one view pixel). Tolerances: the panel samples a view
-    // pixel at 12 x 6 subpixel positions, so discrete moments differ by a few percent.
+    // view pixel (variance 1/12 per axis). The spatial filter is the 3-tap prefilter
+    // (variance sigma^2 = 0.375^2) read bilinearly (a tent: 1/6), so per axis the light
+    // spreads with variance 1/6 + sigma^2 around the pixel's centre, reaches at most 2 view
+    // pixels from it, and keeps its total (one view pixel). Tolerances: the panel samples
+    // a view pixel at 12 x 6 subpixel positions, so discrete moments differ by a few percent.
     const DisplayProfile p = player::displaytest::smallProfile();
     const uint32_t px = 60, py = 22;
     const auto views = brightPixelViews(p, px, py);
@@ -172,35 +145,28 @@ TEST(Reconstruction, SpatialFilterSpreadsASinglePixelAsTheGaussianPredicts)
     EXPECT_NEAR(none.vx, 1.0 / 12.0, 0.01);
     EXPECT_NEAR(none.vy, 1.0 / 12.0, 0.01);
 
-    const auto samples = player::reconstructionSamples(Reconstruction::Spatial);
-    double mx = 0.0, my = 0.0, mxx = 0.0, myy = 0.0;
-    for (const glm::vec3& o : samples) {
-        mx += o.x / 8.0;
-        my += o.y / 8.0;
-        mxx += double(o.x) * o.x / 8.0;
-        myy += double(o.y) * o.y / 8.0;
-    }
+    const double predicted = 1.0 / 6.0 + 0.375 * 0.375;
     const Spread spatial =
         spreadOf(p, player::buildEiaCpu(p, views, p.viewWidth, p.viewHeight, Reconstruction::Spatial));
     EXPECT_NEAR(spatial.energy, 1.0, 0.05);
-    EXPECT_NEAR(spatial.cx, px + 0.5 - mx, 0.05);
-    EXPECT_NEAR(spatial.cy, py + 0.5 - my, 0.1);
-    EXPECT_NEAR(spatial.vx, 1.0 / 6.0 + (mxx - mx * mx), 0.1 * (1.0 / 6.0 + mxx));
-    EXPECT_NEAR(spatial.vy, 1.0 / 6.0 + (myy - my * my), 0.1 * (1.0 / 6.0 + myy));
+    EXPECT_NEAR(spatial.cx, px + 0.5, 0.05);
+    EXPECT_NEAR(spatial.cy, py + 0.5, 0.1);
+    EXPECT_NEAR(spatial.vx, predicted, 0.1 * predicted);
+    EXPECT_NEAR(spatial.vy, predicted, 0.1 * predicted);
     EXPECT_GT(spatial.vx, 2.0 * none.vx); // it spreads
-    EXPECT_LE(spatial.reach, 1.0 + 1.125 + 0.3);
-    std::printf("[ spread   ] one view pixel: none var %.3f x %.3f; spatial var %.3f x %.3f (predicted %.3f x "
-                "%.3f), energy %.3f\n",
-                none.vx, none.vy, spatial.vx, spatial.vy, 1.0 / 6.0 + mxx - mx * mx, 1.0 / 6.0 + myy - my * my,
-                spatial.energy);
+    EXPECT_LE(spatial.reach, 2.0 * std::sqrt(2.0) + 0.3); // +-2 view pixels per axis
+    std::printf("[ spread   ] one view pixel: none var %.3f x %.3f; spatial var %.3f x %.3f (predicted %.3f), "
+                "energy %.3f\n",
+                none.vx, none.vy, spatial.vx, spatial.vy, predicted, spatial.energy);
 }
 
 TEST(Reconstruction, ViewFilterMixesNeighbouringViewsOnly)
 {
     // Only view 12 is lit. Nearest view: exactly the subpixels with floor(phase N) = 12.
-    // View filter: light also reaches subpixels whose view coordinate c = phase N is within
-    // the samples' reach of view 12's interval (c + dv in [12, 13)), never further, and the
-    // total stays about the same (the samples are symmetric on average).
+    // View filter (a tent between view centres): light reaches exactly the subpixels whose
+    // view coordinate c = phase N is within one interval of view 12's centre 12.5, with
+    // weight 1 - |c - 12.5|, and the total stays the same (the tent integrates to one
+    // interval).
     const DisplayProfile p = player::displaytest::smallProfile();
     std::vector<std::vector<uint8_t>> white;
     for (uint32_t v = 0; v < p.viewCount; ++v) {
@@ -209,15 +175,9 @@ TEST(Reconstruction, ViewFilterMixesNeighbouringViewsOnly)
             image[i] = 255;
         white.push_back(std::move(image));
     }
-    const auto samples = player::reconstructionSamples(Reconstruction::View);
-    float lo = 0.0f, hi = 0.0f;
-    for (const glm::vec3& o : samples) {
-        lo = std::min(lo, o.z);
-        hi = std::max(hi, o.z);
-    }
     const auto nearest = player::buildEiaCpu(p, white, p.viewWidth, p.viewHeight);
     const auto filtered = player::buildEiaCpu(p, white, p.viewWidth, p.viewHeight, Reconstruction::View);
-    double litNearest = 0.0, litFiltered = 0.0;
+    double litNearest = 0.0, litFiltered = 0.0, worst = 0.0;
     size_t neighbours = 0;
     for (uint32_t l = 0; l < p.panelHeight; ++l)
         for (uint32_t k = 0; k < 3 * p.panelWidth; ++k) {
@@ -225,28 +185,16 @@ TEST(Reconstruction, ViewFilterMixesNeighbouringViewsOnly)
             const double c = subpixelPhase(p, k, l) * p.viewCount;
             litNearest += linearOf(nearest[at]);
             litFiltered += linearOf(filtered[at]);
-            if (filtered[at] > 0) {
-                ASSERT_GE(c + hi, 12.0 - 1e-9) << k << "," << l;
-                ASSERT_LT(c + lo, 13.0 + 1e-9) << k << "," << l;
-                neighbours += std::floor(c) != 12.0;
-            }
+            const double expected = std::max(0.0, 1.0 - std::abs(c - 12.5));
+            worst = std::max(worst, std::abs(linearOf(filtered[at]) - expected));
+            neighbours += filtered[at] > 0 && std::floor(c) != 12.0;
         }
     EXPECT_GT(neighbours, size_t(100)); // light reaches views 11 and 13
-    EXPECT_NEAR(litFiltered / litNearest, 1.0, 0.15);
+    EXPECT_LT(worst, 0.01);              // 8-bit sRGB quantisation only
+    EXPECT_NEAR(litFiltered / litNearest, 1.0, 0.05);
     // The spatial mode does not mix views: view 12 alone, as nearest.
     const auto spatial = player::buildEiaCpu(p, white, p.viewWidth, p.viewHeight, Reconstruction::Spatial);
     EXPECT_EQ(spatial, nearest);
-}
-
-TEST(Reconstruction, CpuReferenceIsReproducibleAndSeeded)
-{
-    const DisplayProfile p = player::displaytest::smallProfile();
-    const auto views = randomViews(p, 5);
-    const auto a = player::buildEiaCpu(p, views, p.viewWidth, p.viewHeight, Reconstruction::ViewSpatial, 3);
-    const auto b = player::buildEiaCpu(p, views, p.viewWidth, p.viewHeight, Reconstruction::ViewSpatial, 3);
-    const auto c = player::buildEiaCpu(p, views, p.viewWidth, p.viewHeight, Reconstruction::ViewSpatial, 4);
-    EXPECT_EQ(a, b);
-    EXPECT_NE(a, c);
 }
 
 TEST(Supersampling, AngularCamerasAreRandomInsideEachHalfInterval)
@@ -305,15 +253,16 @@ TEST_F(ReconstructionGpu, ShaderConstantsMatchTheEnum)
     EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_MODE_SPATIAL"), long(Reconstruction::Spatial));
     EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_MODE_VIEW"), long(Reconstruction::View));
     EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_MODE_VIEW_SPATIAL"), long(Reconstruction::ViewSpatial));
-    EXPECT_EQ(gl::shaderDefineValue("eia_bindings.glsl", "EIA_SAMPLES"), long(ReconstructionFilter::kSamples));
 }
 
 TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)
 {
-    // Tolerance: one 8-bit level on at most 1% of the subpixels. The GPU pass and the CPU
-    // reference use the same samples, the same decoding table and the same float
-    // operations, but the driver may fuse a multiply-add and its pow() may differ in the
-    // last bit, which moves a value sitting on a rounding boundary by one level.
+    // Tolerance: one 8-bit level, on at most 15% of the subpixels. The GPU passes and the
+    // CPU reference take the same steps in float (prefilter stored as half floats,
+    // bilinear and linear reads), but the driver decodes sRGB with its own approximation
+    // (the CPU uses the exact formula) and filters and fuses multiply-adds with its own
+    // rounding, which moves values near a rounding boundary by one level: 5-9% of the
+    // subpixels on llvmpipe, in every mode.
     for (const DisplayProfile& p : {player::displaytest::smallProfile("RGB"), player::displaytest::smallProfile("BGR", true)})
         for (Reconstruction mode : {Reconstruction::Spatial, Reconstruction::View, Reconstruction::ViewSpatial}) {
             const auto views = randomViews(p, 9);
@@ -336,7 +285,7 @@ TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)
                 worst = std::max(worst, d);
             }
             EXPECT_LE(worst, 1) << player::reconstructionName(mode);
-            EXPECT_LE(double(off) / double(gpu.size()), 0.01) << player::reconstructionName(mode);
+            EXPECT_LE(double(off) / double(gpu.size()), 0.15) << player::reconstructionName(mode);
         }
 }
 
