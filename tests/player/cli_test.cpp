@@ -659,3 +659,83 @@ TEST_F(CliTest, DisplayDrivingBadInputFailsCleanly)
 
 } // namespace
 } // namespace lfd::test
+
+namespace lfd::test {
+namespace {
+
+// --quilt-layout: a quilt written with other tiles and aspect, and a quilt whose name has
+// no aspect (older tools' "old_qs4x3.png") read back with the flag - the direct EIA.
+TEST_F(CliTest, QuiltLayoutFlagWritesAndReadsOtherLayouts)
+{
+    const fs::path out = dir_ / "layout";
+    fs::create_directories(out);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 12 --view-size 96x72";
+    const RunResult direct = runPlay(dir_, common + " --frame 20 --out " + q(out / "direct.png") + " --quilt " +
+                                               q(out / "q.png") + " --quilt-layout 6x2a2");
+    ASSERT_EQ(direct.status, 0) << direct.err;
+    const fs::path written = out / "q_qs6x2a2.png";
+    ASSERT_TRUE(fs::exists(written));
+    EXPECT_EQ(metrics::readImage(written).width, 6u * 96u);
+    const RunResult tooFew = runPlay(dir_, common + " --quilt " + q(out / "few.png") + " --quilt-layout 3x3");
+    EXPECT_EQ(tooFew.status, 1);
+    EXPECT_NE(tooFew.err.find("fewer tiles"), std::string::npos) << tooFew.err;
+
+    fs::copy_file(written, out / "old_qs6x2.png");
+    for (const std::string& flags : {std::string(""), std::string(" --quilt-layout 6x2a1.78")}) {
+        const RunResult back = runPlay(dir_, "--headless --quilt-in " + q(out / "old_qs6x2.png") + " --display " +
+                                                 q(profile_) + flags + " --out " + q(out / "back.png"));
+        ASSERT_EQ(back.status, 0) << back.err;
+        const metrics::Image a = metrics::readImage(out / "direct.png"), b = metrics::readImage(out / "back.png");
+        EXPECT_EQ(metrics::maxAbsDiff(a, b), 0) << flags;
+    }
+    const RunResult bad = runPlay(dir_, common + " --quilt-layout 6by2");
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("--quilt-layout"), std::string::npos) << bad.err;
+}
+
+// Headless without an output flag renders (a timing run) and says that nothing was
+// written and which flags write; --help says --quilt-video needs --headless.
+TEST_F(CliTest, HeadlessWithoutOutputsSaysNothingWasWritten)
+{
+    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+                                          " --views 4 --view-size 64x48");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("lfd-play: no output written (timing only; --out"), std::string::npos) << r.out;
+    EXPECT_TRUE(outputsIn(dir_).empty());
+    const RunResult withOutput = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+                                                   " --views 4 --view-size 64x48 --out " + q(dir_ / "e.png"));
+    EXPECT_EQ(withOutput.out.find("no output written"), std::string::npos) << withOutput.out;
+    const RunResult help = runPlay(dir_, "--help");
+    EXPECT_NE(help.out.find("headless only (--headless)"), std::string::npos);
+}
+
+// A pack whose tessellation bound was made for another display (BakeSettings) plays with
+// one warning line saying so; for the same display and views, none.
+TEST_F(CliTest, PackBakedForAnotherDisplayWarns)
+{
+    Scene scene = cubeAndSphereScene();
+    scene.settings.displayProfile = "looking_glass_portrait_visual";
+    scene.settings.viewWidth = 420;
+    scene.settings.viewHeight = 560;
+    scene.settings.viewCount = 48;
+    const fs::path other = dir_ / "other.lfdpack";
+    writePack(other, scene);
+    const std::string args = " --display " + q(profile_) + " --views 4 --view-size 64x48";
+    const RunResult r = runPlay(dir_, "--headless " + q(other) + args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("lfd-play: warning: other.lfdpack: its tessellation bound (100 view pixels) was made for "
+                         "display 'looking_glass_portrait_visual' with 420x560 views, this is 'cli-small' with "
+                         "64x48 views"),
+              std::string::npos)
+        << r.err;
+    scene.settings.displayProfile = "cli-small";
+    scene.settings.viewWidth = 64;
+    scene.settings.viewHeight = 48;
+    writePack(other, scene);
+    const RunResult same = runPlay(dir_, "--headless " + q(other) + args);
+    EXPECT_EQ(same.err, "");
+}
+
+} // namespace
+} // namespace lfd::test

@@ -182,6 +182,10 @@ TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
     start(common_ + " --no-turntable --fullscreen --allow-mismatch");
     const metrics::Image screen = server_->readScreen();
     quit();
+    // The readout lines start once something is measured: no empty "lfd-play: " line.
+    const std::string log = readText(dir_ / "play.log");
+    EXPECT_EQ(("\n" + log).find("\nlfd-play: \n"), std::string::npos) << log;
+    EXPECT_NE(log.find("mismatch allowed"), std::string::npos) << log;
     ASSERT_EQ(screen.width, 640u);
     size_t differing = 0, litOutside = 0;
     for (uint32_t y = 0; y < 400; ++y)
