@@ -182,10 +182,14 @@ TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
     start(common_ + " --no-turntable --fullscreen --allow-mismatch");
     const metrics::Image screen = server_->readScreen();
     quit();
-    // The readout lines start once something is measured: no empty "lfd-play: " line.
+    // The readout lines start once something is measured: no empty "lfd-play: " line, also
+    // for a one-frame run whose only readout comes before any frame time is known.
     const std::string log = readText(dir_ / "play.log");
     EXPECT_EQ(("\n" + log).find("\nlfd-play: \n"), std::string::npos) << log;
     EXPECT_NE(log.find("mismatch allowed"), std::string::npos) << log;
+    ASSERT_EQ(run(common_ + " --fullscreen --allow-mismatch --frames 1", err), 0) << err;
+    const std::string oneFrame = readText(dir_ / "out.txt");
+    EXPECT_EQ(("\n" + oneFrame).find("\nlfd-play: \n"), std::string::npos) << oneFrame;
     ASSERT_EQ(screen.width, 640u);
     size_t differing = 0, litOutside = 0;
     for (uint32_t y = 0; y < 400; ++y)
