@@ -61,7 +61,7 @@ QuiltVideoReader::QuiltVideoReader(const fs::path& file) : file_(file), codec_(s
     // note: libav logs corrupt-stream details to stderr itself; the player reports one
     // line per problem, so its log stays quiet.
     av_log_set_level(AV_LOG_QUIET);
-    auto fail = [&](const std::string& problem) { throw VideoInputError(file.string() + ": " + problem); };
+    auto fail = [&](const std::string& problem) { throw VideoError(file.string() + ": " + problem); };
     Codec& c = *codec_;
     if (int r = avformat_open_input(&c.format, file.c_str(), nullptr, nullptr); r < 0)
         fail("cannot open the video (" + avMessage(r) + ")");
@@ -102,7 +102,7 @@ void QuiltVideoReader::rewind()
     Codec& c = *codec_;
     if (int r = av_seek_frame(c.format, c.stream, 0, AVSEEK_FLAG_BACKWARD); r < 0)
         if (int again = avformat_seek_file(c.format, -1, INT64_MIN, 0, INT64_MAX, 0); again < 0)
-            throw VideoInputError(file_.string() + ": cannot seek to the start (" + avMessage(again) + ")");
+            throw VideoError(file_.string() + ": cannot seek to the start (" + avMessage(again) + ")");
     avcodec_flush_buffers(c.decoder);
     c.draining = false;
     decoded_ = -1;
@@ -118,7 +118,7 @@ bool QuiltVideoReader::decodeNext()
         if (received == AVERROR_EOF || (received == AVERROR(EAGAIN) && c.draining))
             return false;
         if (received != AVERROR(EAGAIN))
-            throw VideoInputError(file_.string() + ": frame " + std::to_string(decoded_ + 1) +
+            throw VideoError(file_.string() + ": frame " + std::to_string(decoded_ + 1) +
                                   " does not decode (" + avMessage(received) + ")");
         if (av_read_frame(c.format, c.packet) < 0) {
             avcodec_send_packet(c.decoder, nullptr); // end of file: drain the decoder
@@ -129,7 +129,7 @@ bool QuiltVideoReader::decodeNext()
             const int sent = avcodec_send_packet(c.decoder, c.packet);
             if (sent < 0 && sent != AVERROR(EAGAIN)) {
                 av_packet_unref(c.packet);
-                throw VideoInputError(file_.string() + ": corrupt video data at frame " +
+                throw VideoError(file_.string() + ": corrupt video data at frame " +
                                       std::to_string(decoded_ + 1) + " (" + avMessage(sent) + ")");
             }
         }
@@ -140,7 +140,7 @@ bool QuiltVideoReader::decodeNext()
                                     AV_PIX_FMT_RGBA, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
                                     nullptr, nullptr);
     if (!c.scaler)
-        throw VideoInputError(file_.string() + ": cannot convert its pixel format to RGBA");
+        throw VideoError(file_.string() + ": cannot convert its pixel format to RGBA");
     frame_ = metrics::Image{uint32_t(p.width), uint32_t(p.height), 4,
                             std::vector<uint8_t>(size_t(p.width) * size_t(p.height) * 4)};
     uint8_t* planes[4] = {frame_.pixels.data(), nullptr, nullptr, nullptr};
@@ -154,13 +154,13 @@ bool QuiltVideoReader::decodeNext()
 const metrics::Image& QuiltVideoReader::frame(uint32_t index)
 {
     if (index >= frameCount_)
-        throw VideoInputError(file_.string() + ": has " + std::to_string(frameCount_) + " frames, frame " +
+        throw VideoError(file_.string() + ": has " + std::to_string(frameCount_) + " frames, frame " +
                               std::to_string(index) + " asked");
     if (int64_t(index) < decoded_)
         rewind();
     while (decoded_ < int64_t(index))
         if (!decodeNext())
-            throw VideoInputError(file_.string() + ": ends after " + std::to_string(decoded_ + 1) +
+            throw VideoError(file_.string() + ": ends after " + std::to_string(decoded_ + 1) +
                                   " decodable frames, frame " + std::to_string(index) + " asked");
     return frame_;
 }

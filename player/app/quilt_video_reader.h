@@ -6,19 +6,13 @@
 #pragma once
 
 #include "image.h"
+#include "quilt_video.h"
 
 #include <cstdint>
 #include <filesystem>
 #include <memory>
-#include <stdexcept>
 
 namespace lfd::player {
-
-// One line naming the file and the problem.
-class VideoInputError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
 
 // True for the container extensions read as videos (.mp4, .m4v, .mov, .mkv, .webm, .avi).
 bool isVideoFile(const std::filesystem::path& path);
@@ -26,7 +20,7 @@ bool isVideoFile(const std::filesystem::path& path);
 class QuiltVideoReader {
 public:
     // Opens the file, finds its video stream and counts its frames (by demuxing, no
-    // decoding). Throws VideoInputError for a missing, unreadable, corrupt or empty video.
+    // decoding). Throws VideoError for a missing, unreadable, corrupt or empty video.
     explicit QuiltVideoReader(const std::filesystem::path& file);
     ~QuiltVideoReader();
     QuiltVideoReader(const QuiltVideoReader&) = delete;
@@ -35,7 +29,7 @@ public:
     const std::filesystem::path& file() const { return file_; }
     uint32_t frameCount() const { return frameCount_; }
     double framesPerSecond() const { return fps_; }
-    // Frame `index` (< frameCount()) as RGBA8, row 0 = top. Throws VideoInputError when
+    // Frame `index` (< frameCount()) as RGBA8, row 0 = top. Throws VideoError when
     // the frame cannot be decoded.
     const metrics::Image& frame(uint32_t index);
 

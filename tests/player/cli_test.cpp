@@ -6,6 +6,7 @@
 // the reference would be broken the same way. Stats keys; bad input gives one stderr line,
 // a non-zero status and no output files.
 #include "gl_test_support.h"
+#include "player_cli_fixture.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
 
@@ -38,7 +39,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kPlay = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
 
 std::string readText(const fs::path& path)
 {
@@ -142,21 +142,9 @@ TEST(CliOutputChecks, BlankOrWrongImagesFail)
     EXPECT_NE(blankReason(background).find("(13, 13, 13)"), std::string::npos) << blankReason(background);
 }
 
-class CliTest : public GlTest {
+class CliTest : public PlayerCliTest {
 protected:
-    void SetUp() override
-    {
-        GlTest::SetUp();
-        if (IsSkipped())
-            return;
-        ASSERT_TRUE(fs::exists(kPlay)) << kPlay << " not built (build target lfd-play)";
-        dir_ = testOutputDir(std::string("cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        pack_ = dir_ / "scene.lfdpack";
-        writePack(pack_, cubeAndSphereScene());
-        profile_ = dir_ / "profile.json";
-        std::ofstream(profile_) << tenthPrototypeProfileJson("cli-small");
-    }
-    fs::path dir_, pack_, profile_;
+    CliTest() : PlayerCliTest("cli_", "cli-small") {}
 };
 
 TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
@@ -656,12 +644,6 @@ TEST_F(CliTest, DisplayDrivingBadInputFailsCleanly)
         EXPECT_EQ(outputsIn(dir_), std::vector<std::string>{"plain.png"}) << args;
     }
 }
-
-} // namespace
-} // namespace lfd::test
-
-namespace lfd::test {
-namespace {
 
 // --quilt-layout: a quilt written with other tiles and aspect, and a quilt whose name has
 // no aspect (older tools' "old_qs4x3.png") read back with the flag - the direct EIA.

@@ -2,16 +2,13 @@
 // decoder (frame count, rate, rewinding), the headless round trip through the real
 // executable - an animation exported with --quilt-video and played back gives the direct
 // render's EIAs within the codec's error - and bad videos failing in one line.
-#include "gl_test_support.h"
-#include "render_test_util.h"
-#include "test_scenes.h"
+#include "player_cli_fixture.h"
 #include "tool_run.h"
 
 #include "image_metrics.h"
 #include "quilt_video.h"
 #include "quilt_video_reader.h"
 
-#include "lfd/pack.h"
 
 #include <gtest/gtest.h>
 
@@ -23,8 +20,6 @@ namespace lfd::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path kPlay = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
 
 // The codec's error the round trip allows: H.264 at CRF 15 in 4:2:0 (quilt_video.cpp),
 // measured on the interleaved EIA (README "Quilts" gives the measured values).
@@ -43,20 +38,9 @@ std::string numbered(const std::string& stem, uint32_t frame)
     return name;
 }
 
-class QuiltVideoTest : public GlTest {
+class QuiltVideoTest : public PlayerCliTest {
 protected:
-    void SetUp() override
-    {
-        GlTest::SetUp();
-        if (IsSkipped())
-            return;
-        ASSERT_TRUE(fs::exists(kPlay)) << kPlay << " not built (build target lfd-play)";
-        dir_ = testOutputDir(std::string("quilt_video_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        pack_ = dir_ / "scene.lfdpack";
-        writePack(pack_, cubeAndSphereScene());
-        profile_ = dir_ / "profile.json";
-        std::ofstream(profile_) << tenthPrototypeProfileJson("video-small");
-    }
+    QuiltVideoTest() : PlayerCliTest("quilt_video_", "video-small") {}
     // Renders 3 frames of the turning scene (12 views of 96x72: a 4x3 quilt), their EIAs as
     // direct_000K.png and the quilts as a video; returns the video (empty without ffmpeg).
     fs::path exportVideo()
@@ -69,7 +53,6 @@ protected:
         EXPECT_EQ(r.exitCode, 0) << r.out;
         return dir_ / "clip_qs4x3a1.78.mp4";
     }
-    fs::path dir_, pack_, profile_;
 };
 
 TEST_F(QuiltVideoTest, ReaderCountsFramesAndRewinds)
@@ -86,7 +69,7 @@ TEST_F(QuiltVideoTest, ReaderCountsFramesAndRewinds)
     const metrics::Image last = reader.frame(2);
     EXPECT_GT(metrics::rmse(first, last), 1.0) << "the turntable turns between frames";
     EXPECT_EQ(metrics::maxAbsDiff(reader.frame(0), first), 0) << "rewinding decodes the same frame";
-    EXPECT_THROW(reader.frame(3), player::VideoInputError);
+    EXPECT_THROW(reader.frame(3), player::VideoError);
 }
 
 // The round trip: every frame played back from the video is the direct render's
