@@ -614,6 +614,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
             info.streaming = input.mapped != nullptr;
             info.timeToFirstFrameMs = run.firstFrameMs;
             info.timeToResidentMs = run.residentMs;
+            info.frames = run.frames; // a quilt video's own frame count when --frames was not given
             writeStats(options.statsOut, info, stages);
             run.written.push_back(options.statsOut);
         }
