@@ -108,7 +108,7 @@ void QuiltVideoReader::rewind()
     decoded_ = -1;
 }
 
-bool QuiltVideoReader::decodeNext()
+bool QuiltVideoReader::decodeNext(bool convert)
 {
     Codec& c = *codec_;
     for (;;) {
@@ -135,6 +135,16 @@ bool QuiltVideoReader::decodeNext()
         }
         av_packet_unref(c.packet);
     }
+    ++decoded_;
+    if (convert)
+        convertPicture();
+    av_frame_unref(c.picture);
+    return true;
+}
+
+void QuiltVideoReader::convertPicture()
+{
+    Codec& c = *codec_;
     const AVFrame& p = *c.picture;
     c.scaler = sws_getCachedContext(c.scaler, p.width, p.height, AVPixelFormat(p.format), p.width, p.height,
                                     AV_PIX_FMT_RGBA, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
@@ -146,9 +156,6 @@ bool QuiltVideoReader::decodeNext()
     uint8_t* planes[4] = {frame_.pixels.data(), nullptr, nullptr, nullptr};
     const int strides[4] = {p.width * 4, 0, 0, 0};
     sws_scale(c.scaler, p.data, p.linesize, 0, p.height, planes, strides);
-    av_frame_unref(c.picture);
-    ++decoded_;
-    return true;
 }
 
 const metrics::Image& QuiltVideoReader::frame(uint32_t index)
@@ -158,8 +165,9 @@ const metrics::Image& QuiltVideoReader::frame(uint32_t index)
                               std::to_string(index) + " asked");
     if (int64_t(index) < decoded_)
         rewind();
+    // Frames before the one asked are decoded (the codec needs them) but not converted.
     while (decoded_ < int64_t(index))
-        if (!decodeNext())
+        if (!decodeNext(decoded_ + 1 == int64_t(index)))
             throw VideoError(file_.string() + ": ends after " + std::to_string(decoded_ + 1) +
                                   " decodable frames, frame " + std::to_string(index) + " asked");
     return frame_;

@@ -36,7 +36,8 @@ public:
 private:
     struct Codec;
     void rewind();
-    bool decodeNext(); // into frame_; false at the end of the stream
+    bool decodeNext(bool convert); // the next frame (into frame_ when `convert`); false at the end
+    void convertPicture();         // the decoded picture into frame_ as RGBA8
     std::filesystem::path file_;
     std::unique_ptr<Codec> codec_;
     uint32_t frameCount_ = 0;
