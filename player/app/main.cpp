@@ -346,6 +346,7 @@ struct Sequence {
     fs::path tempFolder; // set when only the video needs the frames
     std::vector<fs::path> frames;
     lfd::DisplayProfile profile; // of the frames written (a preview's views are fewer)
+    double fps = 60.0;           // the video's rate: --fps, or a quilt video input's own
 };
 
 Sequence planSequence(const PlayOptions& o)
@@ -377,7 +378,7 @@ int encodeVideo(const PlayOptions& o, Sequence& s)
         const lfd::player::QuiltLayout layout = lfd::player::quiltLayoutFor(o, s.profile);
         const fs::path video = lfd::player::quiltFileName(o.quiltVideoOut, layout);
         try {
-            lfd::player::encodeQuiltVideo(lfd::player::quiltSequencePattern(s.base, layout), o.fps, video);
+            lfd::player::encodeQuiltVideo(lfd::player::quiltSequencePattern(s.base, layout), s.fps, video);
             std::printf("lfd-play: quilt video %s (%zu frames)\n", video.string().c_str(), s.frames.size());
         } catch (const std::exception& e) {
             std::fprintf(stderr, "lfd-play: %s\n", lfd::cli::oneLine(e.what()).c_str());
@@ -596,6 +597,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
     measureLoading(run, input, packName);
     GpuTimer& timer = run.quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
     planFrames(run);
+    run.sequence.fps = 1.0 / session.frameTime(1);
     if (run.sequence.active)
         run.single.quiltOut.clear();
     run.eiaSequence = !options.eiaOut.empty() && isFramePattern(options.eiaOut);

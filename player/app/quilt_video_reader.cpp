@@ -1,12 +1,6 @@
 #include "quilt_video_reader.h"
 
-extern "C" {
-#include <libavcodec/avcodec.h>
-#include <libavformat/avformat.h>
-#include <libavutil/imgutils.h>
-#include <libavutil/log.h>
-#include <libswscale/swscale.h>
-}
+#include "libav_library.h"
 
 #include <algorithm>
 #include <array>
@@ -29,11 +23,13 @@ struct QuiltVideoReader::Codec {
 
     ~Codec()
     {
-        sws_freeContext(scaler);
-        av_frame_free(&picture);
-        av_packet_free(&packet);
-        avcodec_free_context(&decoder);
-        avformat_close_input(&format);
+        if (!format) // nothing was opened (and the libraries may not have loaded)
+            return;
+        libAv().sws_freeContext(scaler);
+        libAv().av_frame_free(&picture);
+        libAv().av_packet_free(&packet);
+        libAv().avcodec_free_context(&decoder);
+        libAv().avformat_close_input(&format);
     }
 };
 
@@ -42,7 +38,7 @@ namespace {
 std::string avMessage(int code)
 {
     std::array<char, AV_ERROR_MAX_STRING_SIZE> text{};
-    av_strerror(code, text.data(), text.size());
+    libAv().av_strerror(code, text.data(), text.size());
     return text.data();
 }
 
@@ -60,34 +56,39 @@ QuiltVideoReader::QuiltVideoReader(const fs::path& file) : file_(file), codec_(s
 {
     // note: libav logs corrupt-stream details to stderr itself; the player reports one
     // line per problem, so its log stays quiet.
-    av_log_set_level(AV_LOG_QUIET);
     auto fail = [&](const std::string& problem) { throw VideoError(file.string() + ": " + problem); };
+    try {
+        libAv();
+    } catch (const VideoError& e) {
+        fail(e.what());
+    }
+    libAv().av_log_set_level(AV_LOG_QUIET);
     Codec& c = *codec_;
-    if (int r = avformat_open_input(&c.format, file.c_str(), nullptr, nullptr); r < 0)
+    if (int r = libAv().avformat_open_input(&c.format, file.c_str(), nullptr, nullptr); r < 0)
         fail("cannot open the video (" + avMessage(r) + ")");
-    if (int r = avformat_find_stream_info(c.format, nullptr); r < 0)
+    if (int r = libAv().avformat_find_stream_info(c.format, nullptr); r < 0)
         fail("not a readable video (" + avMessage(r) + ")");
     const AVCodec* codec = nullptr;
-    c.stream = av_find_best_stream(c.format, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
+    c.stream = libAv().av_find_best_stream(c.format, AVMEDIA_TYPE_VIDEO, -1, -1, &codec, 0);
     if (c.stream < 0 || !codec)
         fail("holds no decodable video stream");
     AVStream* stream = c.format->streams[c.stream];
-    c.decoder = avcodec_alloc_context3(codec);
-    c.packet = av_packet_alloc();
-    c.picture = av_frame_alloc();
+    c.decoder = libAv().avcodec_alloc_context3(codec);
+    c.packet = libAv().av_packet_alloc();
+    c.picture = libAv().av_frame_alloc();
     if (!c.decoder || !c.packet || !c.picture)
         fail("out of memory opening the video");
-    if (avcodec_parameters_to_context(c.decoder, stream->codecpar) < 0 || avcodec_open2(c.decoder, codec, nullptr) < 0)
+    if (libAv().avcodec_parameters_to_context(c.decoder, stream->codecpar) < 0 || libAv().avcodec_open2(c.decoder, codec, nullptr) < 0)
         fail(std::string("cannot open the ") + codec->name + " decoder");
-    const AVRational rate = av_guess_frame_rate(c.format, stream, nullptr);
+    const AVRational rate = libAv().av_guess_frame_rate(c.format, stream, nullptr);
     fps_ = rate.num > 0 && rate.den > 0 ? av_q2d(rate) : 0.0;
     if (!(fps_ > 0.0))
         fail("the video stream has no frame rate");
     // Count the frames by demuxing (containers' own counts are missing in WebM and can
     // be wrong); then back to the start.
-    while (av_read_frame(c.format, c.packet) >= 0) {
+    while (libAv().av_read_frame(c.format, c.packet) >= 0) {
         frameCount_ += c.packet->stream_index == c.stream ? 1 : 0;
-        av_packet_unref(c.packet);
+        libAv().av_packet_unref(c.packet);
     }
     if (frameCount_ == 0)
         fail("the video stream has no frames");
@@ -100,10 +101,10 @@ QuiltVideoReader::~QuiltVideoReader() = default;
 void QuiltVideoReader::rewind()
 {
     Codec& c = *codec_;
-    if (int r = av_seek_frame(c.format, c.stream, 0, AVSEEK_FLAG_BACKWARD); r < 0)
-        if (int again = avformat_seek_file(c.format, -1, INT64_MIN, 0, INT64_MAX, 0); again < 0)
+    if (int r = libAv().av_seek_frame(c.format, c.stream, 0, AVSEEK_FLAG_BACKWARD); r < 0)
+        if (int again = libAv().avformat_seek_file(c.format, -1, INT64_MIN, 0, INT64_MAX, 0); again < 0)
             throw VideoError(file_.string() + ": cannot seek to the start (" + avMessage(again) + ")");
-    avcodec_flush_buffers(c.decoder);
+    libAv().avcodec_flush_buffers(c.decoder);
     c.draining = false;
     decoded_ = -1;
 }
@@ -112,7 +113,7 @@ bool QuiltVideoReader::decodeNext(bool convert)
 {
     Codec& c = *codec_;
     for (;;) {
-        const int received = avcodec_receive_frame(c.decoder, c.picture);
+        const int received = libAv().avcodec_receive_frame(c.decoder, c.picture);
         if (received == 0)
             break;
         if (received == AVERROR_EOF || (received == AVERROR(EAGAIN) && c.draining))
@@ -120,25 +121,25 @@ bool QuiltVideoReader::decodeNext(bool convert)
         if (received != AVERROR(EAGAIN))
             throw VideoError(file_.string() + ": frame " + std::to_string(decoded_ + 1) +
                                   " does not decode (" + avMessage(received) + ")");
-        if (av_read_frame(c.format, c.packet) < 0) {
-            avcodec_send_packet(c.decoder, nullptr); // end of file: drain the decoder
+        if (libAv().av_read_frame(c.format, c.packet) < 0) {
+            libAv().avcodec_send_packet(c.decoder, nullptr); // end of file: drain the decoder
             c.draining = true;
             continue;
         }
         if (c.packet->stream_index == c.stream) {
-            const int sent = avcodec_send_packet(c.decoder, c.packet);
+            const int sent = libAv().avcodec_send_packet(c.decoder, c.packet);
             if (sent < 0 && sent != AVERROR(EAGAIN)) {
-                av_packet_unref(c.packet);
+                libAv().av_packet_unref(c.packet);
                 throw VideoError(file_.string() + ": corrupt video data at frame " +
                                       std::to_string(decoded_ + 1) + " (" + avMessage(sent) + ")");
             }
         }
-        av_packet_unref(c.packet);
+        libAv().av_packet_unref(c.packet);
     }
     ++decoded_;
     if (convert)
         convertPicture();
-    av_frame_unref(c.picture);
+    libAv().av_frame_unref(c.picture);
     return true;
 }
 
@@ -146,7 +147,7 @@ void QuiltVideoReader::convertPicture()
 {
     Codec& c = *codec_;
     const AVFrame& p = *c.picture;
-    c.scaler = sws_getCachedContext(c.scaler, p.width, p.height, AVPixelFormat(p.format), p.width, p.height,
+    c.scaler = libAv().sws_getCachedContext(c.scaler, p.width, p.height, AVPixelFormat(p.format), p.width, p.height,
                                     AV_PIX_FMT_RGBA, SWS_BILINEAR | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INT, nullptr,
                                     nullptr, nullptr);
     if (!c.scaler)
@@ -155,7 +156,7 @@ void QuiltVideoReader::convertPicture()
                             std::vector<uint8_t>(size_t(p.width) * size_t(p.height) * 4)};
     uint8_t* planes[4] = {frame_.pixels.data(), nullptr, nullptr, nullptr};
     const int strides[4] = {p.width * 4, 0, 0, 0};
-    sws_scale(c.scaler, p.data, p.linesize, 0, p.height, planes, strides);
+    libAv().sws_scale(c.scaler, p.data, p.linesize, 0, p.height, planes, strides);
 }
 
 const metrics::Image& QuiltVideoReader::frame(uint32_t index)
