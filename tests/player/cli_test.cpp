@@ -635,6 +635,9 @@ TEST_F(CliTest, DisplayDrivingBadInputFailsCleanly)
         {pack + " --preview sometimes", "--preview"},
         {pack + " --preview-view-step 0", "--preview-view-step"},
         {pack + " --quilt-video " + q(dir_ / "clip.avi"), "--quilt-video"},
+        {q(pack_) + small + " --quilt-video " + q(dir_ / "clip.mp4"), "--quilt-video: needs --headless"},
+        {"--headless " + q(pack_) + " --display " + q(profile_) + " --out " + q(dir_ / "e_%s.png"), "--out"},
+        {"--quilt-in " + q(dir_ / "x_qs2x2a1.mp4") + " --display " + q(profile_) + " --quilt-frame 1", "--quilt-frame"},
     };
     for (const auto& [args, culprit] : cases) {
         const RunResult r = runPlay(dir_, args);
