@@ -271,7 +271,7 @@ int main(int argc, char** argv)
     app.add_option("--display", o.display, "display profile JSON or Looking Glass visual.json (default: the paper's prototype)");
     app.add_option("--max-edge-px", o.maxEdgePx, "split triangles whose edges exceed this many view pixels (default 100)")
         ->check(CLI::Range(1.0, 1e6));
-    app.add_option("--fill", o.fill, "fraction of the smaller screen dimension the scene's bounding sphere fills (default 1)")
+    app.add_option("--fill", o.fill, "fraction of the largest sphere fitting every view (formats/display_profiles.md 4.) the scene's bounding sphere fills (default 1)")
         ->check(CLI::Range(0.01, 1.0));
     app.add_option("--max-texture-size", o.maxTextureSize, "largest texture dimension kept (GPU limit, default 16384)")
         ->check(CLI::Range(1u, 65536u));

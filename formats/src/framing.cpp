@@ -58,6 +58,22 @@ double maxObliqueRate(double D, double rho, double offset) {
     return best;
 }
 
+// The largest sphere radius (mm, centred on the screen) that fits the display (fill 1):
+// vertically the screen's height; horizontally the sphere must stay inside every view's
+// frustum, and a camera at the cone's edge, e = -D tan(cone / 2), sees the right screen
+// edge along a plane whose distance from the screen centre is
+// D (W / 2) / sqrt(D^2 + (W / 2 - e)^2) - on a portrait panel seen from a wide cone that
+// is well below W / 2 (Looking Glass Portrait: 54.09 instead of 60.21 mm), so a wide scene
+// fitted to the screen width alone is cut off in the outer views.
+double fittedRadiusMm(const DisplayProfile& profile) {
+    const double D = profile.viewingDistanceMm;
+    const double halfWidth = 0.5 * profile.screenWidthMm, halfHeight = 0.5 * profile.screenHeightMm;
+    const double coneEdge = D * std::tan(0.5 * profile.viewConeDeg * kPi / 180.0);
+    const double insideFrustum = D * halfWidth / std::hypot(D, halfWidth + coneEdge);
+    // note: a profile without a viewing distance (D = 0) keeps the plain half width.
+    return std::min(halfHeight, D > 0.0 ? insideFrustum : halfWidth);
+}
+
 } // namespace
 
 Framing fitSceneToDisplay(const DisplayProfile& profile, const SceneBounds& bounds, double fill) {
@@ -70,9 +86,7 @@ Framing fitSceneToDisplay(const DisplayProfile& profile, const SceneBounds& boun
     // note: an empty or single-point scene has r = 0; any scale frames it, use 1.
     const double r = double(bounds.radius);
     framing.sceneRadius = (std::isfinite(r) && r > 0.0) ? r : 1.0;
-    // Diameter 2 r maps to fill * the smaller screen side.
-    const double smallerSide = std::min(profile.screenWidthMm, profile.screenHeightMm);
-    framing.mmPerUnit = fill * smallerSide / (2.0 * framing.sceneRadius);
+    framing.mmPerUnit = fill * fittedRadiusMm(profile) / framing.sceneRadius;
     return framing;
 }
 

@@ -6,6 +6,8 @@
 // rewrite it in the affine SubpixelMapping form; the derivation is below.
 #include "display_profile_json.h"
 
+#include "lfd/looking_glass_devices.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -17,8 +19,9 @@ namespace {
 using nlohmann::json;
 
 constexpr double kMmPerInch = 25.4;
-// A Portrait quilt is 8 x 6 tiles of 420 x 560; other panels get 560-pixel-high views of
-// the panel's aspect ratio (which is 420 x 560 for the Portrait's 1536 x 2048).
+// A known device (looking_glass_devices.h) gets the views of its standard quilt (the
+// Portrait's 8 x 6 tiles of 420 x 560); other panels get 48 views, 560 pixels high, of the
+// panel's aspect ratio.
 constexpr uint32_t kDefaultViewCount = 48;
 constexpr uint32_t kDefaultViewHeight = 560;
 
@@ -159,10 +162,16 @@ DisplayProfile importLookingGlassVisual(const json& root, const std::string& sou
 
     // Step 5: views and viewing geometry (defaults documented in display_profiles.md).
     p.name = defaultProfileName(source);
-    p.viewCount = kDefaultViewCount;
-    p.viewHeight = kDefaultViewHeight;
-    const double viewWidth = std::round(double(kDefaultViewHeight) * double(W) / double(H));
-    p.viewWidth = uint32_t(std::clamp(viewWidth, 1.0, 1e9)); // validation rejects > 16384
+    if (const auto quilt = standardQuiltFor(W, H, p.screenWidthMm)) {
+        p.viewCount = quilt->cols * quilt->rows;
+        p.viewWidth = quilt->tileWidth();
+        p.viewHeight = quilt->tileHeight();
+    } else {
+        p.viewCount = kDefaultViewCount;
+        p.viewHeight = kDefaultViewHeight;
+        const double viewWidth = std::round(double(kDefaultViewHeight) * double(W) / double(H));
+        p.viewWidth = uint32_t(std::clamp(viewWidth, 1.0, 1e9)); // validation rejects > 16384
+    }
     p.viewConeDeg = viewCone;
     p.viewingDistanceMm = kDefaultViewingDistanceScreenHeights * p.screenHeightMm;
     return p;

@@ -38,7 +38,8 @@ using lfd::player::PlayOptions;
 
 const char* kFooter =
     "Window keys: R renderer, C reconstruction, O output (EIA, quilt, single view, simulated viewer), "
-    "space pause/resume, Left/Right move the simulated viewer, Esc quit.\n"
+    "space pause/resume, . (period) one frame forward while paused, Left/Right move the simulated viewer, "
+    "Esc quit.\n"
     "Camera: left drag orbit, right or middle drag (or Shift+left drag) pan, wheel zoom, ] / [ focal plane "
     "nearer / farther (the depth shown at zero parallax), = / - depthiness (view-cone scale) up / down, "
     "T turntable on/off, Home or Backspace reset.\n"
@@ -49,6 +50,7 @@ const char* kFooter =
 struct RawFlags {
     std::string pack, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility";
     std::string aa = "none", ss = "1"; // --aa, --ss: typed into PlayOptions once
+    std::string quiltLayout;           // --quilt-layout
     lfd::player::SharedFlags shared;   // the flags lfd-bench takes too
     uint32_t views = 0, frame = 0;
     bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false, noTurntable = false;
@@ -103,12 +105,15 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
 
 void addOutputFlags(CLI::App& app, PlayOptions& o)
 {
-    app.add_option("--out", o.eiaOut, "EIA PNG (panel resolution)");
+    app.add_option("--out", o.eiaOut,
+                   "EIA PNG (panel resolution); a name with %d or %04d (eia_%04d.png) writes every rendered "
+                   "frame's EIA under its frame number");
     app.add_option("--quilt", o.quiltOut,
                    "quilt PNG (a _qsCxRaA suffix is added); with --frames N > 1 and no --frame: one numbered "
                    "quilt per frame (NAME_0000_qs...png)");
     app.add_option("--quilt-video", o.quiltVideoOut,
-                   "every frame's quilt as a video (.mp4 H.264 or .webm VP9, via ffmpeg; a _qs suffix is added)");
+                   "headless only (--headless): every frame's quilt as a video (.mp4 H.264 or .webm VP9, via "
+                   "ffmpeg; a _qs suffix is added)");
     app.add_option("--views-out", o.viewsOut, "directory for view_000.png ... (view 0 = leftmost)");
     app.add_option("--stats", o.statsOut, "stats JSON (and a CSV beside it)");
     app.add_flag("!--no-streaming", o.streaming,
@@ -156,10 +161,15 @@ void addCameraFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
     app.add_flag("--no-turntable", f.noTurntable, "no turntable rotation");
 }
 
-void addQuiltInputFlags(CLI::App& app, PlayOptions& o)
+void addQuiltInputFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
 {
     app.add_option("--quilt-in", o.quiltIn,
-                   "play a quilt (FILE_qs{cols}x{rows}a{aspect}.png) or a folder of them (slideshow) instead of a pack");
+                   "play a quilt (FILE_qs{cols}x{rows}a{aspect}.png), a folder of them (slideshow) or a quilt video "
+                   "(.mp4, .webm, .mkv, .mov, .m4v, .avi; at its own frame rate, looping) instead of a pack");
+    app.add_option("--quilt-frame", o.quiltFrame, "headless, quilt video: render its frame K only (from 0)");
+    app.add_option("--quilt-layout", f.quiltLayout,
+                   "quilt layout CxR or CxRaASPECT (e.g. 8x6a0.75): written with --quilt / --quilt-video instead "
+                   "of the profile's, and read with --quilt-in instead of the file name's");
     app.add_option("--quilt-views", o.quiltViews, "views in the quilt when its last tiles are empty (default: all)");
     app.add_option("--slide-seconds", o.slideSeconds, "seconds per quilt of a folder")->capture_default_str();
 }
@@ -261,8 +271,12 @@ void validateOutputFlags(PlayOptions& o)
             throw UsageError(std::string("--quilt-video: ") + e.what());
         }
         if (!o.headless)
-            throw UsageError("--quilt-video: needs --headless");
+            throw UsageError("--quilt-video: needs --headless (a window shows the quilt with --show quilt)");
     }
+    if (!o.eiaOut.empty() && o.eiaOut.filename().string().find('%') != std::string::npos &&
+        !lfd::player::isFramePattern(o.eiaOut))
+        throw UsageError("--out: a frame number pattern takes one %d (e.g. eia_%04d.png), got '" +
+                         o.eiaOut.string() + "'");
     if (!o.viewsOut.empty() && fs::exists(o.viewsOut) && !fs::is_directory(o.viewsOut))
         throw UsageError("--views-out: '" + o.viewsOut.string() + "' is not a directory");
 }
@@ -275,6 +289,15 @@ void validateInputFlags(PlayOptions& o, const RawFlags& f)
     if (o.quiltIn.empty() == o.pack.empty())
         throw UsageError(o.pack.empty() ? "PACK: give a pack file or --quilt-in (see --help)"
                                         : "--quilt-in: give either a pack or --quilt-in, not both");
+    if (!f.quiltLayout.empty()) {
+        try {
+            o.quiltLayout = lfd::player::parseQuiltLayout(f.quiltLayout, "--quilt-layout");
+        } catch (const std::exception& e) {
+            throw UsageError(e.what());
+        }
+    }
+    if (o.quiltFrame && (o.quiltIn.empty() || !o.headless))
+        throw UsageError("--quilt-frame: needs --headless and a quilt video (--quilt-in)");
     if (!o.quiltIn.empty()) {
         if (*f.viewsOpt || *f.shared.viewSizeOpt)
             throw UsageError(std::string(*f.viewsOpt ? "--views" : "--view-size") +
@@ -323,6 +346,7 @@ struct Sequence {
     fs::path tempFolder; // set when only the video needs the frames
     std::vector<fs::path> frames;
     lfd::DisplayProfile profile; // of the frames written (a preview's views are fewer)
+    double fps = 60.0;           // the video's rate: --fps, or a quilt video input's own
 };
 
 Sequence planSequence(const PlayOptions& o)
@@ -351,10 +375,10 @@ int encodeVideo(const PlayOptions& o, Sequence& s)
 {
     int status = 0;
     if (!o.quiltVideoOut.empty()) {
-        const lfd::player::QuiltLayout layout = lfd::player::chooseQuiltLayout(s.profile);
+        const lfd::player::QuiltLayout layout = lfd::player::quiltLayoutFor(o, s.profile);
         const fs::path video = lfd::player::quiltFileName(o.quiltVideoOut, layout);
         try {
-            lfd::player::encodeQuiltVideo(lfd::player::quiltSequencePattern(s.base, layout), o.fps, video);
+            lfd::player::encodeQuiltVideo(lfd::player::quiltSequencePattern(s.base, layout), s.fps, video);
             std::printf("lfd-play: quilt video %s (%zu frames)\n", video.string().c_str(), s.frames.size());
         } catch (const std::exception& e) {
             std::fprintf(stderr, "lfd-play: %s\n", lfd::cli::oneLine(e.what()).c_str());
@@ -418,8 +442,9 @@ struct HeadlessRun {
     lfd::player::FrameQuality quality;
     Sequence sequence;
     PlayOptions single;      // the options of the one-frame outputs (no quilt for a sequence)
-    bool wantOutputs = false;
-    uint32_t outputFrame = 0;
+    bool wantOutputs = false, eiaSequence = false;
+    uint32_t first = 0, frames = 1; // frames first .. first + frames - 1
+    uint32_t outputFrame = 0;       // counted from `first`
     double firstFrameMs = -1.0, residentMs = -1.0; // loading figures (README "Streaming")
     lfd::player::FrameOutputs outputs;
     lfd::DisplayProfile outputProfile;
@@ -451,26 +476,39 @@ void readOutputs(HeadlessRun& run, uint32_t frame)
     run.outputProfile = run.session.profile();
 }
 
-// Renders F frames, reads the outputs back right after frame K (K after the timed frames:
-// rendered once more, not counted in the stats); a sequence keeps every quilt. Returns the
-// timed frames' stages.
+// Every rendered frame's EIA under its number (--out eia_%04d.png).
+void writeEiaFrame(HeadlessRun& run, uint32_t frame)
+{
+    const fs::path path = lfd::player::framePatternName(run.options.eiaOut, frame);
+    const lfd::DisplayProfile& panel = run.session.displayProfile();
+    run.session.completeLastFrame();
+    lfd::metrics::writeImage(path, run.session.readOutputs(frame).eia.data(), panel.panelWidth, panel.panelHeight, 4);
+    run.written.push_back(path);
+}
+
+// Renders F frames (from frame `first`: --quilt-frame), reads the outputs back right after
+// frame K (K after the timed frames: rendered once more, not counted in the stats); a
+// sequence keeps every quilt, a frame pattern every EIA. Returns the timed frames' stages.
 StageMap renderFrames(HeadlessRun& run, lfd::player::GpuTimer& timer, const PackInput& input)
 {
-    const PlayOptions& options = run.options;
-    for (uint32_t k = 0; k < options.frames; ++k) {
-        run.session.renderFrame(double(k) / options.fps, run.quality);
-        run.glErrors.check("frame " + std::to_string(k));
+    for (uint32_t k = 0; k < run.frames; ++k) {
+        const uint32_t frame = run.first + k;
+        run.session.renderFrame(run.session.frameTime(frame), run.quality);
+        run.glErrors.check("frame " + std::to_string(frame));
         if (k == 0 && run.firstFrameMs < 0.0 && input.present()) {
             glFinish();
             run.firstFrameMs = msSince(input.start);
         }
         if (k == run.outputFrame && run.wantOutputs)
-            readOutputs(run, k);
+            readOutputs(run, frame);
+        if (run.eiaSequence)
+            writeEiaFrame(run, frame);
         if (run.sequence.active) {
             Sequence& sequence = run.sequence;
             run.session.completeLastFrame();
             sequence.profile = run.session.profile();
-            sequence.frames.push_back(writeQuiltFrame(sequence.base, sequence.profile, run.session.readOutputs(k), k));
+            sequence.frames.push_back(
+                writeQuiltFrame(run.options, sequence.base, sequence.profile, run.session.readOutputs(frame), k));
             if (sequence.tempFolder.empty())
                 run.written.push_back(sequence.frames.back());
         }
@@ -478,12 +516,34 @@ StageMap renderFrames(HeadlessRun& run, lfd::player::GpuTimer& timer, const Pack
     timer.finish();
     run.session.completeLastFrame(); // the renderer's stats of the last frame
     StageMap stages = timer.stages();
-    if (run.outputFrame >= options.frames && run.wantOutputs) {
-        run.session.renderFrame(double(run.outputFrame) / options.fps, run.quality);
-        readOutputs(run, run.outputFrame);
+    if (run.outputFrame >= run.frames && run.wantOutputs) {
+        run.session.renderFrame(run.session.frameTime(run.first + run.outputFrame), run.quality);
+        readOutputs(run, run.first + run.outputFrame);
         timer.finish();
     }
     return stages;
+}
+
+// Which frames a headless run renders: --frames N from 0; a quilt video without --frames
+// all of its frames, with --quilt-frame K frame K only. Throws UsageError for a frame the
+// video does not have.
+void planFrames(HeadlessRun& run)
+{
+    const PlayOptions& options = run.options;
+    const uint32_t videoFrames = run.session.quiltInput() ? run.session.quilts().videoFrameCount() : 0;
+    run.frames = options.frames;
+    if (options.quiltFrame) {
+        if (videoFrames == 0)
+            throw UsageError("--quilt-frame: " + options.quiltIn.string() + " is not a quilt video");
+        if (*options.quiltFrame >= videoFrames)
+            throw UsageError("--quilt-frame: " + options.quiltIn.string() + " has " + std::to_string(videoFrames) +
+                             " frames (0.." + std::to_string(videoFrames - 1) + "), got " +
+                             std::to_string(*options.quiltFrame));
+        run.first = *options.quiltFrame;
+    } else if (videoFrames > 0 && !options.framesGiven) {
+        run.frames = videoFrames;
+    }
+    run.outputFrame = options.outputFrame.value_or(run.frames - 1);
 }
 
 void printSummary(const HeadlessRun& run, const StageMap& stages)
@@ -496,7 +556,10 @@ void printSummary(const HeadlessRun& run, const StageMap& stages)
     const lfd::DisplayProfile& shown = run.session.profile();
     std::printf("lfd-play: %s%s, %u views of %ux%u, %u frame(s), mean GPU time: %s\n",
                 run.session.rendererName().c_str(), run.quality == lfd::player::FrameQuality::Preview ? " (preview)" : "",
-                shown.viewCount, shown.viewWidth, shown.viewHeight, run.options.frames, summary.c_str());
+                shown.viewCount, shown.viewWidth, shown.viewHeight, run.frames, summary.c_str());
+    if (run.written.empty() && !run.sequence.active)
+        std::printf("lfd-play: no output written (timing only; --out, --quilt, --quilt-video, --views-out, "
+                    "--viewer-out and --stats write files)\n");
 }
 
 lfd::player::PlayerSession openSession(const PlayOptions& options, const lfd::DisplayProfile& profile,
@@ -533,9 +596,13 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
                     planSequence(options), options};
     measureLoading(run, input, packName);
     GpuTimer& timer = run.quality == FrameQuality::Preview ? session.previewTimer() : session.timer();
-    run.outputFrame = options.outputFrame.value_or(options.frames - 1);
+    planFrames(run);
+    run.sequence.fps = 1.0 / session.frameTime(1);
     if (run.sequence.active)
         run.single.quiltOut.clear();
+    run.eiaSequence = !options.eiaOut.empty() && isFramePattern(options.eiaOut);
+    if (run.eiaSequence)
+        run.single.eiaOut.clear();
     run.wantOutputs = !run.single.eiaOut.empty() || !run.single.quiltOut.empty() || !run.single.viewsOut.empty() ||
                       !run.single.viewerOut.empty();
     run.outputProfile = profile;
@@ -549,6 +616,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
             info.streaming = input.mapped != nullptr;
             info.timeToFirstFrameMs = run.firstFrameMs;
             info.timeToResidentMs = run.residentMs;
+            info.frames = run.frames; // a quilt video's own frame count when --frames was not given
             writeStats(options.statsOut, info, stages);
             run.written.push_back(options.statsOut);
         }
@@ -576,7 +644,7 @@ int main(int argc, char** argv)
     addOutputFlags(app, options);
     addWindowFlags(app, options, flags);
     addCameraFlags(app, options, flags);
-    addQuiltInputFlags(app, options);
+    addQuiltInputFlags(app, options, flags);
 
     if (const auto exit = lfd::cli::parseCommandLine(app, argc, argv, "lfd-play"))
         return *exit;
@@ -600,7 +668,7 @@ int main(int argc, char** argv)
         std::vector<fs::path> quilts;
         if (!options.quiltIn.empty()) {
             try {
-                quilts = lfd::player::listQuiltFiles(options.quiltIn);
+                quilts = lfd::player::listQuiltFiles(options.quiltIn, options.quiltLayout.has_value());
             } catch (const lfd::player::QuiltInputError& e) {
                 throw UsageError(e.what()); // like a missing pack: the user names another file
             }

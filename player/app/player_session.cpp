@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <regex>
 #include <stdexcept>
 
 namespace lfd::player {
@@ -35,11 +36,28 @@ GpuMemoryPlan planSceneMemory(const PlayOptions& options, const Scene& scene, co
     return plan;
 }
 
+void warnIfBakedForAnotherDisplay(const Scene& scene, const DisplayProfile& profile, const std::string& packName)
+{
+    const BakeSettings& baked = scene.settings;
+    // Packs written without a bake (tests, old tools) record no display: nothing to compare.
+    if (baked.displayProfile.empty() || baked.viewWidth == 0 || baked.viewHeight == 0)
+        return;
+    if (baked.displayProfile == profile.name && baked.viewWidth == profile.viewWidth &&
+        baked.viewHeight == profile.viewHeight)
+        return;
+    std::fprintf(stderr,
+                 "lfd-play: warning: %s: its tessellation bound (%g view pixels) was made for display '%s' with "
+                 "%ux%u views, this is '%s' with %ux%u views: edges may span more view pixels than the bound\n",
+                 packName.c_str(), double(baked.maxEdgePx), baked.displayProfile.c_str(), baked.viewWidth,
+                 baked.viewHeight, profile.name.c_str(), profile.viewWidth, profile.viewHeight);
+}
+
 PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
                              std::string packName)
     : options_(options), displayProfile_(profile), packName_(std::move(packName)),
       plan_(planSceneMemory(options, scene, packName_))
 {
+    warnIfBakedForAnotherDisplay(scene, profile, packName_);
     GpuSceneOptions sceneOptions;
     sceneOptions.plan = &plan_;
     pipeline_ = std::make_unique<FramePipeline>(profile, std::move(scene), options.turntablePeriod, sceneOptions);
@@ -51,6 +69,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     : options_(options), displayProfile_(profile), packName_(std::move(packName)),
       plan_(planSceneMemory(options, pack->scene(), packName_)), mapped_(std::move(pack))
 {
+    warnIfBakedForAnotherDisplay(mapped_->scene(), profile, packName_);
     GpuSceneOptions sceneOptions;
     sceneOptions.plan = &plan_;
     sceneOptions.streamed = true;
@@ -73,7 +92,8 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     : options_(options), displayProfile_(profile),
       packName_(quilts.size() == 1 ? quilts.front().filename().string()
                                    : std::to_string(quilts.size()) + " quilts"),
-      quilts_(std::make_unique<QuiltSlideshow>(profile, std::move(quilts), options.quiltViews, options.slideSeconds)),
+      quilts_(std::make_unique<QuiltSlideshow>(profile, std::move(quilts), options.quiltViews, options.slideSeconds,
+                                               options.quiltLayout)),
       rendererName_("quilt-in")
 {
     reconstruction_ = options.reconstruction;
@@ -84,6 +104,12 @@ const DisplayProfile& PlayerSession::profile() const
     if (quilts_)
         return quilts_->profile();
     return lastQuality_ == FrameQuality::Preview ? pipeline_->previewProfileInUse() : pipeline_->profile();
+}
+
+double PlayerSession::frameTime(uint32_t k) const
+{
+    const double fps = quilts_ && quilts_->videoFps() > 0.0 ? quilts_->videoFps() : options_.fps;
+    return double(k) / fps;
 }
 
 void PlayerSession::switchRenderer(const std::string& name)
@@ -175,10 +201,33 @@ std::vector<std::string> windowRendererCycle(const std::string& current)
     return cycle;
 }
 
-std::filesystem::path writeQuiltFrame(const std::filesystem::path& base, const DisplayProfile& profile,
-                                      const FrameOutputs& outputs, uint32_t frame)
+QuiltLayout quiltLayoutFor(const PlayOptions& options, const DisplayProfile& views)
 {
-    const QuiltLayout layout = chooseQuiltLayout(profile);
+    const QuiltLayout layout = chooseQuiltLayout(views);
+    if (!options.quiltLayout)
+        return layout;
+    const QuiltName& given = *options.quiltLayout;
+    return overrideQuiltLayout(layout, views.viewCount, given.cols, given.rows, given.aspect);
+}
+
+bool isFramePattern(const std::filesystem::path& path)
+{
+    // One %d conversion (with an optional zero-padded width) in the file name, nothing else.
+    static const std::regex pattern(R"(^[^%]*%0?\d{0,2}d[^%]*$)");
+    return std::regex_match(path.filename().string(), pattern);
+}
+
+std::filesystem::path framePatternName(const std::filesystem::path& pattern, uint32_t frame)
+{
+    char name[4096];
+    std::snprintf(name, sizeof(name), pattern.filename().c_str(), int(frame));
+    return pattern.parent_path() / name;
+}
+
+std::filesystem::path writeQuiltFrame(const PlayOptions& options, const std::filesystem::path& base,
+                                      const DisplayProfile& profile, const FrameOutputs& outputs, uint32_t frame)
+{
+    const QuiltLayout layout = quiltLayoutFor(options, profile);
     const std::vector<uint8_t> quilt = assembleQuilt(layout, outputs.views);
     const std::filesystem::path path = quiltSequenceFileName(base, layout, frame);
     metrics::writeImage(path, quilt.data(), layout.width(), layout.height(), 4);
@@ -188,12 +237,12 @@ std::filesystem::path writeQuiltFrame(const std::filesystem::path& base, const D
 void writeFrameOutputs(const PlayOptions& options, const DisplayProfile& profile,
                        const FrameOutputs& outputs, std::vector<std::filesystem::path>& written)
 {
-    if (!options.eiaOut.empty()) {
+    if (!options.eiaOut.empty() && !isFramePattern(options.eiaOut)) {
         metrics::writeImage(options.eiaOut, outputs.eia.data(), profile.panelWidth, profile.panelHeight, 4);
         written.push_back(options.eiaOut);
     }
     if (!options.quiltOut.empty()) {
-        const QuiltLayout layout = chooseQuiltLayout(profile);
+        const QuiltLayout layout = quiltLayoutFor(options, profile);
         const std::vector<uint8_t> quilt = assembleQuilt(layout, outputs.views);
         const std::filesystem::path path = quiltFileName(options.quiltOut, layout);
         metrics::writeImage(path, quilt.data(), layout.width(), layout.height(), 4);

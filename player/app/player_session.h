@@ -8,6 +8,7 @@
 
 #include "frame_pipeline.h"
 #include "gpu_timer.h"
+#include "quilt.h"
 #include "quilt_slideshow.h"
 #include "renderer_registry.h"
 #include "texture_streamer.h"
@@ -75,6 +76,10 @@ struct PlayOptions {
     std::filesystem::path quiltIn;
     uint32_t quiltViews = 0;               // 0: every tile is a view
     double slideSeconds = 5.0;             // per quilt of a folder
+    std::optional<uint32_t> quiltFrame;    // --quilt-frame K: a quilt video's frame K only (headless)
+    // --quilt-layout CxR[aASPECT]: the layout quilts are written with, and read with
+    // instead of their names' (which need not carry one then).
+    std::optional<QuiltName> quiltLayout;
 };
 
 class PlayerSession {
@@ -120,6 +125,9 @@ public:
     FrameQuality lastQuality() const { return lastQuality_; }
     const FrameSetup& lastFrame() const { return pipeline_->lastFrame(); }
 
+    // The time of frame k: k / fps, the video's rate for a quilt video, else --fps.
+    double frameTime(uint32_t k) const;
+
     // Animates to `time`, renders the views and the EIA (timed: view stages, "eia",
     // "total" around both) on timer() or, for a preview frame, previewTimer(). Quilt
     // input has no preview (nothing to render).
@@ -159,6 +167,10 @@ private:
 // "lfd-play: warning: ...". Needs a current GL context.
 GpuMemoryPlan planSceneMemory(const PlayOptions& options, const Scene& scene, const std::string& packName);
 
+// One stderr warning when the pack's tessellation bound was made for another display or
+// view size than `profile` (its BakeSettings), so its edges may exceed the bound here.
+void warnIfBakedForAnotherDisplay(const Scene& scene, const DisplayProfile& profile, const std::string& packName);
+
 // The renderers the window's R key cycles through, starting after `current`: the methods
 // (rendererNames()), gstd only when the window was started with it (seconds to minutes per
 // frame), and `current` itself if it is a variant (e.g. lfdpr-paper).
@@ -172,7 +184,16 @@ void writeFrameOutputs(const PlayOptions& options, const DisplayProfile& profile
                        const FrameOutputs& outputs, std::vector<std::filesystem::path>& written);
 // One frame's quilt of a sequence (--quilt with --frames N, or --quilt-video) as
 // `base`'s numbered name; returns the path written.
-std::filesystem::path writeQuiltFrame(const std::filesystem::path& base, const DisplayProfile& profile,
-                                      const FrameOutputs& outputs, uint32_t frame);
+std::filesystem::path writeQuiltFrame(const PlayOptions& options, const std::filesystem::path& base,
+                                      const DisplayProfile& profile, const FrameOutputs& outputs, uint32_t frame);
+
+// The quilt layout written and shown for `views`: the profile's (chooseQuiltLayout), or
+// --quilt-layout's tiles and aspect. Throws UsageError-worthy std::invalid_argument when
+// the views do not fit it.
+QuiltLayout quiltLayoutFor(const PlayOptions& options, const DisplayProfile& views);
+
+// --out with a printf frame number ("eia_%04d.png"): one EIA per rendered frame.
+bool isFramePattern(const std::filesystem::path& path);
+std::filesystem::path framePatternName(const std::filesystem::path& pattern, uint32_t frame);
 
 } // namespace lfd::player

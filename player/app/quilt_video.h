@@ -13,6 +13,8 @@
 
 namespace lfd::player {
 
+// One line naming the file and the problem: writing a quilt video, or reading one
+// (quilt_video_reader.h).
 class VideoError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;

@@ -38,6 +38,7 @@ struct Input {
     bool nextRenderer = false, nextReconstruction = false, nextOutput = false;
     bool paused = false;
     int viewerStep = 0;
+    int frameSteps = 0; // '.' while paused: frames to step forward
     // Camera input gathered since the last frame (camera_controls.h).
     glm::dvec2 orbitPixels{0.0}, panPixels{0.0};
     double zoomSteps = 0.0;
@@ -84,6 +85,7 @@ void onKey(GLFWwindow* window, int key, int, int action, int)
     case GLFW_KEY_C: input.nextReconstruction |= press; break;
     case GLFW_KEY_O: input.nextOutput |= press; break;
     case GLFW_KEY_SPACE: if (press) input.paused = !input.paused; break;
+    case GLFW_KEY_PERIOD: input.frameSteps += input.paused ? 1 : 0; break;
     case GLFW_KEY_LEFT: --input.viewerStep; break;
     case GLFW_KEY_RIGHT: ++input.viewerStep; break;
     default: break;
@@ -375,6 +377,7 @@ struct LoopState {
     // Animation clock: wall time minus paused time, or k / fps for a fixed frame count.
     double startWall = 0.0, animationTime = 0.0, lastWall = 0.0, lastTitle = 0.0, lastPrint = -1e300;
     uint32_t frame = 0, fullFrames = 0, previewFrames = 0;
+    int frameSteps = 0; // '.' presses not yet applied
     int status = 0;
 };
 
@@ -438,8 +441,9 @@ void applyKeyInput(Input& input, LoopState& state, PlayerSession& session, const
     if (input.nextOutput)
         state.shown = Shown((int(state.shown) + 1) % 4);
     state.viewerPos = std::clamp(state.viewerPos + input.viewerStep, 0.5, double(display.viewCount) - 0.5);
+    state.frameSteps += input.frameSteps;
     input.nextRenderer = input.nextReconstruction = input.nextOutput = false;
-    input.viewerStep = 0;
+    input.viewerStep = input.frameSteps = 0;
 }
 
 // Step 1b: camera input into the controls, and the controls into the session.
@@ -479,9 +483,12 @@ void renderStep(LoopState& state, PlayerSession& session, const PlayOptions& opt
                 bool paused, double wall, gl::GlErrorWatch& glErrors)
 {
     if (options.framesGiven)
-        state.animationTime = double(state.frame) / options.fps;
+        state.animationTime = session.frameTime(state.frame);
     else if (!paused)
         state.animationTime += wall - state.lastWall;
+    // A step lands on the next frame's start (a quilt video's next frame, a scene's 1 / fps on).
+    for (; state.frameSteps > 0; --state.frameSteps)
+        state.animationTime = session.frameTime(uint32_t(std::floor(state.animationTime / session.frameTime(1) + 1e-6)) + 1);
     state.lastWall = wall;
     const bool previewNow =
         state.preview == PreviewMode::Always ||
@@ -493,10 +500,10 @@ void renderStep(LoopState& state, PlayerSession& session, const PlayOptions& opt
 }
 
 // All views tiled into a quilt, scaled to fit in the window.
-void showQuilt(const DisplayProfile& views, const ViewTargets& targets, BlitSource& quilt, int windowW, int windowH)
+void showQuilt(const QuiltLayout& layout, const DisplayProfile& views, const ViewTargets& targets, BlitSource& quilt,
+               int windowW, int windowH)
 {
     // GL rows run bottom-up, so view 0 in the bottom-left tile is tile (0, 0).
-    const QuiltLayout layout = chooseQuiltLayout(views);
     quilt.ensure(layout.width(), layout.height());
     for (uint32_t v = 0; v < views.viewCount; ++v)
         glCopyImageSubData(targets.colorArray(), GL_TEXTURE_2D_ARRAY, 0, 0, 0, GLint(v), quilt.texture, GL_TEXTURE_2D,
@@ -549,7 +556,7 @@ void showOutput(const LoopState& state, PlayerSession& session, const WindowSetu
         blitToWindow(show.layerFbo, targets.width(), targets.height(), windowW, windowH);
         break;
     case Shown::Quilt:
-        showQuilt(views, targets, show.quilt, windowW, windowH);
+        showQuilt(quiltLayoutFor(session.options(), views), views, targets, show.quilt, windowW, windowH);
         break;
     case Shown::Viewer:
         showViewer(session, state.viewerPos, show.viewer, windowW, windowH);
@@ -589,19 +596,23 @@ std::string titleText(const LoopState& state, PlayerSession& session, bool pause
     title += session.lastQuality() == FrameQuality::Preview ? " - preview" : " - full";
     if (session.quiltInput())
         title += " - " + session.quilts().currentFile().filename().string();
+    if (session.quiltInput() && session.quilts().videoFrameCount() > 0)
+        title += " frame " + std::to_string(session.quilts().videoFrame()) + " of " +
+                 std::to_string(session.quilts().videoFrameCount());
     return title;
 }
 
-// "<pacing> | full: <stages> | preview: <stages>" since the last readout.
+// "<pacing> | full: <stages> | preview: <stages>" since the last readout; the parts
+// not measured yet are left out (empty before the first swap and GPU timing).
 std::string readoutText(Readouts& readouts, PlayerSession& session)
 {
     std::string readout = readouts.pacing.update();
-    const std::string full = readouts.full.update(session.timer());
-    const std::string previewText = readouts.preview.update(session.previewTimer());
-    if (!full.empty())
-        readout += " | full: " + full;
-    if (!previewText.empty())
-        readout += " | preview: " + previewText;
+    auto add = [&](const std::string& label, const std::string& part) {
+        if (!part.empty())
+            readout += (readout.empty() ? "" : " | ") + label + part;
+    };
+    add("full: ", readouts.full.update(session.timer()));
+    add("preview: ", readouts.preview.update(session.previewTimer()));
     return readout;
 }
 
@@ -614,11 +625,13 @@ void showReadout(LoopState& state, Readouts& readouts, PlayerSession& session, c
     const std::string readout = readoutText(readouts, session);
     if (!session.quiltInput())
         title += " | " + controlsText(controls.state());
-    title += " | " + readout;
+    if (!readout.empty())
+        title += " | " + readout;
     glfwSetWindowTitle(setup.context->window(), title.c_str());
     if (companion)
         glfwSetWindowTitle(companion, readout.c_str());
-    if (setup.fullscreen && (wall - state.lastPrint >= 2.0 || last)) {
+    // note: nothing is printed before the first measurement (it was an empty "lfd-play: " line).
+    if (setup.fullscreen && !readout.empty() && (wall - state.lastPrint >= 2.0 || last)) {
         state.lastPrint = wall;
         std::printf("lfd-play: %s\n", readout.c_str());
         std::fflush(stdout);

@@ -2,6 +2,7 @@
 #include "quilt.h"
 
 #include "lfd/display_profile.h"
+#include "lfd/looking_glass_devices.h"
 #include "view_targets.h"
 
 #include <cmath>
@@ -46,8 +47,28 @@ QuiltLayout chooseQuiltLayout(const DisplayProfile& profile) {
         throw std::invalid_argument("quilt layout: profile has no panel height");
     QuiltLayout layout = chooseQuiltLayout(profile.viewCount, profile.viewWidth, profile.viewHeight,
                                            double(profile.panelWidth) / double(profile.panelHeight));
+    const auto standard = standardQuiltFor(profile.panelWidth, profile.panelHeight, profile.screenWidthMm);
+    // The device's quilt only when it holds these views unscaled: other view counts or
+    // sizes (--views, --view-size) would leave tiles empty or cut.
+    if (standard && standard->tileWidth() == profile.viewWidth && standard->tileHeight() == profile.viewHeight &&
+        standard->cols * standard->rows >= profile.viewCount)
+        layout = QuiltLayout{standard->cols, standard->rows, profile.viewWidth, profile.viewHeight,
+                             standard->width, standard->height};
     if (profile.screenWidthMm > 0.0 && profile.screenHeightMm > 0.0)
         layout.displayAspect = profile.screenWidthMm / profile.screenHeightMm;
+    return layout;
+}
+
+QuiltLayout overrideQuiltLayout(QuiltLayout layout, uint32_t viewCount, uint32_t cols, uint32_t rows, double aspect)
+{
+    if (cols == 0 || rows == 0 || uint64_t(cols) * rows < viewCount)
+        throw std::invalid_argument("quilt layout " + std::to_string(cols) + "x" + std::to_string(rows) +
+                                    " has fewer tiles than the " + std::to_string(viewCount) + " views");
+    layout.cols = cols;
+    layout.rows = rows;
+    layout.totalWidth = layout.totalHeight = 0;
+    if (aspect > 0.0)
+        layout.displayAspect = aspect;
     return layout;
 }
 
@@ -73,7 +94,7 @@ std::vector<uint8_t> assembleQuilt(const QuiltLayout& layout,
         const uint32_t tileX = uint32_t(v % layout.cols);
         const uint32_t tileYFromBottom = uint32_t(v / layout.cols);
         const uint32_t x0 = tileX * layout.tileWidth;
-        const uint32_t y0 = (layout.rows - 1 - tileYFromBottom) * layout.tileHeight;
+        const uint32_t y0 = H - (tileYFromBottom + 1) * layout.tileHeight;
         for (uint32_t y = 0; y < layout.tileHeight; ++y) {
             const uint8_t* src = &views[v][size_t(y) * layout.tileWidth * 4];
             uint8_t* dst = &quilt[(size_t(y0 + y) * W + x0) * 4];

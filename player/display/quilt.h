@@ -8,6 +8,7 @@
 // the prototype's 480x360 views cover a 16:9 screen, so its quilts are `_qs8x6a1.78`.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -24,8 +25,11 @@ class ViewTargets;
 struct QuiltLayout {
     uint32_t cols = 0, rows = 0;
     uint32_t tileWidth = 0, tileHeight = 0; // = the view size
-    uint32_t width() const { return cols * tileWidth; }
-    uint32_t height() const { return rows * tileHeight; }
+    // A vendor's standard quilt may be a few pixels larger than its tiles (8192 for 7 tiles
+    // of 1170): the tiles sit from the bottom-left corner, the rest stays black.
+    uint32_t totalWidth = 0, totalHeight = 0;
+    uint32_t width() const { return std::max(cols * tileWidth, totalWidth); }
+    uint32_t height() const { return std::max(rows * tileHeight, totalHeight); }
     double aspect() const { return double(tileWidth) / double(tileHeight); } // tile pixels
     double displayAspect = 0.0; // aspect the views are shown at; 0: the tile's
     double nameAspect() const { return displayAspect > 0.0 ? displayAspect : aspect(); }
@@ -39,9 +43,15 @@ struct QuiltLayout {
 // 3840x2160, one sample per panel pixel. Throws std::invalid_argument on zero sizes.
 QuiltLayout chooseQuiltLayout(uint32_t viewCount, uint32_t viewWidth, uint32_t viewHeight,
                               double targetAspect);
-// Target aspect = panel width / panel height of the profile; views from the profile;
-// displayAspect = the screen's width / height in mm.
+// The profile's quilt: its device's standard quilt (looking_glass_devices.h, e.g. 8x6 at
+// 3360x3360 on a Looking Glass Portrait) when the profile's views are that quilt's tiles,
+// else the rule above with target aspect = panel width / panel height; displayAspect =
+// the screen's width / height in mm.
 QuiltLayout chooseQuiltLayout(const DisplayProfile& profile);
+
+// --quilt-layout CxR[aASPECT]: `layout` with cols x rows tiles (and, when aspect > 0, that
+// name aspect). Throws std::invalid_argument when the views do not fit the tiles.
+QuiltLayout overrideQuiltLayout(QuiltLayout layout, uint32_t viewCount, uint32_t cols, uint32_t rows, double aspect);
 
 // Tiles RGBA8 views (image order, row 0 = top, each tileWidth x tileHeight) into an RGBA8
 // quilt in image order. Throws std::invalid_argument when the views do not fit the layout.

@@ -20,6 +20,23 @@ namespace fs = std::filesystem;
 // stretched: the names carry two decimals (1.78 for 16:9 is 0.1% off).
 constexpr double kAspectTolerance = 0.01;
 
+// "{cols}x{rows}" and an optional "a{aspect}", not followed by more of the same (so
+// "_qs8x6a.png" is refused rather than read without its broken aspect).
+constexpr const char* kLayoutPattern = R"((\d{1,4})x(\d{1,4})(?:a(\d+(?:\.\d+)?))?(?!a|\d|\.\d))";
+
+// A layout match of kLayoutPattern: cols, rows >= 1, an aspect > 0 when given.
+QuiltName layoutOf(const std::smatch& m, const std::string& what)
+{
+    QuiltName q;
+    q.cols = uint32_t(std::stoul(m[1].str()));
+    q.rows = uint32_t(std::stoul(m[2].str()));
+    const bool hasAspect = m[3].matched;
+    q.aspect = hasAspect ? std::stod(m[3].str()) : 0.0;
+    if (q.cols == 0 || q.rows == 0 || (hasAspect && (!(q.aspect > 0.0) || !std::isfinite(q.aspect))))
+        throw QuiltInputError(what + " needs cols, rows >= 1 and an aspect > 0");
+    return q;
+}
+
 bool isImageFile(const fs::path& path)
 {
     std::string ext = path.extension().string();
@@ -69,6 +86,14 @@ std::vector<uint8_t> cutTile(const metrics::Image& q, const QuiltName& name, uin
     const int y0 = int(std::ceil(double(rowFromTop) * q.height / name.rows - 0.5));
     const int y1 = std::max(y0, int(std::floor(double(rowFromTop + 1) * q.height / name.rows - 0.5)));
     std::vector<uint8_t> view(size_t(tileW) * tileH * 4);
+    // The usual case, a quilt of whole tiles: bilinear sampling at pixel centres is a copy,
+    // done row by row (a Portrait quilt video's 11M pixels per frame).
+    if (q.width == name.cols * tileW && q.height == name.rows * tileH) {
+        for (uint32_t y = 0; y < tileH; ++y)
+            std::copy_n(&q.pixels[(size_t(rowFromTop * tileH + y) * q.width + size_t(col) * tileW) * 4],
+                        size_t(tileW) * 4, &view[size_t(y) * tileW * 4]);
+        return view;
+    }
     for (uint32_t y = 0; y < tileH; ++y)
         for (uint32_t x = 0; x < tileW; ++x) {
             const double qx = (double(col) * tileW + x + 0.5) * sx - 0.5;
@@ -95,36 +120,49 @@ std::vector<uint8_t> padView(const std::vector<uint8_t>& view, uint32_t w, uint3
 
 QuiltName parseQuiltName(const fs::path& file)
 {
-    static const std::regex suffix(R"(_qs(\d{1,4})x(\d{1,4})a(\d+(?:\.\d+)?))");
+    static const std::regex suffix("_qs" + std::string(kLayoutPattern));
     const std::string name = file.filename().string();
-    QuiltName q;
-    bool found = false;
-    for (auto it = std::sregex_iterator(name.begin(), name.end(), suffix); it != std::sregex_iterator(); ++it) {
-        q.cols = uint32_t(std::stoul((*it)[1].str()));
-        q.rows = uint32_t(std::stoul((*it)[2].str()));
-        q.aspect = std::stod((*it)[3].str());
-        found = true;
-    }
-    if (!found)
+    std::optional<QuiltName> q;
+    for (auto it = std::sregex_iterator(name.begin(), name.end(), suffix); it != std::sregex_iterator(); ++it)
+        q = layoutOf(*it, file.string() + ": quilt layout in the name");
+    if (!q)
         throw QuiltInputError(file.string() + ": no quilt layout in the name (expected _qs{cols}x{rows}a{aspect}, "
                                               "e.g. scene_qs8x6a0.75.png)");
-    if (q.cols == 0 || q.rows == 0 || !(q.aspect > 0.0) || !std::isfinite(q.aspect))
-        throw QuiltInputError(file.string() + ": quilt layout in the name needs cols, rows >= 1 and an aspect > 0");
-    return q;
+    return *q;
 }
 
-std::vector<fs::path> listQuiltFiles(const fs::path& fileOrDirectory)
+QuiltName parseQuiltLayout(const std::string& text, const std::string& flag)
+{
+    static const std::regex whole(kLayoutPattern);
+    std::smatch m;
+    if (!std::regex_match(text, m, whole))
+        throw QuiltInputError(flag + ": expected CxR or CxRaASPECT (e.g. 8x6a0.75), got '" + text + "'");
+    return layoutOf(m, flag);
+}
+
+QuiltName quiltNameOf(const fs::path& file, const std::optional<QuiltName>& given)
+{
+    if (!given)
+        return parseQuiltName(file);
+    QuiltName name = *given;
+    if (name.aspect == 0.0 && hasQuiltName(file))
+        name.aspect = parseQuiltName(file).aspect;
+    return name;
+}
+
+std::vector<fs::path> listQuiltFiles(const fs::path& fileOrDirectory, bool layoutGiven)
 {
     std::error_code ec;
     if (fs::is_regular_file(fileOrDirectory, ec)) {
-        parseQuiltName(fileOrDirectory);
+        if (!layoutGiven)
+            parseQuiltName(fileOrDirectory);
         return {fileOrDirectory};
     }
     if (!fs::is_directory(fileOrDirectory, ec))
         throw QuiltInputError(fileOrDirectory.string() + ": no such quilt file or directory");
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(fileOrDirectory, ec))
-        if (entry.is_regular_file() && isImageFile(entry.path()) && hasQuiltName(entry.path()))
+        if (entry.is_regular_file() && isImageFile(entry.path()) && (layoutGiven || hasQuiltName(entry.path())))
             files.push_back(entry.path());
     if (files.empty())
         throw QuiltInputError(fileOrDirectory.string() + ": directory holds no quilt images (names with "
@@ -148,13 +186,15 @@ QuiltViews extractQuiltViews(const metrics::Image& quilt, const QuiltName& name,
                               " image is too small for " + std::to_string(name.cols) + "x" +
                               std::to_string(name.rows) + " tiles");
 
-    // Letter- or pillarbox to the screen's aspect when the views were made for another.
+    // Letter- or pillarbox to the screen's aspect when the views were made for another; a
+    // name without an aspect is taken as made for this screen (as Looking Glass players do).
+    const double aspect = name.aspect > 0.0 ? name.aspect : screenAspect > 0.0 ? screenAspect : double(tileW) / tileH;
     uint32_t outW = tileW, outH = tileH;
-    if (screenAspect > 0.0 && std::abs(name.aspect / screenAspect - 1.0) > kAspectTolerance) {
-        if (name.aspect < screenAspect)
-            outW = uint32_t(std::lround(tileW * screenAspect / name.aspect));
+    if (screenAspect > 0.0 && std::abs(aspect / screenAspect - 1.0) > kAspectTolerance) {
+        if (aspect < screenAspect)
+            outW = uint32_t(std::lround(tileW * screenAspect / aspect));
         else
-            outH = uint32_t(std::lround(tileH * name.aspect / screenAspect));
+            outH = uint32_t(std::lround(tileH * aspect / screenAspect));
     }
 
     QuiltViews result;
@@ -171,9 +211,8 @@ QuiltViews extractQuiltViews(const metrics::Image& quilt, const QuiltName& name,
     return result;
 }
 
-QuiltViews loadQuiltViews(const fs::path& file, uint32_t viewCount, double screenAspect)
+QuiltViews loadQuiltViews(const fs::path& file, const QuiltName& name, uint32_t viewCount, double screenAspect)
 {
-    const QuiltName name = parseQuiltName(file);
     try {
         return extractQuiltViews(metrics::readImage(file, 4), name, viewCount, screenAspect);
     } catch (const QuiltInputError& e) {

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,18 +27,27 @@ public:
 
 struct QuiltName {
     uint32_t cols = 0, rows = 0;
-    double aspect = 0.0; // the aspect each view is shown at (width / height)
+    double aspect = 0.0; // the aspect each view is shown at (width / height); 0: not given
 };
 
-// The last `_qs{cols}x{rows}a{aspect}` in the file name, e.g. "car_qs8x6a0.75.png" or
-// "clip_0003_qs5x9a0.75.jpg". Throws QuiltInputError for a name without one, zero
-// columns or rows, or an aspect that is not a positive number.
+// The last `_qs{cols}x{rows}[a{aspect}]` in the file name, e.g. "car_qs8x6a0.75.png",
+// "clip_0003_qs5x9a0.75.jpg" or "old_qs4x3.png" (no aspect: the views are taken as made
+// for the screen they are shown on). Throws QuiltInputError for a name without one, zero columns or rows, or an
+// aspect that is not a positive number.
 QuiltName parseQuiltName(const std::filesystem::path& file);
+// The same layout as a flag value, "CxR" or "CxRaASPECT" (--quilt-layout). Throws
+// QuiltInputError naming `flag`.
+QuiltName parseQuiltLayout(const std::string& text, const std::string& flag);
+// The layout a file is read with: `given` (--quilt-layout) when set - the name's aspect
+// filling in an aspect it lacks, and the name need not carry a layout - else the name's.
+QuiltName quiltNameOf(const std::filesystem::path& file, const std::optional<QuiltName>& given);
 
-// A file: itself (its name must parse). A directory: its image files (.png, .jpg, .jpeg,
-// .webp, .bmp, .tif, .tiff, .exr) whose names parse, sorted by name - a slideshow. Throws
-// QuiltInputError when the path is missing or the directory holds no quilt.
-std::vector<std::filesystem::path> listQuiltFiles(const std::filesystem::path& fileOrDirectory);
+// A file: itself (its name must parse unless a layout is given). A directory: its image
+// files (.png, .jpg, .jpeg, .webp, .bmp, .tif, .tiff, .exr) whose names parse (all of them
+// with a given layout), sorted by name - a slideshow. Throws QuiltInputError when the
+// path is missing or the directory holds no quilt.
+std::vector<std::filesystem::path> listQuiltFiles(const std::filesystem::path& fileOrDirectory,
+                                                  bool layoutGiven = false);
 
 struct QuiltViews {
     uint32_t width = 0, height = 0;          // per view
@@ -55,7 +65,8 @@ struct QuiltViews {
 QuiltViews extractQuiltViews(const metrics::Image& quilt, const QuiltName& name, uint32_t viewCount, double screenAspect);
 
 // Reads a quilt file (as RGBA8) and extracts its views; errors name the file.
-QuiltViews loadQuiltViews(const std::filesystem::path& file, uint32_t viewCount, double screenAspect);
+QuiltViews loadQuiltViews(const std::filesystem::path& file, const QuiltName& name, uint32_t viewCount,
+                          double screenAspect);
 
 // Copies views (same count and size as the targets) into the view array (GL).
 void uploadViews(ViewTargets& targets, const QuiltViews& views);

@@ -2,6 +2,7 @@
 // project JSON format, Looking Glass visual.json import against LG's own shader formula,
 // validation and file errors.
 #include "lfd/display_profile.h"
+#include "lfd/looking_glass_devices.h"
 
 #include <gtest/gtest.h>
 
@@ -544,3 +545,23 @@ TEST(DisplayProfile, PhaseStaysInUnitInterval) {
 }
 
 } // namespace
+
+// A known Looking Glass device gets the views of its standard quilt (looking_glass_devices.h):
+// the Go's 11x6 tiles of a 4092x4092 quilt are 66 views of 372x682; a panel no device has
+// keeps the default 48 views 560 pixels high.
+TEST(DisplayProfile, LookingGlassDevicesGetTheirStandardQuiltViews) {
+    const std::string go = R"({"pitch": 80.0, "slope": -6.0, "center": 0.1, "DPI": 491,
+        "screenW": 1440, "screenH": 2560})";
+    const DisplayProfile p = parseDisplayProfile(go, "go.json");
+    EXPECT_EQ(p.viewCount, 66u);
+    EXPECT_EQ(p.viewWidth, 372u);
+    EXPECT_EQ(p.viewHeight, 682u);
+    const auto portrait = standardQuiltFor(1536, 2048, 120.41);
+    ASSERT_TRUE(portrait.has_value());
+    EXPECT_EQ(portrait->cols * 100 + portrait->rows, 806u);
+    EXPECT_EQ(portrait->width, 3360u);
+    // Equal pixels, other size: the 32" and the 65" are told apart by their width.
+    EXPECT_EQ(standardQuiltFor(7680, 4320, 697.0)->rows, 7u);
+    EXPECT_EQ(standardQuiltFor(7680, 4320, 1430.0)->rows, 9u);
+    EXPECT_FALSE(standardQuiltFor(1536, 2048, 200.0).has_value());
+}

@@ -226,9 +226,10 @@ TEST(Framing, MinViewPixelWorldHandWorked) {
     // One mm of edge at depth d below the cameras, offset s from a camera's axis, covers at
     // most D sqrt(d^2 + s^2) / (d^2 p) pixels (framing.cpp); over the fitted ball the
     // largest rate is on its boundary, d = D - rho cos(t), s = e_max + rho sin(t).
+    // A framing of 50 mm per unit set by hand: the ball of radius 50 mm (on this square
+    // screen fitSceneToDisplay fits 44.72 mm, the outer views' frustum being the limit).
     DisplayProfile p = squareProfile();
-    const Framing f = fitSceneToDisplay(p, sphereBounds({0, 0, 0}, 1)); // 50 mm per unit
-    ASSERT_DOUBLE_EQ(f.mmPerUnit, 50.0);
+    const Framing f{glm::dvec3(0.0), 1.0, 50.0, 1.0};
 
     // Horizontal (1 mm view pixels, D = 200, rho = 50, e_max = 200 tan(cone/2) = 50):
     //   g(t) = sqrt((200 - 50 cos t)^2 + (50 + 50 sin t)^2) / (200 - 50 cos t)^2
@@ -249,7 +250,7 @@ TEST(Framing, MinViewPixelWorldHandWorked) {
     p.viewHeight = 400;
     EXPECT_NEAR(minViewPixelWorld(p, f), 0.00375, 0.00375 * 1e-5);
     // Twice the radius halves mmPerUnit: the same 0.1875 mm is twice as many scene units.
-    const Framing f2 = fitSceneToDisplay(p, sphereBounds({0, 0, 0}, 2));
+    const Framing f2{glm::dvec3(0.0), 2.0, 25.0, 1.0};
     EXPECT_NEAR(minViewPixelWorld(p, f2), 0.0075, 0.0075 * 1e-5);
 }
 
@@ -375,3 +376,46 @@ TEST(Framing, PlainFootprintBoundIsNotConservativeForObliqueEdges) {
 }
 
 } // namespace
+
+namespace {
+
+// Largest |NDC x| of a 10 x 1 x 1 box (its bounding sphere fitted by `framing`) over every
+// view of the cone and every turntable angle: above 1, the box is cut off at a side.
+double widestNdcX(const DisplayProfile& p, const Framing& framing) {
+    double widest = 0.0;
+    for (int degree = 0; degree < 360; ++degree)
+        for (uint32_t v = 0; v < p.viewCount; ++v) {
+            const ViewCamera camera = makeViewCamera(p, framing, v, p.viewCount);
+            const glm::dmat4 m = displayFromScene(framing, degree * kPi / 180.0);
+            for (int corner = 0; corner < 8; ++corner) {
+                const glm::dvec3 s((corner & 1) ? 5.0 : -5.0, (corner & 2) ? 0.5 : -0.5, (corner & 4) ? 0.5 : -0.5);
+                widest = std::max(widest, std::abs(ndcOf(camera, glm::dvec3(m * glm::dvec4(s, 1.0))).x));
+            }
+        }
+    return widest;
+}
+
+} // namespace
+
+// A wide scene on a portrait panel (the Looking Glass Portrait: 120.4 x 160.6 mm, 40 degree
+// cone at 3 screen heights) stays inside every view; fitting the sphere to the screen width
+// alone, as the framing did before, cut it off at both sides of the outer views.
+TEST(Framing, WideSceneOnAPortraitPanelFitsEveryView) {
+    DisplayProfile p = prototypeDisplayProfile();
+    p.screenWidthMm = 120.4148;
+    p.screenHeightMm = 160.5531;
+    p.viewingDistanceMm = 3.0 * p.screenHeightMm;
+    p.viewConeDeg = 40.0;
+    const SceneBounds bounds = sphereBounds({0, 0, 0}, float(std::sqrt(25.0 + 0.25 + 0.25)));
+    const Framing f = fitSceneToDisplay(p, bounds);
+    // R_fit = D (W/2) / sqrt(D^2 + (W/2 + D tan 20)^2) = 54.09 mm, below W / 2 = 60.21 mm.
+    EXPECT_NEAR(f.sceneRadius * f.mmPerUnit, 54.09, 0.005);
+    const double widest = widestNdcX(p, f);
+    std::printf("[ numbers  ] 10x1x1 box on the Portrait: widest |NDC x| %.4f (fitted to the width alone: %.4f)\n",
+                widest, widestNdcX(p, Framing{f.sceneCenter, f.sceneRadius, 0.5 * p.screenWidthMm / f.sceneRadius, 1.0}));
+    EXPECT_LE(widest, 1.0);
+    EXPECT_GT(widestNdcX(p, Framing{f.sceneCenter, f.sceneRadius, 0.5 * p.screenWidthMm / f.sceneRadius, 1.0}), 1.05);
+    // Landscape panels keep their framing: the prototype's sphere is half the screen height.
+    const Framing proto = fitSceneToDisplay(prototypeDisplayProfile(), bounds);
+    EXPECT_NEAR(proto.sceneRadius * proto.mmPerUnit, 97.15, 1e-9);
+}

@@ -6,6 +6,7 @@
 // the reference would be broken the same way. Stats keys; bad input gives one stderr line,
 // a non-zero status and no output files.
 #include "gl_test_support.h"
+#include "player_cli_fixture.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
 
@@ -38,7 +39,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kPlay = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
 
 std::string readText(const fs::path& path)
 {
@@ -142,21 +142,9 @@ TEST(CliOutputChecks, BlankOrWrongImagesFail)
     EXPECT_NE(blankReason(background).find("(13, 13, 13)"), std::string::npos) << blankReason(background);
 }
 
-class CliTest : public GlTest {
+class CliTest : public PlayerCliTest {
 protected:
-    void SetUp() override
-    {
-        GlTest::SetUp();
-        if (IsSkipped())
-            return;
-        ASSERT_TRUE(fs::exists(kPlay)) << kPlay << " not built (build target lfd-play)";
-        dir_ = testOutputDir(std::string("cli_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        pack_ = dir_ / "scene.lfdpack";
-        writePack(pack_, cubeAndSphereScene());
-        profile_ = dir_ / "profile.json";
-        std::ofstream(profile_) << tenthPrototypeProfileJson("cli-small");
-    }
-    fs::path dir_, pack_, profile_;
+    CliTest() : PlayerCliTest("cli_", "cli-small") {}
 };
 
 TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
@@ -647,6 +635,9 @@ TEST_F(CliTest, DisplayDrivingBadInputFailsCleanly)
         {pack + " --preview sometimes", "--preview"},
         {pack + " --preview-view-step 0", "--preview-view-step"},
         {pack + " --quilt-video " + q(dir_ / "clip.avi"), "--quilt-video"},
+        {q(pack_) + small + " --quilt-video " + q(dir_ / "clip.mp4"), "--quilt-video: needs --headless"},
+        {"--headless " + q(pack_) + " --display " + q(profile_) + " --out " + q(dir_ / "e_%s.png"), "--out"},
+        {"--quilt-in " + q(dir_ / "x_qs2x2a1.mp4") + " --display " + q(profile_) + " --quilt-frame 1", "--quilt-frame"},
     };
     for (const auto& [args, culprit] : cases) {
         const RunResult r = runPlay(dir_, args);
@@ -655,6 +646,80 @@ TEST_F(CliTest, DisplayDrivingBadInputFailsCleanly)
         EXPECT_NE(r.err.find(culprit), std::string::npos) << "error must name " << culprit << ": " << r.err;
         EXPECT_EQ(outputsIn(dir_), std::vector<std::string>{"plain.png"}) << args;
     }
+}
+
+// --quilt-layout: a quilt written with other tiles and aspect, and a quilt whose name has
+// no aspect (older tools' "old_qs4x3.png") read back with the flag - the direct EIA.
+TEST_F(CliTest, QuiltLayoutFlagWritesAndReadsOtherLayouts)
+{
+    const fs::path out = dir_ / "layout";
+    fs::create_directories(out);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 12 --view-size 96x72";
+    const RunResult direct = runPlay(dir_, common + " --frame 20 --out " + q(out / "direct.png") + " --quilt " +
+                                               q(out / "q.png") + " --quilt-layout 6x2a2");
+    ASSERT_EQ(direct.status, 0) << direct.err;
+    const fs::path written = out / "q_qs6x2a2.png";
+    ASSERT_TRUE(fs::exists(written));
+    EXPECT_EQ(metrics::readImage(written).width, 6u * 96u);
+    const RunResult tooFew = runPlay(dir_, common + " --quilt " + q(out / "few.png") + " --quilt-layout 3x3");
+    EXPECT_EQ(tooFew.status, 1);
+    EXPECT_NE(tooFew.err.find("fewer tiles"), std::string::npos) << tooFew.err;
+
+    fs::copy_file(written, out / "old_qs6x2.png");
+    for (const std::string& flags : {std::string(""), std::string(" --quilt-layout 6x2a1.78")}) {
+        const RunResult back = runPlay(dir_, "--headless --quilt-in " + q(out / "old_qs6x2.png") + " --display " +
+                                                 q(profile_) + flags + " --out " + q(out / "back.png"));
+        ASSERT_EQ(back.status, 0) << back.err;
+        const metrics::Image a = metrics::readImage(out / "direct.png"), b = metrics::readImage(out / "back.png");
+        EXPECT_EQ(metrics::maxAbsDiff(a, b), 0) << flags;
+    }
+    const RunResult bad = runPlay(dir_, common + " --quilt-layout 6by2");
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.err.find("--quilt-layout"), std::string::npos) << bad.err;
+}
+
+// Headless without an output flag renders (a timing run) and says that nothing was
+// written and which flags write; --help says --quilt-video needs --headless.
+TEST_F(CliTest, HeadlessWithoutOutputsSaysNothingWasWritten)
+{
+    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+                                          " --views 4 --view-size 64x48");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("lfd-play: no output written (timing only; --out"), std::string::npos) << r.out;
+    EXPECT_TRUE(outputsIn(dir_).empty());
+    const RunResult withOutput = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+                                                   " --views 4 --view-size 64x48 --out " + q(dir_ / "e.png"));
+    EXPECT_EQ(withOutput.out.find("no output written"), std::string::npos) << withOutput.out;
+    const RunResult help = runPlay(dir_, "--help");
+    EXPECT_NE(help.out.find("headless only (--headless)"), std::string::npos);
+}
+
+// A pack whose tessellation bound was made for another display (BakeSettings) plays with
+// one warning line saying so; for the same display and views, none.
+TEST_F(CliTest, PackBakedForAnotherDisplayWarns)
+{
+    Scene scene = cubeAndSphereScene();
+    scene.settings.displayProfile = "looking_glass_portrait_visual";
+    scene.settings.viewWidth = 420;
+    scene.settings.viewHeight = 560;
+    scene.settings.viewCount = 48;
+    const fs::path other = dir_ / "other.lfdpack";
+    writePack(other, scene);
+    const std::string args = " --display " + q(profile_) + " --views 4 --view-size 64x48";
+    const RunResult r = runPlay(dir_, "--headless " + q(other) + args);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("lfd-play: warning: other.lfdpack: its tessellation bound (100 view pixels) was made for "
+                         "display 'looking_glass_portrait_visual' with 420x560 views, this is 'cli-small' with "
+                         "64x48 views"),
+              std::string::npos)
+        << r.err;
+    scene.settings.displayProfile = "cli-small";
+    scene.settings.viewWidth = 64;
+    scene.settings.viewHeight = 48;
+    writePack(other, scene);
+    const RunResult same = runPlay(dir_, "--headless " + q(other) + args);
+    EXPECT_EQ(same.err, "");
 }
 
 } // namespace

@@ -9,6 +9,7 @@
 #include "xvfb_support.h"
 
 #include "image_metrics.h"
+#include "quilt_video.h"
 
 #include "lfd/pack.h"
 
@@ -18,6 +19,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <fstream>
 #include <thread>
 
@@ -182,6 +184,14 @@ TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
     start(common_ + " --no-turntable --fullscreen --allow-mismatch");
     const metrics::Image screen = server_->readScreen();
     quit();
+    // The readout lines start once something is measured: no empty "lfd-play: " line, also
+    // for a one-frame run whose only readout comes before any frame time is known.
+    const std::string log = readText(dir_ / "play.log");
+    EXPECT_EQ(("\n" + log).find("\nlfd-play: \n"), std::string::npos) << log;
+    EXPECT_NE(log.find("mismatch allowed"), std::string::npos) << log;
+    ASSERT_EQ(run(common_ + " --fullscreen --allow-mismatch --frames 1", err), 0) << err;
+    const std::string oneFrame = readText(dir_ / "out.txt");
+    EXPECT_EQ(("\n" + oneFrame).find("\nlfd-play: \n"), std::string::npos) << oneFrame;
     ASSERT_EQ(screen.width, 640u);
     size_t differing = 0, litOutside = 0;
     for (uint32_t y = 0; y < 400; ++y)
@@ -260,6 +270,35 @@ TEST_F(DisplayWindowTest, QuiltInputFullscreenEqualsItsHeadlessEia)
     const metrics::Image screen = server_->readScreen();
     quit();
     EXPECT_TRUE(screen.pixels == metrics::readImage(dir_ / "quilt_eia.png", 3).pixels);
+}
+
+// A quilt video plays in the window at its own rate and loops; space pauses, '.' steps one
+// frame forward while paused (the title says which frame is shown).
+TEST_F(DisplayWindowTest, QuiltVideoPausesAndStepsOneFrame)
+{
+    if (player::findOnPath("ffmpeg").empty())
+        GTEST_SKIP() << "ffmpeg not installed: no quilt video to play";
+    startServer("1280x800x24");
+    std::string err;
+    ASSERT_EQ(run("--headless " + common_ + " --frames 3 --fps 4 --quilt-video " + q(dir_ / "clip.mp4"), err), 0)
+        << err;
+    const fs::path video = dir_ / "clip_qs3x3a1.78.mp4";
+    ASSERT_TRUE(fs::exists(video));
+    const std::string w = start("--quilt-in " + q(video) + " --quilt-views 8 --display " + q(dir_ / "panel.json") +
+                                " --window-size 320x200");
+    titleContains(" of 3");
+    send("key --window " + w + " space");
+    const std::string paused = titleContains("paused");
+    unsigned shown = 0, count = 0;
+    ASSERT_NE(paused.find("mp4 frame "), std::string::npos) << paused;
+    ASSERT_EQ(std::sscanf(paused.c_str() + paused.find("mp4 frame "), "mp4 frame %u of %u", &shown, &count), 2)
+        << paused;
+    EXPECT_EQ(count, 3u);
+    send("key --window " + w + " period");
+    titleContains("mp4 frame " + std::to_string((shown + 1) % 3) + " of 3");
+    send("key --window " + w + " period");
+    titleContains("mp4 frame " + std::to_string((shown + 2) % 3) + " of 3");
+    quit();
 }
 
 } // namespace

@@ -48,12 +48,39 @@ TEST(QuiltInput, LayoutFromTheFileName)
     q = player::parseQuiltName("old_qs2x2a1_qs8x6a0.75.png"); // the last suffix counts
     EXPECT_EQ(q.cols, 8u);
 
-    for (const char* bad : {"scene.png", "scene_qs8x6.png", "scene_qs8x6a.png", "scene_qs0x6a0.75.png",
-                            "scene_qs8x6a0.png", "scene_qsAx6a1.png"}) {
+    // No aspect (older tools): 0, the views are shown at the screen's aspect.
+    q = player::parseQuiltName("old_qs4x3.png");
+    EXPECT_EQ(q.cols, 4u);
+    EXPECT_EQ(q.rows, 3u);
+    EXPECT_EQ(q.aspect, 0.0);
+
+    for (const char* bad : {"scene.png", "scene_qs8x6a.png", "scene_qs0x6a0.75.png", "scene_qs8x6a0.png",
+                            "scene_qsAx6a1.png", "scene_qs8x6a.5.png"}) {
         const std::string e = errorOf([&] { player::parseQuiltName(bad); });
         EXPECT_NE(e.find(bad), std::string::npos) << "names the file: " << e;
         EXPECT_EQ(e.find('\n'), std::string::npos);
     }
+}
+
+// --quilt-layout CxR[aASPECT]: read instead of the name's; an aspect it lacks comes from
+// the name.
+TEST(QuiltInput, LayoutFlagReplacesTheName)
+{
+    const player::QuiltName flag = player::parseQuiltLayout("5x9a1.78", "--quilt-layout");
+    EXPECT_EQ(flag.cols * 10 + flag.rows, 59u);
+    EXPECT_DOUBLE_EQ(flag.aspect, 1.78);
+    EXPECT_EQ(player::parseQuiltLayout("4x3", "--quilt-layout").aspect, 0.0);
+    for (const char* bad : {"4x", "4x3a", "0x3", "4x3a0", "x", "4x3a1.5junk"}) {
+        const std::string e = errorOf([&] { player::parseQuiltLayout(bad, "--quilt-layout"); });
+        EXPECT_NE(e.find("--quilt-layout"), std::string::npos) << bad << ": " << e;
+    }
+    player::QuiltName q = player::quiltNameOf("plain.png", player::QuiltName{4, 3, 1.5});
+    EXPECT_EQ(q.cols, 4u);
+    q = player::quiltNameOf("x_qs8x6a0.75.png", player::QuiltName{4, 3, 0.0});
+    EXPECT_EQ(q.cols, 4u);
+    EXPECT_DOUBLE_EQ(q.aspect, 0.75);
+    EXPECT_EQ(player::quiltNameOf("x_qs8x6a0.75.png", std::nullopt).cols, 8u);
+    EXPECT_EQ(player::listQuiltFiles(fs::path(LFD_SOURCE_DIR) / "README.md", true).size(), 1u);
 }
 
 TEST(QuiltInput, FolderIsASortedSlideshowOfQuiltImages)

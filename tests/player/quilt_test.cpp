@@ -162,3 +162,44 @@ TEST(Quilt, NameAspectIsTheScreensAndSequencesNumberEachFrame) {
     // Without a screen size the tile's aspect is used.
     EXPECT_DOUBLE_EQ(chooseQuiltLayout(48, 420, 560, 1.0).nameAspect(), 0.75);
 }
+
+// A known device's profile writes its vendor's standard quilt: the Looking Glass Portrait
+// 8x6 tiles of 420x560 filling 3360x3360 (not the 7x7 of 2940x3920 the aspect rule picks).
+TEST(Quilt, LookingGlassPortraitWritesItsStandard8x6Quilt) {
+    const lfd::DisplayProfile portrait =
+        lfd::loadDisplayProfile(std::filesystem::path(LFD_SOURCE_DIR) / "samples/profiles/looking_glass_portrait_visual.json");
+    const QuiltLayout layout = chooseQuiltLayout(portrait);
+    EXPECT_EQ(layout.cols, 8u);
+    EXPECT_EQ(layout.rows, 6u);
+    EXPECT_EQ(layout.width(), 3360u);
+    EXPECT_EQ(layout.height(), 3360u);
+    EXPECT_EQ(quiltFileName("portrait.png", layout).string(), "portrait_qs8x6a0.75.png");
+    // More views than the device's tiles (--views 49): the aspect rule, 7x7 of the panel's shape.
+    const QuiltLayout other = chooseQuiltLayout(lfd::withViews(portrait, 49, 0, 0));
+    EXPECT_EQ(other.cols * 10 + other.rows, 77u);
+    EXPECT_EQ(other.width(), 2940u);
+}
+
+// A standard quilt larger than its tiles (8192 for 7 tiles of 1170) keeps the tiles at the
+// bottom-left and the spare pixels black.
+TEST(Quilt, SpareStandardQuiltPixelsStayBlack) {
+    const QuiltLayout layout{2, 1, 3, 2, 7, 3};
+    EXPECT_EQ(layout.width(), 7u);
+    EXPECT_EQ(layout.height(), 3u);
+    const std::vector<uint8_t> quilt = assembleQuilt(layout, colouredViews(2, 3, 2));
+    EXPECT_EQ(pixelAt(quilt, 7, 0, 1), (std::array<uint8_t, 4>{255, 255, 255, 255})); // view 0's marker
+    EXPECT_EQ(pixelAt(quilt, 7, 4, 2), viewColour(1));
+    EXPECT_EQ(pixelAt(quilt, 7, 6, 2), (std::array<uint8_t, 4>{0, 0, 0, 255}));
+    EXPECT_EQ(pixelAt(quilt, 7, 1, 0), (std::array<uint8_t, 4>{0, 0, 0, 255}));
+}
+
+// --quilt-layout: other tiles and aspect; too few tiles are refused.
+TEST(Quilt, LayoutOverride) {
+    const QuiltLayout base = chooseQuiltLayout(lfd::prototypeDisplayProfile());
+    const QuiltLayout wide = overrideQuiltLayout(base, 48, 12, 4, 2.0);
+    EXPECT_EQ(wide.width(), 12u * 480u);
+    EXPECT_EQ(wide.height(), 4u * 360u);
+    EXPECT_DOUBLE_EQ(wide.nameAspect(), 2.0);
+    EXPECT_DOUBLE_EQ(overrideQuiltLayout(base, 48, 7, 7, 0.0).nameAspect(), base.nameAspect());
+    EXPECT_THROW(overrideQuiltLayout(base, 48, 5, 9, 0.0), std::invalid_argument); // 45 < 48
+}

@@ -3,6 +3,7 @@
 // the loading figures in --stats; --gpu-memory-budget too small for the geometry, and a
 // pack with a corrupt texel, end with one line naming the file and a non-zero exit.
 #include "gl_test_support.h"
+#include "player_cli_fixture.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
 
@@ -24,7 +25,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kPlay = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
 
 std::string slurp(const fs::path& path)
 {
@@ -49,26 +49,13 @@ PlayRun play(const fs::path& dir, const std::string& args)
 
 std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
-class StreamingCliTest : public GlTest {
+class StreamingCliTest : public PlayerCliTest {
 protected:
-    void SetUp() override
-    {
-        GlTest::SetUp();
-        if (IsSkipped())
-            return;
-        ASSERT_TRUE(fs::exists(kPlay)) << kPlay << " not built (build target lfd-play)";
-        dir_ = testOutputDir(std::string("streaming_") +
-                             ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        pack_ = dir_ / "scene.lfdpack";
-        writePack(pack_, cubeAndSphereScene());
-        profile_ = dir_ / "profile.json";
-        std::ofstream(profile_) << tenthPrototypeProfileJson("streaming-small");
-    }
+    StreamingCliTest() : PlayerCliTest("streaming_", "streaming-small") {}
     std::string common() const
     {
         return "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 48x36 --frames 2";
     }
-    fs::path dir_, pack_, profile_;
 };
 
 TEST_F(StreamingCliTest, StreamedAndNotStreamedWriteTheSameViewsAndReportLoading)

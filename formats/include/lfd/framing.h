@@ -9,8 +9,10 @@
 // with an off-axis (sheared) frustum through the screen rectangle - never toe-in.
 //
 // Scene fitting: the scene's bounding sphere (centre c, radius r, from SceneBounds) is
-// scaled so that its diameter equals `fill` times the smaller screen dimension and its
-// centre is placed at the screen centre (z = 0). The turntable rotates the scene about
+// centred on the screen (z = 0) and scaled to `fill` times the largest radius that fits
+// the display: half the screen height, and horizontally inside the frustum of every view
+// of the cone (less than half the width on a portrait panel seen from a wide cone;
+// formats/display_profiles.md section 4). The turntable rotates the scene about
 // the vertical axis through c, which leaves the bounding sphere unchanged, so every bound
 // below holds for every rotation angle.
 #pragma once
