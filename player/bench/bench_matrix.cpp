@@ -263,7 +263,7 @@ std::string matrixTable(const std::vector<BenchReport>& reports)
     tableHeader(s, reports);
     s << "Mean GPU ms per stage (on Mesa llvmpipe GPU time is CPU time). *view gen* includes lfdpr's "
          "per-pixel shading (resolve); *EIA* includes the supersampling downsample. *total* is followed by "
-         "the ratio mvr total / this total (mvr with the same supersampling, no reconstruction; > 1: faster). "
+         "the ratio mvr total / this total (mvr with the same reconstruction and supersampling; > 1: faster). "
          "Error against the reference: EIA (centre view in parentheses); *lens* = the simulated viewer's "
          "image at the centre view position, through the lenses, against the reference's. RMSE 0..255, FLIP "
          "0..1 (lower is better), SSIM on luma (1 = identical). **Bold**: on the scene's Pareto front of "

@@ -479,6 +479,9 @@ std::string configName(const std::string& renderer, const std::string& aa, const
 
 const RendererResult* BenchReport::mvrBaseline(const RendererResult& r) const
 {
+    // mvr with the same reconstruction and supersampling, else the same supersampling.
+    if (const RendererResult* m = find(configName("mvr", r.aa, r.ss)); m && m->timed)
+        return m;
     if (const RendererResult* m = find(configName("mvr", "none", r.ss)); m && m->timed)
         return m;
     const RendererResult* m = find("mvr");

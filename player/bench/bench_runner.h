@@ -117,8 +117,8 @@ struct BenchReport {
     bool interrupted = false;            // options.shouldStop ended the run early
 
     const RendererResult* find(const std::string& name) const;
-    // The configuration the paper's ratio compares `r` with: mvr with r's supersampling
-    // and no reconstruction, else plain mvr; null when not run.
+    // The configuration the paper's ratio compares `r` with: mvr with r's reconstruction and
+    // supersampling, else mvr with its supersampling, else plain mvr; null when not run.
     const RendererResult* mvrBaseline(const RendererResult& r) const;
     // other's total / renderer's total (> 1: `renderer` is faster); empty if either is
     // missing or untimed.

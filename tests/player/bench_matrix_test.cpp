@@ -91,7 +91,10 @@ TEST_F(BenchMatrixTest, RunsEveryConfigurationAndWritesTheMatrix)
     EXPECT_EQ(report.results[1].centreView.rmse, 0.0);
     // lfdpr keeps its point count under 2v.
     EXPECT_EQ(report.results[4].extraValue("points"), report.results[6].extraValue("points"));
-    EXPECT_EQ(report.mvrBaseline(report.results[7])->name, "mvr+ss-2v");
+    // Ratios are against mvr with the same reconstruction and supersampling.
+    EXPECT_EQ(report.mvrBaseline(report.results[7])->name, "mvr+aa-view+ss-2v");
+    EXPECT_EQ(report.mvrBaseline(report.results[6])->name, "mvr+ss-2v");
+    EXPECT_EQ(report.mvrBaseline(report.results[5])->name, "mvr+aa-view");
 
     const fs::path dir = testOutputDir("bench_matrix");
     player::writeMatrixTables(dir, {report});
