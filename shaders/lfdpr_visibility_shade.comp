@@ -31,7 +31,29 @@
 #include "lfdpr_math.glsl"
 #include "pbr_shading.glsl"
 vec2 g_duvdx, g_duvdy; // this pixel's uv footprint, for LFD_SAMPLE
-#define LFD_SAMPLE(t, uv) textureGrad(t, uv, g_duvdx, g_duvdy)
+
+// Anisotropic filtering (--aniso) in the shader rather than the sampler's: the footprint's
+// major axis is cut into n = min(ceil(major / minor), u_frame.maxAnisotropy) pieces, each
+// fetched with textureGrad over its own near-isotropic footprint (the piece along the
+// major axis, the minor axis across it), and averaged - what hardware anisotropic
+// filters do, independent of a driver's textureGrad in compute (llvmpipe's made lfdpr's
+// grazing textures worse, not better). At 1 it is the single trilinear textureGrad.
+vec4 lfdSampleFootprint(sampler2D t, vec2 uv)
+{
+    const vec2 size = vec2(textureSize(t, 0));
+    const float lx = length(g_duvdx * size), ly = length(g_duvdy * size);
+    const vec2 major = lx >= ly ? g_duvdx : g_duvdy, minor = lx >= ly ? g_duvdy : g_duvdx;
+    const float ratio = max(lx, ly) / max(min(lx, ly), 1e-6);
+    const int n = int(clamp(ceil(min(ratio, u_frame.maxAnisotropy)), 1.0, 16.0));
+    if (n == 1)
+        return textureGrad(t, uv, g_duvdx, g_duvdy);
+    const vec2 piece = major / float(n);
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < n; ++i)
+        sum += textureGrad(t, uv + piece * (float(i) + 0.5 - 0.5 * float(n)), piece, minor);
+    return sum / float(n);
+}
+#define LFD_SAMPLE(t, uv) lfdSampleFootprint(t, uv)
 #include "material_shading.glsl"
 #define LFDPR_SCENE_TEXELS
 #include "lfdpr_scene_access.glsl"

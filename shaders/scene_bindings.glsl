@@ -110,5 +110,5 @@ layout(std140, binding = LFD_UBO_FRAME) uniform FrameBlock {
     uint viewCount;
     uint viewWidth;
     uint viewHeight;
-    uint framePad;
+    float maxAnisotropy; // --aniso: lfdpr's textureGrad taps along a footprint's major axis
 } u_frame;

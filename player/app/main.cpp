@@ -190,6 +190,7 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
     o.fps = shared.fps;
     o.turntablePeriod = shared.turntablePeriod;
     o.glDebug = shared.glDebug;
+    o.aniso = float(shared.aniso);
     lfd::player::applySharedFlags(shared, o.rendererOptions);
     o.reconstruction = lfd::player::parseReconstructionFlag("--aa", f.aa);
     o.supersampling = lfd::player::parseSupersamplingFlag("--ss", f.ss);
@@ -409,6 +410,7 @@ lfd::player::RunInfo runInfo(lfd::player::PlayerSession& session, const PlayOpti
     info.panelHeight = profile.panelHeight;
     info.viewBufferBytes = session.targets().bytes();
     info.sceneGpuBytes = session.quiltInput() ? 0 : session.scene().gpuBytes();
+    info.textureAnisotropy = session.quiltInput() ? 1.0 : session.scene().maxAnisotropy();
     info.triangles = triangles;
     info.drawnTriangles = drawnTriangles;
     info.peakHostMemoryMiB = lfd::player::peakHostMemoryMiB();

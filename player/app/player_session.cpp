@@ -60,6 +60,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     warnIfBakedForAnotherDisplay(scene, profile, packName_);
     GpuSceneOptions sceneOptions;
     sceneOptions.plan = &plan_;
+    sceneOptions.maxAnisotropy = options.aniso;
     pipeline_ = std::make_unique<FramePipeline>(profile, std::move(scene), options.turntablePeriod, sceneOptions);
     applyRenderOptions(options);
 }
@@ -72,6 +73,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     warnIfBakedForAnotherDisplay(mapped_->scene(), profile, packName_);
     GpuSceneOptions sceneOptions;
     sceneOptions.plan = &plan_;
+    sceneOptions.maxAnisotropy = options.aniso;
     sceneOptions.streamed = true;
     pipeline_ = std::make_unique<FramePipeline>(profile, mapped_->takeScene(), options.turntablePeriod, sceneOptions);
     streamer_ = std::make_unique<TextureStreamer>(pipeline_->scene(), mapped_, options.streamChunkBytes);

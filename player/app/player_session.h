@@ -34,6 +34,7 @@ PreviewMode parsePreviewMode(const std::string& name); // throws std::invalid_ar
 enum class FrameQuality { Full, Preview };
 
 struct PlayOptions {
+    float aniso = 1.0f;                    // --aniso: the scene textures' max anisotropy
     std::filesystem::path pack;
     bool headless = false;
     std::string renderer = "mvr";          // any name of allRendererNames()

@@ -146,6 +146,7 @@ void applyShared(const BenchFlags& flags, lfd::player::BenchOptions& options, Ma
     lfd::player::finishSharedFlags(shared);
     options.fps = shared.fps;
     options.turntablePeriod = shared.turntablePeriod;
+    options.aniso = float(shared.aniso);
     lfd::player::applySharedFlags(shared, options.rendererOptions);
     shape.size = shared.viewSize;
 }

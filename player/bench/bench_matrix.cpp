@@ -173,6 +173,7 @@ void tableHeader(std::ostringstream& s, const std::vector<BenchReport>& reports)
       << " timed per configuration (frame k at k/" << first.options.fps << " s, turntable period "
       << first.options.turntablePeriod << " s); quality at frame " << first.options.qualityFrame << " against "
       << first.options.reference;
+    s << "; texture anisotropy " << first.textureAnisotropy << " (`--aniso`)";
     if (first.options.reference == "gstd")
         s << " (factor " << first.options.rendererOptions.gstd.factor << ", "
           << first.options.rendererOptions.gstd.samples << " samples, 2x views)";

@@ -201,6 +201,7 @@ nlohmann::json benchJson(const BenchReport& report)
     j["triangles"] = report.triangles;
     j["drawn_triangles"] = report.drawnTriangles;
     j["scene_gpu_bytes"] = report.sceneGpuBytes;
+    j["texture_anisotropy"] = report.textureAnisotropy;
     j["profile"] = {{"name", p.name},           {"views", p.viewCount},
                     {"view_width", p.viewWidth}, {"view_height", p.viewHeight},
                     {"panel_width", p.panelWidth}, {"panel_height", p.panelHeight}};

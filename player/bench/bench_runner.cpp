@@ -530,9 +530,12 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     BenchReport report = startReport(options, profile, scene, packName, glDescription);
 
     // Step 1: upload once into the frame pipeline lfd-play uses too.
-    FramePipeline pipeline(profile, scene, options.turntablePeriod);
+    GpuSceneOptions sceneOptions;
+    sceneOptions.maxAnisotropy = options.aniso;
+    FramePipeline pipeline(profile, scene, options.turntablePeriod, sceneOptions);
     scene = Scene{}; // the GPU copy is all that is needed from here on
     report.sceneGpuBytes = pipeline.scene().gpuBytes();
+    report.textureAnisotropy = pipeline.scene().maxAnisotropy();
 
     BenchRun run{options, profile, packName, progress, images, pipeline, planConfigs(options),
                  double(options.qualityFrame) / options.fps, {}, {}, {}, {}, {}, report};

@@ -46,6 +46,7 @@ struct BenchOptions {
     bool interleave = true;
     double fps = 60.0;              // frame k is at time k / fps
     double turntablePeriod = 10.0;  // seconds per revolution, 0 = still
+    float aniso = 1.0f;             // --aniso: the scene textures' max anisotropy, every renderer
     uint32_t qualityFrame = 0;      // frame whose views and EIA are compared
     std::filesystem::path outDir;   // empty: nothing written
     bool quiet = false;             // no progress lines
@@ -113,6 +114,7 @@ struct BenchReport {
     uint64_t triangles = 0;
     uint64_t drawnTriangles = 0; // with every node instance counted
     uint64_t sceneGpuBytes = 0;
+    float textureAnisotropy = 1.0f; // options.aniso as the driver applied it
     std::vector<RendererResult> results; // in options.renderers order, reference last if untimed
     bool interrupted = false;            // options.shouldStop ended the run early
 

@@ -23,6 +23,11 @@ void addSharedFlags(CLI::App& app, SharedFlags& flags)
                    "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
                    "short invocations) | cpu (long invocations); the views are the same")
         ->capture_default_str();
+    app.add_option("--aniso", flags.aniso,
+                   "anisotropic texture filtering for every renderer: 1 (trilinear), 2, 4, 8 or 16 (clamped to the "
+                   "driver's limit; gstd always filters at 16)")
+        ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}))
+        ->capture_default_str();
     app.add_flag("--gl-debug", flags.glDebug,
                  "debug GL context: print every KHR_debug message; a GL error fails the run naming the call");
 }

@@ -25,6 +25,7 @@ struct SharedFlags {
     uint32_t gstdFactor = GstdOptions{}.factor;             // --gstd-factor
     LfdprOptions::WorkShape lfdprWork = LfdprOptions::WorkShape::Auto; // --lfdpr-work
     bool glDebug = false;                                   // --gl-debug
+    uint32_t aniso = 1;                                     // --aniso: 1, 2, 4, 8 or 16
     // As CLI11 fills them.
     std::string viewSizeText, lfdprWorkText = "auto";
     CLI::Option* viewSizeOpt = nullptr;

@@ -100,6 +100,7 @@ void FramePipeline::animate(double time)
 {
     scene_->update(time);
     frame_ = makeFrameSetup(profile_, framing_, time, turntablePeriod_, controls_);
+    frame_.textureAnisotropy = scene_->maxAnisotropy();
 }
 
 void FramePipeline::buildEia(GpuTimer& timer, Reconstruction reconstruction)
@@ -211,6 +212,7 @@ void FramePipeline::renderPreviewFrame(Renderer& renderer, double time, GpuTimer
     }
     scene_->update(time);
     frame_ = makeFrameSetup(previewProfile_, framing_, time, turntablePeriod_, controls_);
+    frame_.textureAnisotropy = scene_->maxAnisotropy();
     timer.begin(stage::kTotal);
     renderer.render(*scene_, frame_, *previewTargets_, timer);
     previewEia_->build(*previewTargets_, reconstruction, timer);

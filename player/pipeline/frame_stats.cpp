@@ -35,6 +35,7 @@ nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageT
     j["view_buffer_bytes"] = info.viewBufferBytes;
     j["scene_gpu_bytes"] = info.sceneGpuBytes;
     j["gpu_scene_bytes"] = info.sceneGpuBytes;
+    j["texture_anisotropy"] = info.textureAnisotropy;
     j["streaming"] = info.streaming;
     j["time_to_first_frame_ms"] = info.timeToFirstFrameMs;
     j["time_to_resident_ms"] = info.timeToResidentMs;

@@ -22,6 +22,7 @@ struct RunInfo {
     uint32_t views = 0, viewWidth = 0, viewHeight = 0, frames = 0;
     uint32_t panelWidth = 0, panelHeight = 0;
     uint64_t viewBufferBytes = 0, sceneGpuBytes = 0, triangles = 0, drawnTriangles = 0;
+    double textureAnisotropy = 1.0; // --aniso as applied
     std::vector<std::pair<std::string, double>> extra; // Renderer::extraStats()
     // Loading (README "Streaming"): wall milliseconds from the start of reading the pack to
     // the end of the first frame and to the whole scene resident on the GPU (< 0: not

@@ -16,6 +16,7 @@ struct FrameSetup {
     Framing framing;
     double time = 0.0;            // seconds, drives glTF node animations
     double turntableAngle = 0.0;  // radians about the vertical axis through the scene centre
+    float textureAnisotropy = 1.0f; // --aniso as the scene's textures got it (GpuScene::maxAnisotropy)
     glm::dmat4 displayFromScene{1.0};
     std::vector<ViewCamera> cameras; // profile.viewCount entries
     // Per-view clipFromScene = cameras[i].clipFromDisplay * displayFromScene (float, for upload).

@@ -39,6 +39,7 @@ void FrameUniforms::upload(const FrameSetup& frame)
     block.viewCount = frame.profile.viewCount;
     block.viewWidth = frame.profile.viewWidth;
     block.viewHeight = frame.profile.viewHeight;
+    block.maxAnisotropy = frame.textureAnisotropy;
     glNamedBufferSubData(frame_, 0, sizeof(block), &block);
 
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, bindings::kSsboViews, views_);

@@ -51,12 +51,30 @@ bindings::MaterialGpu toGpu(const Material& m, const std::vector<Texture>& textu
     return g;
 }
 
+// The anisotropy the driver gives for `wanted` (GL 4.6 or EXT/ARB_texture_filter_anisotropic;
+// 1 without them, with a warning when more was asked for).
+float supportedAnisotropy(float wanted)
+{
+    if (wanted <= 1.0f)
+        return 1.0f;
+    if (epoxy_gl_version() < 46 && !epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") &&
+        !epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic")) {
+        std::fprintf(stderr, "lfd: warning: --aniso %g: the driver has no anisotropic filtering "
+                             "(GL_EXT_texture_filter_anisotropic); textures are trilinear\n", double(wanted));
+        return 1.0f;
+    }
+    GLfloat limit = 1.0f;
+    glGetFloatv(GL_MAX_TEXTURE_MAX_ANISOTROPY, &limit);
+    return std::min(wanted, limit);
+}
+
 // One pack texture as a GL texture holding pack levels [layout.firstPackLevel, ..): the
 // format's storage and swizzle (gpu_texture_format.h), trilinear filtering and glTF's
 // default REPEAT wrap. Without `streamed` every level is uploaded now; streamed, nothing
 // is resident yet and the base level is the coarsest: the streamer lowers it as finer
 // levels arrive, so sampling never reads a level that has not been uploaded.
-gl::Texture createGlTexture(const Texture& tex, const GpuTextureLayout& layout, bool streamed, size_t& gpuBytes)
+gl::Texture createGlTexture(const Texture& tex, const GpuTextureLayout& layout, bool streamed, float anisotropy,
+                            size_t& gpuBytes)
 {
     gl::Texture name = gl::createTexture(GL_TEXTURE_2D);
     const GLsizei levels = GLsizei(layout.levels);
@@ -79,6 +97,8 @@ gl::Texture createGlTexture(const Texture& tex, const GpuTextureLayout& layout, 
     glTextureParameteri(name, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(name, GL_TEXTURE_WRAP_S, GL_REPEAT);
     glTextureParameteri(name, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    if (anisotropy > 1.0f)
+        glTextureParameterf(name, GL_TEXTURE_MAX_ANISOTROPY, anisotropy);
     return name;
 }
 
@@ -154,6 +174,7 @@ GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options)
     // Step 2: textures with the pack's full mip chain; colour textures decode sRGB in the
     // sampler, data textures stay linear. Trilinear filtering, glTF's default REPEAT wrap.
     textures_.reserve(scene_.textures.size());
+    anisotropy_ = supportedAnisotropy(options.maxAnisotropy);
     for (size_t t = 0; t < scene_.textures.size(); ++t) {
         Texture& tex = scene_.textures[t];
         if (tex.mips.empty() || (!options.streamed && tex.texels.empty()))
@@ -162,7 +183,7 @@ GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options)
         // Top levels the plan leaves out: GL level l holds pack level first + l.
         const uint32_t first = t < plan->droppedLevels.size() ? plan->droppedLevels[t] : 0u;
         const GpuTextureLayout layout{first, uint32_t(tex.mips.size()) - first};
-        textures_.push_back(createGlTexture(tex, layout, options.streamed, gpuBytes_));
+        textures_.push_back(createGlTexture(tex, layout, options.streamed, anisotropy_, gpuBytes_));
         layouts_.push_back(layout);
         // The texels live on the GPU now; keep the metadata only.
         std::vector<uint8_t>().swap(tex.texels);

@@ -36,6 +36,10 @@ struct GpuSceneOptions {
     // streamer fills them from a MappedPack. Textures then sample nothing until their
     // first level is resident (GL_TEXTURE_BASE_LEVEL starts at the coarsest level).
     bool streamed = false;
+    // --aniso: the scene textures' GL_TEXTURE_MAX_ANISOTROPY (1 = trilinear, as before),
+    // clamped to the driver's limit; every renderer that samples them gets it (the raster
+    // methods' texture(), lfdpr's textureGrad).
+    float maxAnisotropy = 1.0f;
 };
 
 // Which pack levels a GL texture holds: GL level l is pack level firstPackLevel + l.
@@ -72,6 +76,7 @@ public:
     unsigned triangleStatsBuffer() const { return statsSsbo_.get(); }
     unsigned nodeTransformBuffer() const { return nodeSsbo_.get(); }
     size_t gpuBytes() const { return gpuBytes_; }
+    float maxAnisotropy() const { return anisotropy_; } // as applied (1 without driver support)
     // Unique per GpuScene made in this process (1, 2, ...), so renderers that keep tables
     // per scene rebuild them for a new one even where it reuses a freed one's address.
     uint64_t serial() const { return serial_; }
@@ -81,6 +86,7 @@ private:
     Scene scene_;
     std::vector<DrawItem> draws_;
     std::vector<glm::mat4> sceneFromNode_;
+    float anisotropy_ = 1.0f;
     std::vector<gl::Texture> textures_;
     std::vector<GpuTextureLayout> layouts_;
     std::array<gl::Buffer, 4> streamVbos_; // by LFD_ATTRIB_* location; empty when absent

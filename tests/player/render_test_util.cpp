@@ -32,12 +32,15 @@ RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const 
 {
     const auto start = std::chrono::steady_clock::now();
     RenderedFrame out;
-    player::GpuScene gpu(scene);
+    player::GpuSceneOptions sceneOptions;
+    sceneOptions.maxAnisotropy = request.aniso;
+    player::GpuScene gpu(scene, sceneOptions);
     gpu.update(request.time);
     // The framing lfd-play uses: the scene's bounding sphere at the fill it was baked for.
     const double fill = scene.settings.framingFill > 0.0f ? double(scene.settings.framingFill) : 1.0;
     out.setup = player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds, fill), request.time,
                                        request.turntablePeriod);
+    out.setup.textureAnisotropy = gpu.maxAnisotropy();
     player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
     player::GpuTimer timer;
     for (int i = 0; i < request.frames; ++i)

@@ -21,6 +21,7 @@ struct RenderRequest {
     double turntablePeriod = 0.0; // seconds per revolution; 0: still
     int frames = 1;               // frames rendered into the same targets; the last is read back
     bool eia = false;             // also interleave the EIA (no reconstruction) and read it back
+    float aniso = 1.0f;           // the scene textures' max anisotropy (--aniso)
 };
 
 struct RenderedFrame {
