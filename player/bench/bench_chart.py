@@ -1,7 +1,12 @@
 #!/usr/bin/env python3
 """lfd-bench's matrix chart: time per frame against error, one panel per scene.
 
-    bench_chart.py RESULTS.csv OUTDIR
+    bench_chart.py RESULTS.csv OUTDIR [--error COLUMN]
+
+COLUMN is the error plotted (default eia_rmse, the EIA against the reference); the
+through-the-lens sweep's lens_sweep_rmse_mean or lens_sweep_rmse_worst (or any RMSE column
+of results.csv) plot what a viewer sees across the viewing cone instead, with the Pareto
+front recomputed for that error.
 
 Reads lfd-bench's results.csv and writes OUTDIR/chart.png and OUTDIR/chart.svg (each
 atomically): per scene and view count one panel with the total GPU ms per frame against the
@@ -269,15 +274,44 @@ def header_lines(rows, device):
     return lines
 
 
+ERROR_LABELS = {"eia_rmse": "EIA RMSE", "lens_rmse": "through-the-lens RMSE (centre)",
+                "lens_sweep_rmse_mean": "through-the-lens RMSE, mean over the sweep",
+                "lens_sweep_rmse_worst": "through-the-lens RMSE, worst position of the sweep"}
+
+
+ERROR = "eia_rmse"
+
+
+def parse_arguments():
+    args = sys.argv[1:]
+    error = "eia_rmse"
+    if len(args) == 4 and args[2] == "--error":
+        error = args[3]
+        args = args[:2]
+    if len(args) != 2 or not error.endswith("rmse") and not error.endswith("rmse_mean") \
+            and not error.endswith("rmse_worst"):
+        sys.exit("usage: bench_chart.py RESULTS.csv OUTDIR [--error eia_rmse|lens_sweep_rmse_mean|"
+                 "lens_sweep_rmse_worst|...rmse column]")
+    return args[0], args[1], error
+
+
 def main():
-    if len(sys.argv) != 3:
-        sys.exit("usage: bench_chart.py RESULTS.csv OUTDIR")
-    with open(sys.argv[1], newline="") as f:
-        rows = [r for r in csv.DictReader(f) if r.get("timed") == "1" and r.get("total_ms") and r.get("eia_rmse")]
+    global ERROR
+    results, out, error = parse_arguments()
+    ERROR = error
+    sys.argv = [sys.argv[0], results, out]
+    with open(results, newline="") as f:
+        reader = csv.DictReader(f)
+        if error not in (reader.fieldnames or []):
+            sys.exit(f"bench_chart.py: {results} has no column '{error}'")
+        rows = [r for r in reader if r.get("timed") == "1" and r.get("total_ms") and r.get(error)]
+    if error != "eia_rmse":
+        for r in rows:
+            r.pop("pareto", None)  # the CSV's front is for the EIA RMSE: recomputed for this error
     panels = {}
     for r in rows:
         try:
-            r["t"], r["e"] = float(r["total_ms"]), float(r["eia_rmse"])
+            r["t"], r["e"] = float(r["total_ms"]), float(r[error])
         except ValueError:
             continue
         if not (math.isfinite(r["t"]) and math.isfinite(r["e"]) and r["t"] > 0):
@@ -362,7 +396,7 @@ def main():
 
         ax.set_title(f"{scene}: {views} views of {w}x{h}", fontsize=10)
         ax.set_xlabel("total GPU time per frame, ms" + (" (log scale)" if log_x else ""), fontsize=8.5)
-        ax.set_ylabel(f"EIA RMSE against {reference} (0..255)", fontsize=8.5)
+        ax.set_ylabel(f"{ERROR_LABELS.get(ERROR, ERROR)} against {reference} (0..255)", fontsize=8.5)
         ax.grid(True, which="major", alpha=0.3)
 
         # Points at the same height: say that their errors are equal, not just close.

@@ -104,6 +104,11 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
     app.add_flag("!--sequential", options.interleave,
                  "time each renderer's frames in one block, one renderer after the other (default: the "
                  "renderers take turns frame by frame, so a machine whose speed drifts slows them alike)");
+    app.add_option("--lens-positions", options.lensPositions,
+                   "through-the-lens sweep: the simulated viewer at this many positions across the viewing cone, "
+                   "each against the reference's (mean and worst reported)")
+        ->check(CLI::Range(1u, 256u))
+        ->capture_default_str();
     app.add_option("--quality-frame", options.qualityFrame, "frame whose views and EIA are compared")
         ->capture_default_str();
     app.add_option("--reference", options.reference,

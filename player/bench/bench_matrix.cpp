@@ -92,7 +92,8 @@ std::string matrixCsv(const std::vector<BenchReport>& reports)
     s << "scene,triangles,drawn_triangles,views,view_width,view_height,config,renderer,aa,ss,timed,frames,"
          "point_generation_ms,points,view_generation_ms,resolve_ms,downsample_ms,eia_ms,total_ms,total_median_ms,"
          "speedup_vs_mvr,mvr_baseline,eia_rmse,eia_psnr,eia_ssim,eia_flip,view_rmse,view_psnr,view_ssim,view_flip,"
-         "views_rmse,views_ssim,lens_rmse,lens_psnr,lens_ssim,lens_flip,pareto,reference,seconds\n";
+         "views_rmse,views_ssim,lens_rmse,lens_psnr,lens_ssim,lens_flip,lens_sweep_positions,lens_sweep_rmse_mean,"
+         "lens_sweep_rmse_worst,lens_sweep_ssim_mean,lens_sweep_ssim_worst,pareto,reference,seconds\n";
     for (const BenchReport& rep : reports) {
         const std::vector<bool> front = paretoFront(rep);
         for (size_t i = 0; i < rep.results.size(); ++i) {
@@ -115,7 +116,9 @@ std::string matrixCsv(const std::vector<BenchReport>& reports)
                 s << ',' << num(q->rmse) << ',' << num(q->psnr) << ',' << num(q->ssim) << ',' << num(q->flip);
             s << ',' << num(r.allViews.rmse) << ',' << num(r.allViews.ssim);
             s << ',' << num(r.lens.rmse) << ',' << num(r.lens.psnr) << ',' << num(r.lens.ssim) << ','
-              << num(r.lens.flip);
+              << num(r.lens.flip) << ',' << r.lensSweep.positions.size() << ',' << num(r.lensSweep.rmseMean) << ','
+              << num(r.lensSweep.rmseWorst) << ',' << num(r.lensSweep.ssimMean) << ','
+              << num(r.lensSweep.ssimWorst);
             s << ',' << (front[i] ? 1 : 0) << ',' << rep.options.reference << ',' << num(r.seconds) << '\n';
         }
     }
@@ -146,6 +149,15 @@ nlohmann::json matrixJson(const std::vector<BenchReport>& reports)
             e["aa"] = r.aa;
             e["ss"] = r.ss;
             e["pareto"] = bool(front[i]);
+            nlohmann::json positions = nlohmann::json::array();
+            for (const Quality& q : r.lensSweep.positions)
+                positions.push_back({{"rmse", q.rmse}, {"ssim", q.ssim}});
+            e["quality"]["lens_sweep"] = {{"positions", r.lensSweep.positions.size()},
+                                          {"rmse_mean", r.lensSweep.rmseMean},
+                                          {"rmse_worst", r.lensSweep.rmseWorst},
+                                          {"ssim_mean", r.lensSweep.ssimMean},
+                                          {"ssim_worst", r.lensSweep.ssimWorst},
+                                          {"per_position", positions}};
             e["quality"]["lens"] = {{"rmse", r.lens.rmse},
                                     {"psnr", std::isfinite(r.lens.psnr) ? nlohmann::json(r.lens.psnr) : nlohmann::json()},
                                     {"ssim", r.lens.ssim},
@@ -227,14 +239,15 @@ void tableRows(std::ostringstream& s, const BenchReport& rep)
         s << "| " << scene << " | " << views << " | " << method << " | " << r.aa << " | " << r.ss << " | "
           << c.pointGen << " | " << c.viewGen << " | " << c.eia << " | " << c.total << " | ";
         if (ref) {
-            s << "- | - | - | - |\n";
+            s << "- | - | - | - | - |\n";
             continue;
         }
         s << fmt("%.2f", r.eia.rmse) << " (" << fmt("%.2f", r.centreView.rmse) << ") | "
           << fmt("%.4f", r.eia.flip) << " (" << fmt("%.4f", r.centreView.flip) << ") | "
           << fmt("%.4f", r.eia.ssim) << " (" << fmt("%.4f", r.centreView.ssim) << ") | "
           << fmt("%.2f", r.lens.rmse) << " / " << fmt("%.4f", r.lens.flip) << " / " << fmt("%.4f", r.lens.ssim)
-          << " |\n";
+          << " | " << fmt("%.2f", r.lensSweep.rmseMean) << " / " << fmt("%.2f", r.lensSweep.rmseWorst) << " / "
+          << fmt("%.4f", r.lensSweep.ssimWorst) << " |\n";
     }
 }
 
@@ -266,12 +279,14 @@ std::string matrixTable(const std::vector<BenchReport>& reports)
          "per-pixel shading (resolve); *EIA* includes the supersampling downsample. *total* is followed by "
          "the ratio mvr total / this total (mvr with the same reconstruction and supersampling; > 1: faster). "
          "Error against the reference: EIA (centre view in parentheses); *lens* = the simulated viewer's "
-         "image at the centre view position, through the lenses, against the reference's. RMSE 0..255, FLIP "
+         "image at the centre view position, through the lenses, against the reference's; *lens sweep* = the "
+         "same at K positions across the viewing cone (`--lens-positions`): mean RMSE / worst RMSE / worst SSIM. "
+         "RMSE 0..255, FLIP "
          "0..1 (lower is better), SSIM on luma (1 = identical). **Bold**: on the scene's Pareto front of "
          "total time against EIA RMSE.\n\n";
     s << "| scene (tris) | views | method | AA | SS | point gen ms (points) | view gen ms | EIA ms | total ms "
-         "(vs mvr) | RMSE | FLIP | SSIM | lens RMSE / FLIP / SSIM |\n";
-    s << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "(vs mvr) | RMSE | FLIP | SSIM | lens RMSE / FLIP / SSIM | lens sweep RMSE mean / worst, SSIM worst |\n";
+    s << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const BenchReport& rep : reports)
         tableRows(s, rep);
     paretoSection(s, reports);

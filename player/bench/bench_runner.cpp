@@ -78,6 +78,7 @@ struct BenchRun {
     std::string gstdKey;
     CapturedFrame reference;
     metrics::Image referenceLens;
+    std::vector<metrics::Image> referenceSweep; // the reference's lens images at the sweep's positions
     std::vector<RendererResult> results;
     BenchReport& report;
     // The configurations timed round-robin (timeRoundRobin), by name: their stages and
@@ -106,6 +107,8 @@ void validateOptions(const BenchOptions& options)
             createRenderer(name); // throws the one-line "unknown renderer" error
     if (!isKnownRenderer(options.reference))
         createRenderer(options.reference);
+    if (options.lensPositions == 0 || options.lensPositions > 256)
+        throw std::invalid_argument("lens-positions: expected 1..256, got " + std::to_string(options.lensPositions));
     validateGstdOptions(options.rendererOptions.gstd);
 }
 
@@ -362,6 +365,34 @@ Quality compareAllViews(const CapturedFrame& frame, const CapturedFrame& referen
     return {std::sqrt(mse / n), metrics::psnrFromRmse(std::sqrt(mse / n)), ssim / n, std::numeric_limits<double>::quiet_NaN()};
 }
 
+// The simulated viewer's images of an EIA at the sweep's K positions t_j = (j + 1/2) N / K.
+std::vector<metrics::Image> lensSweepImages(const DisplayProfile& profile, const metrics::Image& eia, uint32_t k)
+{
+    std::vector<metrics::Image> images;
+    for (uint32_t j = 0; j < k; ++j) {
+        const double t = (double(j) + 0.5) * double(profile.viewCount) / double(k);
+        images.push_back({profile.viewWidth, profile.viewHeight, 4, simulateViewer(profile, eia.pixels, t)});
+    }
+    return images;
+}
+
+RendererResult::LensSweep compareLensSweep(const std::vector<metrics::Image>& images,
+                                           const std::vector<metrics::Image>& reference)
+{
+    RendererResult::LensSweep sweep;
+    sweep.ssimMean = 0.0;
+    for (size_t j = 0; j < images.size(); ++j) {
+        const double rmse = metrics::rmse(images[j], reference[j]);
+        const double ssim = metrics::ssim(images[j], reference[j]);
+        sweep.positions.push_back({rmse, metrics::psnrFromRmse(rmse), ssim, std::numeric_limits<double>::quiet_NaN()});
+        sweep.rmseMean += rmse / double(images.size());
+        sweep.ssimMean += ssim / double(images.size());
+        sweep.rmseWorst = std::max(sweep.rmseWorst, rmse);
+        sweep.ssimWorst = std::min(sweep.ssimWorst, ssim);
+    }
+    return sweep;
+}
+
 // The captured frame's quality against the reference; configuration 0 is the reference
 // and its frame (moved from `frame`) is kept for the others.
 void compareWithReference(BenchRun& run, size_t i, CapturedFrame& frame, RendererResult& result, const Say& say)
@@ -371,15 +402,19 @@ void compareWithReference(BenchRun& run, size_t i, CapturedFrame& frame, Rendere
     const double eyePosition = 0.5 * double(profile.viewCount);
     const metrics::Image lens{profile.viewWidth, profile.viewHeight, 4,
                      simulateViewer(profile, frame.eia.pixels, eyePosition)};
+    std::vector<metrics::Image> sweep = lensSweepImages(profile, frame.eia, run.options.lensPositions);
     if (i == 0) {
         // The reference against itself: identical.
         const Quality identical{0.0, std::numeric_limits<double>::infinity(), 1.0, 0.0};
         result.eia = result.centreView = result.allViews = result.lens = identical;
+        result.lensSweep = compareLensSweep(sweep, sweep);
         run.reference = std::move(frame);
         run.referenceLens = lens;
+        run.referenceSweep = std::move(sweep);
         return;
     }
     result.lens = compare(lens, run.referenceLens);
+    result.lensSweep = compareLensSweep(sweep, run.referenceSweep);
     result.eia = compare(frame.eia, run.reference.eia);
     const size_t centre = frame.views.size() / 2;
     result.centreView = compare(frame.views[centre], run.reference.views[centre]);
@@ -538,7 +573,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     report.textureAnisotropy = pipeline.scene().maxAnisotropy();
 
     BenchRun run{options, profile, packName, progress, images, pipeline, planConfigs(options),
-                 double(options.qualityFrame) / options.fps, {}, {}, {}, {}, {}, report};
+                 double(options.qualityFrame) / options.fps, {}, {}, {}, {}, {}, {}, report};
     openGstdCache(run, glDescription);
     if (options.interleave && !timeRoundRobin(run)) {
         publish(report, run.plan, run.results, true);

@@ -48,6 +48,7 @@ struct BenchOptions {
     double turntablePeriod = 10.0;  // seconds per revolution, 0 = still
     float aniso = 1.0f;             // --aniso: the scene textures' max anisotropy, every renderer
     uint32_t qualityFrame = 0;      // frame whose views and EIA are compared
+    uint32_t lensPositions = 9;     // --lens-positions: viewer positions of the through-the-lens sweep
     std::filesystem::path outDir;   // empty: nothing written
     bool quiet = false;             // no progress lines
     // The matrix (paper section 5, Tables 1 and 2): every renderer runs with every
@@ -87,6 +88,13 @@ struct RendererResult {
     // Through the lens: the simulated viewer's image at the centre view position
     // (simulated_viewer.h) of this EIA against that of the reference's EIA.
     Quality lens;
+    // The sweep (--lens-positions K): the simulated viewer at K positions across the
+    // viewing cone, t_j = (j + 1/2) N / K, each against the reference's at t_j: the mean
+    // and the worst RMSE and SSIM over the positions (FLIP not computed), and each one.
+    struct LensSweep {
+        double rmseMean = 0.0, rmseWorst = 0.0, ssimMean = 1.0, ssimWorst = 1.0;
+        std::vector<Quality> positions;
+    } lensSweep;
     // Wall-clock time per frame (README "Honest frame rates"): the timed frame count again,
     // back to back as fast as the CPU submits them, finished once at the end; above the
     // GPU total where a frame waits for the GPU or the CPU cannot keep it busy. 0 untimed.

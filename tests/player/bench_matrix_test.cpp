@@ -46,6 +46,7 @@ player::BenchOptions matrixOptions()
     o.aa = {player::Reconstruction::None, player::Reconstruction::View};
     o.ss = {player::Supersampling::None, player::Supersampling::Angular2x};
     o.frames = 1;
+    o.lensPositions = 3;
     o.warmup = 0;
     o.quiet = true;
     return o;
@@ -84,7 +85,16 @@ TEST_F(BenchMatrixTest, RunsEveryConfigurationAndWritesTheMatrix)
                   report.results[i].ss == "2v")
             << names[i];
         EXPECT_TRUE(std::isfinite(report.results[i].lens.rmse));
+        // The through-the-lens sweep: K positions, the worst at least the mean.
+        const auto& sweep = report.results[i].lensSweep;
+        ASSERT_EQ(sweep.positions.size(), size_t(o.lensPositions)) << names[i];
+        EXPECT_GE(sweep.rmseWorst, sweep.rmseMean);
+        EXPECT_LE(sweep.ssimWorst, sweep.ssimMean);
     }
+    // The reference against itself is identical at every position; a reconstruction moves
+    // the EIA, so mvr with the view filter differs somewhere in the sweep.
+    EXPECT_EQ(report.results[0].lensSweep.rmseWorst, 0.0);
+    EXPECT_GT(report.results[1].lensSweep.rmseWorst, 0.0);
     // mvr against itself: identical; the reconstruction changes the EIA, not the views.
     EXPECT_EQ(report.results[0].eia.rmse, 0.0);
     EXPECT_GT(report.results[1].eia.rmse, 0.0);
