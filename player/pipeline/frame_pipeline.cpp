@@ -102,6 +102,15 @@ void FramePipeline::animate(double time)
     frame_ = makeFrameSetup(profile_, framing_, time, turntablePeriod_, controls_);
 }
 
+void FramePipeline::poseScene(GpuTimer& timer)
+{
+    if (!scene_->deforms())
+        return; // static scenes have no pose stage
+    timer.begin(stage::kPose);
+    scene_->pose();
+    timer.end();
+}
+
 void FramePipeline::buildEia(GpuTimer& timer, Reconstruction reconstruction)
 {
     eia_->build(*targets_, reconstruction, timer);
@@ -129,6 +138,7 @@ void FramePipeline::renderFrame(Renderer& renderer, double time, GpuTimer& timer
 {
     animate(time);
     timer.begin(stage::kTotal);
+    poseScene(timer);
     if (ss_ == Supersampling::None) {
         renderer.render(*scene_, frame_, *targets_, timer);
     } else {
@@ -212,6 +222,7 @@ void FramePipeline::renderPreviewFrame(Renderer& renderer, double time, GpuTimer
     scene_->update(time);
     frame_ = makeFrameSetup(previewProfile_, framing_, time, turntablePeriod_, controls_);
     timer.begin(stage::kTotal);
+    poseScene(timer);
     renderer.render(*scene_, frame_, *previewTargets_, timer);
     previewEia_->build(*previewTargets_, reconstruction, timer);
     timer.end();

@@ -552,6 +552,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"eia_construct.comp", "comp", {"EIA_MODE 3"}},
         {"gstd_reconstruct.comp", "comp", {}},
         {"view_downsample.comp", "comp", {}},
+        {"pose_vertices.comp", "comp", {}},
+        {"pose_triangles.comp", "comp", {}},
         {"lfdpr_paper_points.vert", "vert", {}},
         {"lfdpr_paper_points.geom", "geom", {}},
         {"lfdpr_paper_points.frag", "frag", {}},

@@ -34,6 +34,7 @@ RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const 
     RenderedFrame out;
     player::GpuScene gpu(scene);
     gpu.update(request.time);
+    gpu.pose(); // skinned and morphed meshes, as FramePipeline's pose stage
     // The framing lfd-play uses: the scene's bounding sphere at the fill it was baked for.
     const double fill = scene.settings.framingFill > 0.0f ? double(scene.settings.framingFill) : 1.0;
     out.setup = player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds, fill), request.time,
