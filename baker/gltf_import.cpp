@@ -1081,6 +1081,22 @@ bool meshHasInfluences(const tinygltf::Model& model, int m)
     return true;
 }
 
+// 3.7.3.1: a JOINTS_n value indexes the skin's joints; one past them has no matrix.
+void checkJointIndices(const Scene& scene, const std::string& file)
+{
+    for (const Deformer& d : scene.deformers) {
+        if (d.skin == kNone)
+            continue;
+        const size_t joints = scene.skins[size_t(d.skin)].joints.size();
+        for (size_t v = d.firstVertex; v < size_t(d.firstVertex) + d.vertexCount; ++v)
+            for (int k = 0; k < 4; ++k)
+                if (scene.vertices.deform.joints[v][k] >= joints)
+                    fail(file, "node '" + scene.nodes[d.node].name + "': a vertex of its mesh uses joint " +
+                                   std::to_string(scene.vertices.deform.joints[v][k]) + ", but its skin '" +
+                                   scene.skins[size_t(d.skin)].name + "' has " + std::to_string(joints) + " joints");
+    }
+}
+
 // Step 6b: a deformer for each node instance of a skinned or morphed mesh (its skin
 // converted once), each with a mesh of its own and one vertex range.
 void importDeformers(const gltf::LoadedGltf& loaded, const NodeOrder& order, const std::string& file,
@@ -1114,6 +1130,7 @@ void importDeformers(const gltf::LoadedGltf& loaded, const NodeOrder& order, con
     }
     isolateDeformedMeshes(scene, file);
     assignDeformerVertices(scene);
+    checkJointIndices(scene, file);
 }
 
 // Step 7: rigid node animation (animations left without a channel are dropped).

@@ -108,10 +108,12 @@ TEST_F(PoseTest, AnimatedFramesMatchTheCpuPosedStaticBakeForMvrAndLfdpr)
             SCOPED_TRACE(std::string(renderer) + " t " + std::to_string(t));
             RenderRequest request;
             request.time = t;
+            request.eia = true;
             const RenderedFrame animated = renderFrame(renderer, scene, profile, request);
             const RenderedFrame reference = renderFrame(renderer, posedStatic(scene, t), profile, request);
             for (size_t v = 0; v < animated.views.size(); ++v)
                 EXPECT_GE(metrics::ssim(reference.views[v], animated.views[v]), 0.999) << "view " << v;
+            EXPECT_GE(metrics::ssim(reference.eia, animated.eia), 0.999) << "EIA";
             EXPECT_TRUE(animated.stageMs.count("pose") == 0 || animated.stageMs.at("pose") >= 0.0);
             if (first.empty())
                 first = animated.views;
