@@ -506,3 +506,29 @@ TEST_F(SamplesTest, CharacterAndCrowdAreSkinnedMorphedAndOutOfPhase)
     for (size_t i = 1; i < tips.size(); ++i)
         EXPECT_GT(glm::length(tips[i] - tips[0]), 0.01f) << i;
 }
+
+// The character tessellated to a bound well under its edges (0.03 m against 0.09): every
+// posed edge stays within it at poses sampled every 1/20 s over the loop, between the
+// keys the baker samples too (blending bends pieces near the joints; the baker splits
+// those again).
+TEST_F(SamplesTest, CharacterKeepsTheEdgeBoundInSampledPoses)
+{
+    const fs::path out = dir_ / "bound";
+    ASSERT_EQ(runTool("'" + out.string() + "' --scene character", dir_ / "bound.log").exitCode, 0);
+    lfd::Scene s = lfd::bake::importGltf(out / "character" / "character.gltf", {}).scene;
+    const double bound = 0.03;
+    const lfd::bake::TessellationStats stats = lfd::bake::tessellateScene(s, bound, lfd::bake::Log{});
+    EXPECT_GT(stats.trianglesSplit, 0u);
+    const lfd::Deformer& d = s.deformers.at(0);
+    float worst = 0.0f;
+    for (float t = 0.0f; t <= 2.0f; t += 0.05f) {
+        const std::vector<glm::mat4> world = lfd::nodeWorldMatrices(s, t);
+        const std::vector<glm::vec3> posed = lfd::posedPositions(s, lfd::poseInputs(s, t, world), 0);
+        const glm::mat3 linear(world[d.node]);
+        for (size_t i = 0; i < s.indices.size(); ++i) {
+            const uint32_t a = s.indices[i], b = s.indices[i % 3 == 2 ? i - 2 : i + 1];
+            worst = std::max(worst, glm::length(linear * (posed[a - d.firstVertex] - posed[b - d.firstVertex])));
+        }
+    }
+    EXPECT_LE(worst, bound * 1.001) << "longest posed edge over the sampled poses";
+}
