@@ -3,6 +3,7 @@
 // the tessellation bound holds at sampled poses (split triangles carry interpolated,
 // renormalised influences and deltas), and an unsupported case warns by name.
 #include "bake.h"
+#include "gltf_deformation.h"
 
 #include "skinned_test_scene.h"
 #include "skip_or_fail.h"
@@ -12,6 +13,7 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
 
 #include <filesystem>
 #include <fstream>
@@ -175,6 +177,55 @@ TEST_F(SkinBake, SkinWithoutInfluencesWarnsByName)
     EXPECT_TRUE(hasWarning(r, "nodes[0] is skinned but meshes[0] has no JOINTS_0 / WEIGHTS_0"))
         << (r.warnings.empty() ? "" : r.warnings.front());
     EXPECT_TRUE(r.scene.deformers.empty());
+}
+
+} // namespace
+} // namespace lfd::test
+
+namespace lfd::test {
+namespace {
+
+// A primitive with two JOINTS_n / WEIGHTS_n sets (eight influences per vertex): the four
+// largest are kept, renormalised to sum 1, and the warning names the primitive.
+TEST(SkinInfluences, MoreThanFourKeepTheFourLargestRenormalised)
+{
+    tinygltf::Model model;
+    const std::vector<float> joints0{0, 1, 2, 3}, joints1{4, 5, 6, 7};
+    const std::vector<float> weights0{0.30f, 0.05f, 0.20f, 0.02f}, weights1{0.25f, 0.03f, 0.10f, 0.05f};
+    tinygltf::Buffer buffer;
+    for (const std::vector<float>* v : {&joints0, &joints1, &weights0, &weights1}) {
+        const auto* bytes = reinterpret_cast<const unsigned char*>(v->data());
+        tinygltf::BufferView view;
+        view.buffer = 0;
+        view.byteOffset = buffer.data.size();
+        view.byteLength = 16;
+        buffer.data.insert(buffer.data.end(), bytes, bytes + 16);
+        model.bufferViews.push_back(view);
+        tinygltf::Accessor accessor;
+        accessor.bufferView = int(model.bufferViews.size() - 1);
+        accessor.componentType = TINYGLTF_COMPONENT_TYPE_FLOAT;
+        accessor.type = TINYGLTF_TYPE_VEC4;
+        accessor.count = 1;
+        model.accessors.push_back(accessor);
+    }
+    model.buffers.push_back(buffer);
+    tinygltf::Primitive prim;
+    prim.attributes = {{"JOINTS_0", 0}, {"JOINTS_1", 1}, {"WEIGHTS_0", 2}, {"WEIGHTS_1", 3}};
+    const std::vector<uint32_t> source{0};
+    const std::string label = "meshes[0].primitives[0]", file = "eight.gltf";
+    std::vector<glm::uvec4> joints;
+    std::vector<glm::vec4> weights;
+    std::vector<std::string> warnings;
+    bake::gltf::readInfluences({model, prim, source, 1, label, file}, joints, weights,
+                               [&](const std::string&, const std::string& m) { warnings.push_back(m); });
+    ASSERT_EQ(joints.size(), 1u);
+    EXPECT_EQ(joints[0], glm::uvec4(0, 4, 2, 6));           // 0.30, 0.25, 0.20, 0.10
+    EXPECT_NEAR(weights[0].x, 0.30f / 0.85f, 1e-6f);
+    EXPECT_NEAR(weights[0].x + weights[0].y + weights[0].z + weights[0].w, 1.0f, 1e-6f);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("meshes[0].primitives[0] has vertices with more than four joint influences"),
+              std::string::npos)
+        << warnings[0];
 }
 
 } // namespace
