@@ -60,12 +60,25 @@ struct ImportedScene {
 
 // Reads .gltf (external .bin / images or data URIs) and .glb. Converts strips/fans to
 // lists, de-indexes nothing (non-indexed primitives get an index buffer), keeps the node
-// hierarchy (matrix nodes decomposed to TRS), animation channels (T/R/S; LINEAR and
-// STEP; CUBICSPLINE linearised with a warning). Drops streams nothing uses.
-// Errors (throw BakeError): unreadable/malformed file, Draco, required unsupported
-// extensions, out-of-range accessors. Warnings: skins/morph targets ignored (static
-// pose), non-triangle primitives skipped, unsupported optional extensions.
+// hierarchy (matrix nodes decomposed to TRS), animation channels (T/R/S and morph
+// weights; LINEAR and STEP; CUBICSPLINE linearised with a warning), skins (JOINTS_0 /
+// WEIGHTS_0 and further sets: the four largest influences, renormalised; inverse bind
+// matrices) and morph targets (POSITION, NORMAL, TANGENT deltas): each node instance of a
+// skinned or morphed mesh becomes a Deformer with a mesh of its own. Drops streams
+// nothing uses. Errors (throw BakeError): unreadable/malformed file, Draco, required
+// unsupported extensions, out-of-range accessors. Warnings name what is not supported:
+// a skinned node whose mesh has no influences, morph attributes other than the three,
+// more than four influences, non-triangle primitives, optional extensions.
 ImportedScene importGltf(const std::filesystem::path& path, const Log& log);
+
+// ---- deformers.cpp ----------------------------------------------------------------
+// Gives every deformer's node a mesh no other node instances (copies of the mesh's
+// primitives and vertices; `file` names the input in the error past 2^32 vertices).
+void isolateDeformedMeshes(Scene& scene, const std::string& file);
+// Reorders the vertices so each deformer's mesh is one contiguous range (vertices of no
+// deformer first) and sets Deformer::firstVertex / vertexCount. Run after import and
+// after tessellation (which appends new vertices at the end).
+void assignDeformerVertices(Scene& scene);
 
 // ---- scene_bounds.cpp ------------------------------------------------------------
 // Bounds over the rest pose and every animation key time (node transforms come from

@@ -15,7 +15,10 @@ int typeComponents(int type)
     case TINYGLTF_TYPE_VEC2: return 2;
     case TINYGLTF_TYPE_VEC3: return 3;
     case TINYGLTF_TYPE_VEC4: return 4;
-    default: return 0; // matrices are never read by the importer
+    // Inverse bind matrices (3.7.3.1): MAT4 FLOAT, whose columns need no padding (3.6.2.4
+    // pads the columns of 1- and 2-byte MAT2 / MAT3 only, which the importer never reads).
+    case TINYGLTF_TYPE_MAT4: return 16;
+    default: return 0;
     }
 }
 

@@ -8,6 +8,7 @@
 // signature; bakeTexture decodes one texture at a time later.
 #include "bake.h"
 #include "gltf_accessors.h"
+#include "gltf_deformation.h"
 #include "gltf_load.h"
 #include "gltf_resources.h"
 #include "gltf_validation.h"
@@ -462,11 +463,16 @@ struct PrimitiveData {
     std::vector<glm::vec2> uvs;      // when the scene stores uvs
     std::vector<glm::vec4> tangents; // when the scene stores tangents
     std::vector<uint32_t> triangles; // local indices
+    DeformationStreams deform;       // as the scene stores them (morphTargets slots per vertex)
 };
 
 struct StreamNeeds {
     bool uv = false;
     bool tangent = false;
+    bool skin = false;          // some node of the scene is skinned
+    uint32_t morphTargets = 0;  // the most targets of any mesh
+    bool morphNormals = false;  // some target has NORMAL deltas
+    bool morphTangents = false; // some target has TANGENT deltas (and tangents are stored)
 };
 
 // Gathers attribute `values` (components per element) through `vertexSource`.
@@ -663,12 +669,37 @@ void readTangents(const PrimitiveSource& src, const std::vector<uint32_t>& verte
     }
 }
 
-// Step 8: everything else is not used by the renderer (one warning per attribute kind).
-void warnIgnoredAttributes(const tinygltf::Primitive& prim, Warnings& warnings)
+// Step 8: skin influences and morph deltas, when the scene stores them.
+void readDeformation(const PrimitiveSource& src, const std::vector<uint32_t>& vertexSource, StreamNeeds needs,
+                     PrimitiveData& out, Warnings& warnings)
+{
+    const gltf::DeformationSource d{src.model, src.prim, vertexSource, src.vertexCount, src.label, src.file};
+    if (needs.skin)
+        gltf::readInfluences(d, out.deform.joints, out.deform.weights,
+                             [&warnings](const std::string& key, const std::string& m) { warnings.once(key, m); });
+    out.deform.morphTargets = needs.morphTargets;
+    if (needs.morphTargets == 0)
+        return;
+    out.deform.positions = gltf::readMorphDeltas(d, "POSITION", needs.morphTargets);
+    if (needs.morphNormals)
+        out.deform.normals = gltf::readMorphDeltas(d, "NORMAL", needs.morphTargets);
+    if (needs.morphTangents)
+        out.deform.tangents = gltf::readMorphDeltas(d, "TANGENT", needs.morphTargets);
+    for (const auto& target : src.prim.targets)
+        for (const auto& [name, accessor] : target)
+            if (name != "POSITION" && name != "NORMAL" && name != "TANGENT")
+                warnings.once("morph " + name, "ignores morph target attribute " + name +
+                                                   " (only POSITION, NORMAL and TANGENT deltas are posed)");
+}
+
+// Step 9: everything else is not used by the renderer (one warning per attribute kind).
+void warnIgnoredAttributes(const tinygltf::Primitive& prim, bool skin, Warnings& warnings)
 {
     for (const auto& [name, accessor] : prim.attributes) {
         (void)accessor;
         if (name == "POSITION" || name == "NORMAL" || name == "TEXCOORD_0" || name == "TANGENT")
+            continue;
+        if (skin && (name.rfind("JOINTS_", 0) == 0 || name.rfind("WEIGHTS_", 0) == 0))
             continue;
         std::string kind = name;
         while (!kind.empty() && std::isdigit(uchar(kind.back())))
@@ -716,7 +747,8 @@ std::optional<PrimitiveData> readPrimitive(const gltf::LoadedGltf& loaded, const
         readUvs(src, vertexSource, out);
     if (needs.tangent)
         readTangents(src, vertexSource, material, out, warnings);
-    warnIgnoredAttributes(prim, warnings);
+    readDeformation(src, vertexSource, needs, out, warnings);
+    warnIgnoredAttributes(prim, needs.skin, warnings);
     return out;
 }
 
@@ -732,9 +764,8 @@ std::optional<AnimationPath> channelPath(const std::string& path, Warnings& warn
     if (path == "scale")
         return AnimationPath::Scale;
     if (path == "weights")
-        warnings.once("weights", "ignores morph-target weight animation (meshes keep their base pose)");
-    else
-        warnings.once("path " + path, "ignores animation channels on path " + quoted(path));
+        return AnimationPath::Weights;
+    warnings.once("path " + path, "ignores animation channels on path " + quoted(path));
     return std::nullopt;
 }
 
@@ -798,7 +829,15 @@ std::vector<glm::vec4> readKeyValues(const tinygltf::Model& model, int accessor,
     return values;
 }
 
-std::optional<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, const tinygltf::Animation& anim,
+// Morph targets of a glTF mesh (3.7.2.2: every primitive has as many as the first).
+uint32_t meshMorphTargets(const tinygltf::Model& model, int mesh)
+{
+    if (mesh < 0 || size_t(mesh) >= model.meshes.size() || model.meshes[size_t(mesh)].primitives.empty())
+        return 0;
+    return uint32_t(model.meshes[size_t(mesh)].primitives[0].targets.size());
+}
+
+std::vector<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, const tinygltf::Animation& anim,
                                                const tinygltf::AnimationChannel& ch, const std::string& animLabel,
                                                size_t channelIndex,
                                                const NodeOrder& order, const std::string& file,
@@ -809,16 +848,16 @@ std::optional<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, c
     AnimationChannel out;
     const std::optional<AnimationPath> path = channelPath(ch.target_path, warnings);
     if (!path)
-        return std::nullopt;
+        return {};
     out.path = *path;
     if (ch.target_node < 0)
-        return std::nullopt; // targets something other than a node (extension)
+        return {}; // targets something other than a node (extension)
     if (size_t(ch.target_node) >= model.nodes.size())
         fail(file, label + " targets missing node " + std::to_string(ch.target_node));
     if (order.newIndex[size_t(ch.target_node)] == kNone) {
         log.info("import: " + label + " targets " + nodeLabel(model, size_t(ch.target_node)) +
                  ", which is not in the scene: ignored");
-        return std::nullopt;
+        return {};
     }
     out.node = uint32_t(order.newIndex[size_t(ch.target_node)]);
     if (ch.sampler < 0 || size_t(ch.sampler) >= anim.samplers.size())
@@ -834,15 +873,18 @@ std::optional<AnimationChannel> convertChannel(const gltf::LoadedGltf& loaded, c
         if (!hasData(loaded, accessor)) {
             warnings.add(label + ": its sampler's " + what + " (accessors[" + std::to_string(accessor) +
                          "]) has no data in the file: channel ignored");
-            return std::nullopt;
+            return {};
         }
     out.times = readKeyTimes(model, sampler.input, label, file);
-    out.values = readKeyValues(model, sampler.output, out.times.size(), out.path == AnimationPath::Rotation, cubic,
-                               label, file);
     if (cubic)
         warnings.once("cubic " + animLabel,
                       animLabel + " uses CUBICSPLINE interpolation: linearised (keyframe values kept, tangents dropped)");
-    return out;
+    if (out.path == AnimationPath::Weights)
+        return gltf::weightChannels(model, sampler, out, meshMorphTargets(model, model.nodes[size_t(ch.target_node)].mesh),
+                                    cubic, label, file);
+    out.values = readKeyValues(model, sampler.output, out.times.size(), out.path == AnimationPath::Rotation, cubic,
+                               label, file);
+    return {out};
 }
 
 // ---- Import steps ------------------------------------------------------------------
@@ -919,6 +961,25 @@ StreamNeeds streamNeeds(const std::vector<Material>& materials)
     return needs;
 }
 
+// Step 4b: skin influences when some node of the scene is skinned; morph deltas for the
+// most targets any instanced mesh has, normal / tangent deltas when some target has them.
+void deformationNeeds(const gltf::LoadedGltf& loaded, const NodeOrder& order, const std::vector<size_t>& meshSources,
+                      StreamNeeds& needs)
+{
+    const tinygltf::Model& model = loaded.model;
+    for (size_t source : order.sourceOf)
+        needs.skin = needs.skin || (model.nodes[source].skin >= 0 && model.nodes[source].mesh >= 0 &&
+                                    size_t(model.nodes[source].skin) < loaded.skins.size());
+    for (size_t m : meshSources)
+        for (const tinygltf::Primitive& p : model.meshes[m].primitives) {
+            needs.morphTargets = std::max(needs.morphTargets, uint32_t(p.targets.size()));
+            for (const auto& target : p.targets) {
+                needs.morphNormals = needs.morphNormals || target.count("NORMAL");
+                needs.morphTangents = needs.morphTangents || (needs.tangent && target.count("TANGENT"));
+            }
+        }
+}
+
 // False (with a warning) for points and lines; fails on an invalid mode.
 bool checkTriangleMode(const tinygltf::Primitive& prim, const std::string& label, const std::string& file,
                        Warnings& warnings)
@@ -949,6 +1010,14 @@ void appendPrimitive(const PrimitiveData& data, int32_t material, const std::str
     vertices.normals.insert(vertices.normals.end(), data.normals.begin(), data.normals.end());
     vertices.uvs.insert(vertices.uvs.end(), data.uvs.begin(), data.uvs.end());
     vertices.tangents.insert(vertices.tangents.end(), data.tangents.begin(), data.tangents.end());
+    DeformationStreams& deform = vertices.deform;
+    for (auto [to, from] : {std::pair{&deform.positions, &data.deform.positions},
+                            std::pair{&deform.normals, &data.deform.normals},
+                            std::pair{&deform.tangents, &data.deform.tangents}})
+        to->insert(to->end(), from->begin(), from->end());
+    deform.joints.insert(deform.joints.end(), data.deform.joints.begin(), data.deform.joints.end());
+    deform.weights.insert(deform.weights.end(), data.deform.weights.begin(), data.deform.weights.end());
+    deform.morphTargets = data.deform.morphTargets;
     scene.primitives.push_back(out);
 }
 
@@ -966,9 +1035,6 @@ void importMesh(const gltf::LoadedGltf& loaded, size_t m, const std::vector<int3
         const std::string label = primitiveLabel(model, m, p);
         if (!checkTriangleMode(prim, label, file, warnings))
             continue;
-        if (!prim.targets.empty())
-            warnings.once("morph " + std::to_string(m),
-                          meshLabel(model, m) + " has morph targets: ignored (base pose used)");
         const int32_t material = prim.material >= 0 ? materialIndex[size_t(prim.material)] : kNone;
         const std::optional<PrimitiveData> data =
             readPrimitive(loaded, prim, label, material != kNone ? &scene.materials[size_t(material)] : nullptr,
@@ -982,7 +1048,7 @@ void importMesh(const gltf::LoadedGltf& loaded, size_t m, const std::vector<int3
 
 // Step 6: nodes (parents first) and their meshes.
 void importNodes(const tinygltf::Model& model, const NodeOrder& order, const std::vector<int32_t>& meshIndex,
-                 const std::string& file, Warnings& warnings, Scene& scene)
+                 const std::string& file, Scene& scene)
 {
     for (size_t n = 0; n < order.sourceOf.size(); ++n) {
         const size_t source = order.sourceOf[n];
@@ -990,11 +1056,81 @@ void importNodes(const tinygltf::Model& model, const NodeOrder& order, const std
         node.parent = order.parentOf[n];
         const int mesh = model.nodes[source].mesh;
         node.mesh = mesh >= 0 ? meshIndex[size_t(mesh)] : kNone;
-        if (model.nodes[source].skin >= 0)
-            warnings.once("skin",
-                          nodeLabel(model, source) + " is skinned: skinning ignored, mesh used in bind pose");
         scene.nodes.push_back(std::move(node));
     }
+}
+
+// The morph weights a node starts from (3.7.2.2: the node's, else the mesh's, else 0),
+// one per target slot of the scene.
+std::vector<float> defaultWeights(const tinygltf::Model& model, size_t source, uint32_t slots)
+{
+    const tinygltf::Node& node = model.nodes[source];
+    const std::vector<double>& given = !node.weights.empty() ? node.weights : model.meshes[size_t(node.mesh)].weights;
+    std::vector<float> weights(slots, 0.0f);
+    for (size_t t = 0; t < given.size() && t < slots; ++t)
+        weights[t] = std::isfinite(given[t]) ? float(given[t]) : 0.0f;
+    return weights;
+}
+
+// Whether every triangle primitive of glTF mesh m has JOINTS_0 and WEIGHTS_0.
+bool meshHasInfluences(const tinygltf::Model& model, int m)
+{
+    for (const tinygltf::Primitive& p : model.meshes[size_t(m)].primitives)
+        if (isTriangles(p) && (!p.attributes.count("JOINTS_0") || !p.attributes.count("WEIGHTS_0")))
+            return false;
+    return true;
+}
+
+// 3.7.3.1: a JOINTS_n value indexes the skin's joints; one past them has no matrix.
+void checkJointIndices(const Scene& scene, const std::string& file)
+{
+    for (const Deformer& d : scene.deformers) {
+        if (d.skin == kNone)
+            continue;
+        const size_t joints = scene.skins[size_t(d.skin)].joints.size();
+        for (size_t v = d.firstVertex; v < size_t(d.firstVertex) + d.vertexCount; ++v)
+            for (int k = 0; k < 4; ++k)
+                if (scene.vertices.deform.joints[v][k] >= joints)
+                    fail(file, "node '" + scene.nodes[d.node].name + "': a vertex of its mesh uses joint " +
+                                   std::to_string(scene.vertices.deform.joints[v][k]) + ", but its skin '" +
+                                   scene.skins[size_t(d.skin)].name + "' has " + std::to_string(joints) + " joints");
+    }
+}
+
+// Step 6b: a deformer for each node instance of a skinned or morphed mesh (its skin
+// converted once), each with a mesh of its own and one vertex range.
+void importDeformers(const gltf::LoadedGltf& loaded, const NodeOrder& order, const std::string& file,
+                     Warnings& warnings, Scene& scene)
+{
+    const tinygltf::Model& model = loaded.model;
+    std::map<int, int32_t> skinIndex; // glTF skin -> scene skin
+    for (size_t n = 0; n < order.sourceOf.size(); ++n) {
+        const size_t source = order.sourceOf[n];
+        const tinygltf::Node& node = model.nodes[source];
+        if (node.mesh < 0 || scene.nodes[n].mesh == kNone)
+            continue;
+        bool skinned = node.skin >= 0 && size_t(node.skin) < loaded.skins.size();
+        if (skinned && !meshHasInfluences(model, node.mesh)) {
+            warnings.add(nodeLabel(model, source) + " is skinned but " + meshLabel(model, size_t(node.mesh)) +
+                         " has no JOINTS_0 / WEIGHTS_0 on every primitive: skin not supported there, bind pose used");
+            skinned = false;
+        }
+        if (!skinned && meshMorphTargets(model, node.mesh) == 0)
+            continue;
+        Deformer d;
+        d.node = uint32_t(n);
+        if (skinned) {
+            auto [it, fresh] = skinIndex.emplace(node.skin, int32_t(scene.skins.size()));
+            if (fresh)
+                scene.skins.push_back(gltf::convertSkin(loaded, size_t(node.skin), order.newIndex, file));
+            d.skin = it->second;
+        }
+        d.weights = defaultWeights(model, source, scene.vertices.deform.morphTargets);
+        scene.deformers.push_back(std::move(d));
+    }
+    isolateDeformedMeshes(scene, file);
+    assignDeformerVertices(scene);
+    checkJointIndices(scene, file);
 }
 
 // Step 7: rigid node animation (animations left without a channel are dropped).
@@ -1007,11 +1143,10 @@ void importAnimations(const gltf::LoadedGltf& loaded, const NodeOrder& order, co
         Animation out;
         out.name = anim.name.empty() ? "animation " + std::to_string(a) : anim.name;
         const std::string label = named("animations[" + std::to_string(a) + "]", anim.name);
-        for (size_t c = 0; c < anim.channels.size(); ++c) {
-            if (std::optional<AnimationChannel> channel =
-                    convertChannel(loaded, anim, anim.channels[c], label, c, order, file, warnings, log))
-                out.channels.push_back(std::move(*channel));
-        }
+        for (size_t c = 0; c < anim.channels.size(); ++c)
+            for (AnimationChannel& channel :
+                 convertChannel(loaded, anim, anim.channels[c], label, c, order, file, warnings, log))
+                out.channels.push_back(std::move(channel));
         if (!out.channels.empty())
             scene.animations.push_back(std::move(out));
     }
@@ -1065,14 +1200,16 @@ void importInto(const std::filesystem::path& path, const std::string& file, cons
     TextureTable textures(loaded, path, file, warnings);
     convertMaterials(model, materialIndex, textures, file, scene);
 
-    const StreamNeeds needs = streamNeeds(scene.materials);
+    StreamNeeds needs = streamNeeds(scene.materials);
+    deformationNeeds(loaded, order, meshes.meshSources, needs);
     // Step 5: geometry, one lfd::Mesh per instanced glTF mesh, primitives contiguous.
     for (size_t m : meshes.meshSources)
         importMesh(loaded, m, materialIndex, needs, file, warnings, scene);
     if (scene.indices.empty())
         fail(file, "contains no triangles to import");
 
-    importNodes(model, order, meshes.meshIndex, file, warnings, scene);
+    importNodes(model, order, meshes.meshIndex, file, scene);
+    importDeformers(loaded, order, file, warnings, scene);
     importAnimations(loaded, order, file, warnings, log, scene);
     addTextures(textures, result);
     scene.triangleStats.clear();

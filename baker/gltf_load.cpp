@@ -217,7 +217,7 @@ json documentForTinygltf(json document, Memory& memory, const std::string& file)
         for (size_t i = 0; i < document["buffers"].size(); ++i)
             document["buffers"][i]["uri"] = kBufferName + std::to_string(i);
     // Data-URI images come from memory (one zero byte where a malformed one was reported);
-    // what the baker never reads (cameras, skins, samplers) is left out, so tinygltf's
+    // what tinygltf need not read (cameras, samplers; skins: readSkins) is left out, so tinygltf's
     // parsing of them cannot fail a file the checks accepted.
     if (document.contains("images") && document["images"].is_array())
         for (size_t i = 0; i < document["images"].size(); ++i) {
@@ -299,6 +299,32 @@ tinygltf::Model parseWithTinygltf(const json& document, Memory& memory, const fs
     return model;
 }
 
+// The document's skins: names, joints that name existing nodes, the matrices' accessor.
+std::vector<SkinJson> readSkins(const json& document, size_t nodeCount)
+{
+    std::vector<SkinJson> skins;
+    const auto it = document.find("skins");
+    if (it == document.end() || !it->is_array())
+        return skins;
+    for (const json& skin : *it) {
+        SkinJson out;
+        if (!skin.is_object()) {
+            skins.push_back(out);
+            continue;
+        }
+        if (skin.contains("name") && skin["name"].is_string())
+            out.name = skin["name"].get<std::string>();
+        if (skin.contains("joints") && skin["joints"].is_array())
+            for (const json& j : skin["joints"])
+                if (j.is_number_integer() && j.get<int64_t>() >= 0 && size_t(j.get<int64_t>()) < nodeCount)
+                    out.joints.push_back(int(j.get<int64_t>()));
+        if (skin.contains("inverseBindMatrices") && skin["inverseBindMatrices"].is_number_integer())
+            out.inverseBindMatrices = int(skin["inverseBindMatrices"].get<int64_t>());
+        skins.push_back(std::move(out));
+    }
+    return skins;
+}
+
 } // namespace
 
 const std::set<std::string>& supportedExtensions()
@@ -347,6 +373,7 @@ LoadedGltf loadGltf(const fs::path& path, const std::string& file, std::vector<S
     const json forTinygltf = documentForTinygltf(document, memory, file);
     LoadedGltf out;
     out.model = parseWithTinygltf(forTinygltf, memory, path, file, warnings);
+    out.skins = readSkins(document, out.model.nodes.size());
     out.dataImages = std::move(resources.dataImages);
     out.buffersWithoutData = resources.withoutData;
     out.bufferFiles = std::move(resources.files);

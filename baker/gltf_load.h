@@ -20,8 +20,18 @@
 
 namespace lfd::bake::gltf {
 
+// A skin as the document gives it (section 3.7.3). tinygltf does not parse skins (see
+// documentForTinygltf); the importer reads these instead. Joints outside the node list
+// are dropped here (the semantic checks warned), -1: no inverse bind matrices.
+struct SkinJson {
+    std::string name;
+    std::vector<int> joints;
+    int inverseBindMatrices = -1;
+};
+
 struct LoadedGltf {
     tinygltf::Model model;
+    std::vector<SkinJson> skins; // the document's "skins", in order
     // Images given by data URIs, decoded (image index -> encoded bytes): tinygltf holds
     // none of them.
     std::map<size_t, std::vector<uint8_t>> dataImages;

@@ -420,7 +420,7 @@ private:
         }
         if (joints != weights)
             report(kWarn, at(path, "attributes"), std::to_string(joints) + " JOINTS_n but " + std::to_string(weights) +
-                                                      " WEIGHTS_n attributes (skinning is not baked)");
+                                                      " WEIGHTS_n attributes (an unpaired set is not read)");
         texCoords(prim, path);
     }
 
@@ -752,7 +752,7 @@ private:
         }
     }
 
-    // ---- Skins (section 3.7.3; skinning is not baked: warnings) -----------------------
+    // ---- Skins (section 3.7.3; what the baker cannot pose: warnings) --------------------
 
     void skins()
     {

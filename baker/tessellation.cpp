@@ -384,7 +384,69 @@ uint32_t MeshTessellator::appendVertex()
         added.tangents.emplace_back();
     if (!v_.scene.uvs.empty())
         added.uvs.emplace_back();
+    const DeformationStreams& deform = v_.scene.deform;
+    if (deform.skinned()) {
+        added.deform.joints.emplace_back();
+        added.deform.weights.emplace_back();
+    }
+    const size_t slots = deform.morphTargets;
+    for (auto [from, to] : {std::pair{&deform.positions, &added.deform.positions},
+                            std::pair{&deform.normals, &added.deform.normals},
+                            std::pair{&deform.tangents, &added.deform.tangents}})
+        if (!from->empty())
+            to->resize(to->size() + slots);
     return index;
+}
+
+// Skin influences and morph deltas of new vertex `target` (glTF 3.7.2.2, 3.7.3): deltas
+// linearly per target; influences as the weighted sum over the corners' joints, the four
+// largest kept and renormalised (so a point inside a triangle bends as its corners do).
+template <size_t N>
+void interpolateDeformation(const VertexStreams& v, VertexStreams& to, size_t target,
+                            const std::array<uint32_t, N>& from, const std::array<double, N>& weight)
+{
+    const DeformationStreams& d = v.deform;
+    if (d.skinned()) {
+        std::array<std::pair<double, uint32_t>, 4 * N> sum{};
+        size_t used = 0;
+        for (size_t i = 0; i < N; ++i)
+            for (int k = 0; k < 4; ++k) {
+                const uint32_t joint = d.joints[from[i]][k];
+                const double w = weight[i] * double(d.weights[from[i]][k]);
+                size_t slot = 0;
+                while (slot < used && sum[slot].second != joint)
+                    ++slot;
+                if (slot == used)
+                    sum[used++] = {0.0, joint};
+                sum[slot].first += w;
+            }
+        for (size_t i = 1; i < used; ++i) // heaviest first (insertion sort: at most 12 entries)
+            for (size_t k = i; k > 0 && sum[k].first > sum[k - 1].first; --k)
+                std::swap(sum[k], sum[k - 1]);
+        double total = 0.0;
+        for (size_t k = 0; k < 4 && k < used; ++k)
+            total += sum[k].first;
+        glm::uvec4 joints(0u);
+        glm::vec4 weights(0.0f);
+        for (size_t k = 0; k < 4 && k < used && total > 0.0; ++k) {
+            joints[glm::length_t(k)] = sum[k].second;
+            weights[glm::length_t(k)] = float(sum[k].first / total);
+        }
+        to.deform.joints[target] = joints;
+        to.deform.weights[target] = weights;
+    }
+    const size_t slots = d.morphTargets;
+    for (auto [src, dst] : {std::pair{&d.positions, &to.deform.positions}, std::pair{&d.normals, &to.deform.normals},
+                            std::pair{&d.tangents, &to.deform.tangents}}) {
+        if (src->empty())
+            continue;
+        for (size_t t = 0; t < slots; ++t) {
+            glm::dvec3 delta(0.0);
+            for (size_t i = 0; i < N; ++i)
+                delta += weight[i] * glm::dvec3((*src)[from[i] * slots + t]);
+            (*dst)[target * slots + t] = glm::vec3(delta);
+        }
+    }
 }
 
 // Interpolated attributes of new vertex `target` (an index into `to`) from scene vertices
@@ -418,6 +480,7 @@ void interpolateAttributes(const VertexStreams& v, VertexStreams& to, size_t tar
             uv += weight[i] * glm::dvec2(v.uvs[from[i]]);
         to.uvs[target] = glm::vec2(uv);
     }
+    interpolateDeformation<N>(v, to, target, from, weight);
 }
 
 // First of the rate - 1 points of the edge between vertices va and vb, stored from the
@@ -576,6 +639,12 @@ void validateScene(const Scene& scene)
     if ((!v.normals.empty() && v.normals.size() != n) ||
         (!v.tangents.empty() && v.tangents.size() != n) || (!v.uvs.empty() && v.uvs.size() != n))
         throw BakeError("tessellation: vertex streams have different lengths");
+    const DeformationStreams& d = v.deform;
+    if ((d.skinned() && (d.joints.size() != n || d.weights.size() != n)) ||
+        (!d.positions.empty() && d.positions.size() != n * d.morphTargets) ||
+        (!d.normals.empty() && d.normals.size() != n * d.morphTargets) ||
+        (!d.tangents.empty() && d.tangents.size() != n * d.morphTargets))
+        throw BakeError("tessellation: skin or morph streams do not match the vertex count");
     if (scene.indices.size() % 3 != 0)
         throw BakeError("tessellation: index count is not a multiple of 3");
     for (size_t p = 0; p < scene.primitives.size(); ++p) {
@@ -630,6 +699,14 @@ void truncateStreams(VertexStreams& v, size_t count)
         v.tangents.resize(count);
     if (!v.uvs.empty())
         v.uvs.resize(count);
+    DeformationStreams& d = v.deform;
+    if (d.skinned()) {
+        d.joints.resize(count);
+        d.weights.resize(count);
+    }
+    for (std::vector<glm::vec3>* deltas : {&d.positions, &d.normals, &d.tangents})
+        if (!deltas->empty())
+            deltas->resize(count * d.morphTargets);
 }
 
 void appendStreams(VertexStreams& v, const VertexStreams& added)
@@ -638,6 +715,12 @@ void appendStreams(VertexStreams& v, const VertexStreams& added)
     v.normals.insert(v.normals.end(), added.normals.begin(), added.normals.end());
     v.tangents.insert(v.tangents.end(), added.tangents.begin(), added.tangents.end());
     v.uvs.insert(v.uvs.end(), added.uvs.begin(), added.uvs.end());
+    DeformationStreams& d = v.deform;
+    d.joints.insert(d.joints.end(), added.deform.joints.begin(), added.deform.joints.end());
+    d.weights.insert(d.weights.end(), added.deform.weights.begin(), added.deform.weights.end());
+    d.positions.insert(d.positions.end(), added.deform.positions.begin(), added.deform.positions.end());
+    d.normals.insert(d.normals.end(), added.deform.normals.begin(), added.deform.normals.end());
+    d.tangents.insert(d.tangents.end(), added.deform.tangents.begin(), added.deform.tangents.end());
 }
 
 bool usableBound(double bound) { return std::isfinite(bound) && bound > 0.0; }
@@ -1062,6 +1145,37 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
     return stats;
 }
 
+// Blending between joints stretches the inside of a triangle more than its edges (a
+// piece near a bending joint turns with the weight gradient), so a deformed mesh's
+// pieces can exceed the bound in a pose although its original edges did not. The
+// stretch is measured again on the pieces (meshMaxWorldScale over their own edges) and
+// a mesh that stretches more than it was split for is split again, at most twice (the
+// measure converges as the pieces shrink; tests/baker/skin_bake_test.cpp checks the
+// bound at sampled poses).
+void refineDeformedMeshes(Scene& scene, double maxEdgeWorld, std::vector<float> scale, const Log& log,
+                          unsigned threads, TessellationStats& stats)
+{
+    for (int pass = 0; pass < 2 && !scene.deformers.empty(); ++pass) {
+        const std::vector<float> posed = meshMaxWorldScale(scene);
+        std::vector<double> maxEdgeObject(scene.meshes.size(), std::numeric_limits<double>::infinity());
+        bool again = false;
+        for (size_t m = 0; m < posed.size(); ++m)
+            if (std::isfinite(posed[m]) && posed[m] > scale[m] * 1.0001f) {
+                maxEdgeObject[m] = maxEdgeWorld / double(posed[m]);
+                scale[m] = posed[m];
+                again = true;
+            }
+        if (!again)
+            return;
+        const TessellationStats more = tessellateMeshes(scene, maxEdgeObject, scale, log, threads);
+        assignDeformerVertices(scene);
+        stats.trianglesOut = more.trianglesOut;
+        stats.trianglesSplit += more.trianglesSplit;
+        stats.maxEdgeWorldAfter = more.maxEdgeWorldAfter;
+        stats.meanEdgeWorldAfter = more.meanEdgeWorldAfter;
+    }
+}
+
 TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& log, unsigned threads)
 {
     if (!(maxEdgeWorld > 0.0))
@@ -1076,7 +1190,10 @@ TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& 
     for (size_t m = 0; m < scale.size(); ++m)
         if (std::isfinite(scale[m]) && scale[m] > 0.0f)
             maxEdgeObject[m] = maxEdgeWorld / double(scale[m]); // unused meshes: untouched
-    return tessellateMeshes(scene, maxEdgeObject, scale, log, threads);
+    TessellationStats stats = tessellateMeshes(scene, maxEdgeObject, scale, log, threads);
+    assignDeformerVertices(scene); // new vertices were appended after every mesh's
+    refineDeformedMeshes(scene, maxEdgeWorld, scale, log, threads, stats);
+    return stats;
 }
 
 MeshTopology meshTopology(const Scene& scene, uint32_t mesh)

@@ -1,6 +1,6 @@
 // lfd-make-samples: writes the project's own glTF 2.0 sample scenes.
 //
-//   lfd-make-samples OUTDIR [--scene gallery|car|room|dense|rgbd|all] [--texture-size N]
+//   lfd-make-samples OUTDIR [--scene gallery|car|room|dense|character|crowd|rgbd|all] [--texture-size N]
 //                    [--instances N] [--quiet]
 //
 // Each scene goes to OUTDIR/<scene>/ (<scene>.gltf, <scene>.bin, PNG textures). A scene
@@ -28,12 +28,13 @@ using namespace lfd::samples;
 namespace {
 
 constexpr const char* kUsage =
-    "usage: lfd-make-samples OUTDIR [--scene gallery|car|room|dense|rgbd|all] [--texture-size N] "
+    "usage: lfd-make-samples OUTDIR [--scene gallery|car|room|dense|character|crowd|rgbd|all] [--texture-size N] "
     "[--instances N] [--quiet]\n"
     "  --scene         which scene to write (default: all)\n"
     "  --texture-size  gallery painting size in pixels, 16..32768 (default: 2048)\n"
     "  --instances     cars in the room scene (default 16), objects in the dense scene\n"
-    "                  (default 240: about 1.1M drawn triangles), 1..10000\n"
+    "                  (default 240: about 1.1M drawn triangles), characters in the crowd\n"
+    "                  (default 100: about 1M drawn triangles), 1..10000\n"
     "  --quiet         print errors only\n";
 
 struct UsageError : std::runtime_error {
@@ -104,10 +105,12 @@ Options parseArguments(int argc, char** argv)
         throw UsageError("missing OUTDIR");
     if (scene == "all")
         options.scenes = {"gallery", "car", "room"}; // dense is for benchmarks: ask for it
-    else if (scene == "gallery" || scene == "car" || scene == "room" || scene == "dense" || scene == "rgbd")
+    else if (scene == "gallery" || scene == "car" || scene == "room" || scene == "dense" || scene == "character" ||
+             scene == "crowd" || scene == "rgbd")
         options.scenes = {scene};
     else
-        throw UsageError("unknown scene '" + scene + "' (expected gallery, car, room, dense, rgbd or all)");
+        throw UsageError("unknown scene '" + scene +
+                         "' (expected gallery, car, room, dense, character, crowd, rgbd or all)");
     return options;
 }
 
@@ -143,6 +146,10 @@ SceneSummary writeSceneAtomically(const Options& options, const std::string& nam
             summary = writeCarScene(staging);
         else if (name == "rgbd")
             summary = writeRgbdSample(staging);
+        else if (name == "character")
+            summary = writeCharacterScene(staging);
+        else if (name == "crowd")
+            summary = writeCrowdScene(staging, options.instances > 0 ? options.instances : 100);
         else if (name == "room")
             summary = writeRoomScene(staging, options.instances > 0 ? options.instances : 16);
         else

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 namespace lfd::samples {
@@ -145,8 +146,10 @@ int GltfBuilder::addMesh(const std::string& name, const std::vector<PrimitiveSpe
                                             TINYGLTF_TYPE_SCALAR, sizeof(uint32_t),
                                             TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
         }
+        addDeformation(data, primitive);
         mesh.primitives.push_back(primitive);
         triangles += data.triangleCount();
+        mesh.weights.assign(data.morphPositions.size(), 0.0);
     }
     model_.meshes.push_back(mesh);
     meshTriangles_.push_back(triangles);
@@ -159,6 +162,7 @@ int GltfBuilder::addNode(const NodeSpec& spec)
     node.name = spec.name;
     node.mesh = spec.mesh;
     node.children = spec.children;
+    node.skin = spec.skin;
     if (spec.translation != glm::vec3(0.0f))
         node.translation = {spec.translation.x, spec.translation.y, spec.translation.z};
     if (spec.rotation != glm::quat(1.0f, 0.0f, 0.0f, 0.0f)) {
@@ -197,6 +201,71 @@ void GltfBuilder::addRotationAnimation(const std::string& name, const std::vecto
         channel.sampler = static_cast<int>(animation.samplers.size() - 1);
         channel.target_node = node;
         channel.target_path = "rotation";
+        animation.channels.push_back(channel);
+    }
+    model_.animations.push_back(animation);
+}
+
+void GltfBuilder::addDeformation(const MeshData& data, tinygltf::Primitive& primitive)
+{
+    const size_t n = data.positions.size();
+    if (!data.joints.empty()) {
+        if (data.joints.size() != n || data.weights.size() != n)
+            throw std::logic_error("addMesh: joints and weights must have one entry per vertex");
+        primitive.attributes["JOINTS_0"] = addAccessor(data.joints.data(), n, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                                       TINYGLTF_TYPE_VEC4, sizeof(glm::u16vec4),
+                                                       TINYGLTF_TARGET_ARRAY_BUFFER);
+        primitive.attributes["WEIGHTS_0"] = addAccessor(data.weights.data(), n, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                                        TINYGLTF_TYPE_VEC4, sizeof(glm::vec4),
+                                                        TINYGLTF_TARGET_ARRAY_BUFFER);
+    }
+    for (size_t t = 0; t < data.morphPositions.size(); ++t) {
+        const std::vector<glm::vec3>& d = data.morphPositions[t];
+        // A morph target's POSITION accessor needs min/max too (glTF 3.7.2.2).
+        glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+        for (const glm::vec3& p : d) {
+            lo = glm::min(lo, p);
+            hi = glm::max(hi, p);
+        }
+        std::map<std::string, int> target;
+        target["POSITION"] = addAccessor(d.data(), n, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3,
+                                         sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER, &lo.x, &hi.x);
+        if (t < data.morphNormals.size())
+            target["NORMAL"] = addAccessor(data.morphNormals[t].data(), n, TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                           TINYGLTF_TYPE_VEC3, sizeof(glm::vec3), TINYGLTF_TARGET_ARRAY_BUFFER);
+        primitive.targets.push_back(target);
+    }
+}
+
+int GltfBuilder::addSkin(const std::vector<int>& joints, const std::vector<glm::mat4>& inverseBindMatrices)
+{
+    tinygltf::Skin skin;
+    skin.joints = joints;
+    skin.inverseBindMatrices = addAccessor(inverseBindMatrices.data(), inverseBindMatrices.size(),
+                                           TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_MAT4, sizeof(glm::mat4), 0);
+    model_.skins.push_back(skin);
+    return static_cast<int>(model_.skins.size() - 1);
+}
+
+void GltfBuilder::addAnimation(const std::string& name, const std::vector<ChannelSpec>& channels)
+{
+    tinygltf::Animation animation;
+    animation.name = name;
+    for (const ChannelSpec& c : channels) {
+        const float tMin = c.times.front(), tMax = c.times.back();
+        tinygltf::AnimationSampler sampler;
+        sampler.input = addAccessor(c.times.data(), c.times.size(), TINYGLTF_COMPONENT_TYPE_FLOAT,
+                                    TINYGLTF_TYPE_SCALAR, sizeof(float), 0, &tMin, &tMax);
+        const bool rotation = c.path == "rotation";
+        sampler.output = addAccessor(c.values.data(), rotation ? c.values.size() / 4 : c.values.size(),
+                                     TINYGLTF_COMPONENT_TYPE_FLOAT, rotation ? TINYGLTF_TYPE_VEC4 : TINYGLTF_TYPE_SCALAR,
+                                     rotation ? 4 * sizeof(float) : sizeof(float), 0);
+        sampler.interpolation = "LINEAR";
+        animation.samplers.push_back(sampler);
+        tinygltf::AnimationChannel channel;
+        channel.sampler = static_cast<int>(animation.samplers.size() - 1);
+        channel.target_node = c.node;
+        channel.target_path = c.path;
         animation.channels.push_back(channel);
     }
     model_.animations.push_back(animation);

@@ -38,6 +38,18 @@ struct NodeSpec {
     glm::vec3 translation{0.0f};
     glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
     std::vector<int> children;
+    int skin = -1; // GltfBuilder::addSkin
+};
+
+// One animation channel: node, path ("rotation", "weights", ...), LINEAR keys; values
+// hold `components` floats per key (4 for rotations as x, y, z, w; the target count for
+// weights).
+struct ChannelSpec {
+    int node = -1;
+    std::string path;
+    std::vector<float> times;
+    std::vector<float> values;
+    int components = 4;
 };
 
 class GltfBuilder {
@@ -56,6 +68,10 @@ public:
     void addRotationAnimation(const std::string& name, const std::vector<int>& nodes,
                               const std::vector<float>& times,
                               const std::vector<glm::quat>& rotations);
+    // A skin: joint nodes and their inverse bind matrices (column-major, glTF's layout).
+    int addSkin(const std::vector<int>& joints, const std::vector<glm::mat4>& inverseBindMatrices);
+    // One animation of several channels, each with its own sampler and accessors.
+    void addAnimation(const std::string& name, const std::vector<ChannelSpec>& channels);
     // The default scene; `roots` are its root nodes.
     void setScene(const std::string& name, const std::vector<int>& roots);
 
@@ -71,6 +87,9 @@ private:
     int addAccessor(const void* data, size_t count, int componentType, int type,
                     size_t elementBytes, int target, const float* minValues = nullptr,
                     const float* maxValues = nullptr);
+
+    // JOINTS_0 / WEIGHTS_0 and the morph targets of `data`, when it has them.
+    void addDeformation(const MeshData& data, tinygltf::Primitive& primitive);
 
     tinygltf::Model model_;
     std::vector<size_t> meshTriangles_;

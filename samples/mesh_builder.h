@@ -7,6 +7,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
+#include <glm/gtc/type_precision.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -20,6 +21,12 @@ struct MeshData {
     std::vector<glm::vec2> uvs;      // empty for untextured parts
     std::vector<glm::vec4> tangents; // empty unless the material has a normal map
     std::vector<uint32_t> indices;
+    // Skinning (glTF 3.7.3): JOINTS_0 / WEIGHTS_0, empty for rigid parts.
+    std::vector<glm::u16vec4> joints;
+    std::vector<glm::vec4> weights;
+    // Morph targets (glTF 3.7.2.2): per target, POSITION and NORMAL deltas.
+    std::vector<std::vector<glm::vec3>> morphPositions;
+    std::vector<std::vector<glm::vec3>> morphNormals;
 
     size_t triangleCount() const { return indices.size() / 3; }
 };

@@ -32,6 +32,14 @@ SceneSummary writeRoomScene(const std::filesystem::path& dir, int instances);
 // 4.5K-triangle object (240: about 1.1M drawn triangles), rows behind rows.
 SceneSummary writeDenseScene(const std::filesystem::path& dir, int instances);
 
+// A skinned, textured character: a limb of four bones swaying in a wave, with a morph
+// target (its middle and head swell) whose weight is animated; 2 s loop.
+SceneSummary writeCharacterScene(const std::filesystem::path& dir);
+
+// `instances` characters on a grid (100: about 1M drawn triangles), each with its own
+// skeleton at its own phase of the loop, all sharing one mesh.
+SceneSummary writeCrowdScene(const std::filesystem::path& dir, int instances);
+
 // An RGB-D photo for `lfd-bake --rgbd`, not a glTF scene: photo.png, depth.png (white =
 // near) and photo_rgbd.png (the two side by side), 512 x 384 each.
 SceneSummary writeRgbdSample(const std::filesystem::path& dir);

@@ -26,6 +26,9 @@ mkdir -p "$seeds/gltf" "$seeds/pack" "$build/corpus/gltf" "$build/corpus/pack" "
 # The fuzzers have sanitizers on; the seed tools need not be fast, only correct.
 export ASAN_OPTIONS=detect_leaks=0
 "$build/samples/lfd-make-samples" "$seeds/samples" --scene all --texture-size 64 --instances 2 --quiet
+# The skinned samples: packs with every deformation section (ACHN version 2 included).
+"$build/samples/lfd-make-samples" "$seeds/samples" --scene character --quiet
+"$build/samples/lfd-make-samples" "$seeds/samples" --scene crowd --instances 2 --quiet
 for scene in "$seeds"/samples/*/*.gltf; do
   name=$(basename "$scene" .gltf)
   "$build/baker/lfd-bake" "$scene" -o "$seeds/pack/$name.lfdpack" --max-texture-size 64 --quiet

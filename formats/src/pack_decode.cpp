@@ -37,6 +37,7 @@ public:
         decodeTextures(scene.textures);
         decodeNodes(scene.nodes);
         decodeAnimations(scene.animations);
+        decodeDeformation(scene);
         return scene;
     }
 
@@ -335,7 +336,12 @@ private:
             for (uint32_t c = 0; c < r.channelCount; ++c) {
                 const auto ch = record<ChannelRecord>(channels, nextChannel + c);
                 const std::string channelWhere = where + " channel " + std::to_string(c);
-                reserved(ch.reserved, channelWhere);
+                if (channels.version < kChannelsWeightsVersion || ch.path != uint32_t(AnimationPath::Weights))
+                    reserved(ch.reserved, channelWhere);
+                else
+                    anim.channels[c].weightOffset = ch.reserved;
+                if (channels.version < kChannelsWeightsVersion && ch.path == uint32_t(AnimationPath::Weights))
+                    fail(channelWhere + ": a weights channel in a version-1 'ACHN' section");
                 if (ch.firstKey != nextKey || times.count - nextKey < ch.keyCount)
                     fail(channelWhere + ": keys [" + std::to_string(ch.firstKey) + ", +" +
                          std::to_string(ch.keyCount) + ") do not follow the previous channel's within the " +
@@ -359,6 +365,78 @@ private:
                  " channels");
         if (nextKey != times.count)
             fail("animation channels use " + std::to_string(nextKey) + " of " + std::to_string(times.count) + " keys");
+    }
+
+    // Skin influences, morph deltas, skins and deformers (all optional sections).
+    void decodeDeformation(Scene& scene)
+    {
+        DeformationStreams& d = scene.vertices.deform;
+        d.joints = array<glm::uvec4>(kTagJoints);
+        d.weights = array<glm::vec4>(kTagWeights);
+        d.positions = array<glm::vec3>(kTagMorphPositions);
+        d.normals = array<glm::vec3>(kTagMorphNormals);
+        d.tangents = array<glm::vec3>(kTagMorphTangents);
+        const size_t vertices = scene.vertices.positions.size();
+        if (!d.positions.empty() && (vertices == 0 || d.positions.size() % vertices != 0))
+            fail("'MPOS' holds " + std::to_string(d.positions.size()) + " deltas, not a multiple of the " +
+                 std::to_string(vertices) + " vertices");
+        d.morphTargets = vertices == 0 ? 0 : uint32_t(d.positions.size() / vertices);
+        decodeSkins(scene.skins);
+        decodeDeformers(scene.deformers);
+    }
+
+    void decodeSkins(std::vector<Skin>& skins)
+    {
+        const SectionEntry* e = table_.find(kTagSkins);
+        const SectionEntry* joints = table_.find(kTagSkinJoints);
+        if (!e)
+            return;
+        const uint64_t jointCount = joints ? joints->count : 0;
+        uint64_t next = 0;
+        skins.resize(size_t(e->count));
+        for (uint64_t i = 0; i < e->count; ++i) {
+            const auto r = record<SkinRecord>(*e, i);
+            const std::string where = "skin " + std::to_string(i);
+            if (r.firstJoint != next || jointCount - next < r.jointCount)
+                fail(where + ": joints [" + std::to_string(r.firstJoint) + ", +" + std::to_string(r.jointCount) +
+                     ") do not follow the previous skin's within the " + std::to_string(jointCount) + " joints");
+            skins[i].name = string(r.name, where);
+            for (uint32_t j = 0; j < r.jointCount; ++j) {
+                const auto jr = record<SkinJointRecord>(*joints, next + j);
+                reserved(uint64_t(jr.reserved[0]) | jr.reserved[1] | jr.reserved[2], where + " joint " + std::to_string(j));
+                glm::mat4 m;
+                std::memcpy(&m[0][0], jr.inverseBindMatrix, sizeof jr.inverseBindMatrix);
+                skins[i].joints.push_back(jr.node);
+                skins[i].inverseBindMatrices.push_back(m);
+            }
+            next += r.jointCount;
+        }
+        if (next != jointCount)
+            fail("skins use " + std::to_string(next) + " of " + std::to_string(jointCount) + " joints");
+    }
+
+    void decodeDeformers(std::vector<Deformer>& deformers)
+    {
+        const SectionEntry* e = table_.find(kTagDeformers);
+        if (!e)
+            return;
+        const std::vector<float> weights = array<float>(kTagDeformerWeights);
+        uint64_t next = 0;
+        deformers.resize(size_t(e->count));
+        for (uint64_t i = 0; i < e->count; ++i) {
+            const auto r = record<DeformerRecord>(*e, i);
+            const std::string where = "deformer " + std::to_string(i);
+            reserved(uint64_t(r.reserved[0]) | r.reserved[1], where);
+            if (r.firstWeight != next || weights.size() - next < r.weightCount)
+                fail(where + ": weights [" + std::to_string(r.firstWeight) + ", +" + std::to_string(r.weightCount) +
+                     ") do not follow the previous deformer's within the " + std::to_string(weights.size()) + " weights");
+            deformers[i] = Deformer{r.node, r.skin, r.firstVertex, r.vertexCount,
+                                    std::vector<float>(weights.begin() + std::ptrdiff_t(next),
+                                                       weights.begin() + std::ptrdiff_t(next + r.weightCount))};
+            next += r.weightCount;
+        }
+        if (next != weights.size())
+            fail("deformers use " + std::to_string(next) + " of " + std::to_string(weights.size()) + " weights");
     }
 
     const uint8_t* data_;

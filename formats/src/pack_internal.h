@@ -43,6 +43,8 @@ enum class TexelPolicy {
 // references, enum values, finite floats, key times...). Shared by the writer (refuses
 // to write what the reader would reject) and the reader (after decoding).
 void validateScene(const Scene& scene, const std::string& name, TexelPolicy texels);
+// The rules of skins, morph deltas, deformers and weight channels (part of validateScene).
+void validateDeformation(const Scene& scene, const std::string& name);
 
 // The header and section table after the structural pass: bounds, alignment, overlaps,
 // padding, checksums and per-section count/stride/version rules all hold.

@@ -39,7 +39,19 @@ constexpr KnownSection kKnownSections[] = {
     {kTagChannels, sizeof(ChannelRecord), true, false},
     {kTagKeyTimes, 4, true, false},
     {kTagKeyValues, 16, true, false},
+    {kTagJoints, 16, false, false},
+    {kTagWeights, 16, false, false},
+    {kTagMorphPositions, 12, false, false},
+    {kTagMorphNormals, 12, false, false},
+    {kTagMorphTangents, 12, false, false},
+    {kTagSkins, sizeof(SkinRecord), false, false},
+    {kTagSkinJoints, sizeof(SkinJointRecord), false, false},
+    {kTagDeformers, sizeof(DeformerRecord), false, false},
+    {kTagDeformerWeights, 4, false, false},
 };
+
+// The newest layout version of a known section (ACHN's version 2 adds Weights channels).
+uint32_t newestVersion(uint32_t tag) { return tag == kTagChannels ? kChannelsWeightsVersion : kSectionVersion; }
 
 const KnownSection* knownSection(uint32_t tag)
 {
@@ -190,7 +202,7 @@ private:
                 continue; // forward compatibility: unknown sections are skipped
             if (table_.find(e.tag) != &e)
                 fail("duplicate " + quoted(e.tag));
-            if (e.version != kSectionVersion)
+            if (e.version < kSectionVersion || e.version > newestVersion(e.tag))
                 fail(quoted(e.tag) + " has unsupported version " + std::to_string(e.version));
             if (e.stride != known->stride)
                 fail(quoted(e.tag) + " has element size " + std::to_string(e.stride) + ", expected " +

@@ -43,6 +43,7 @@ public:
         checkNodes();
         checkAnimations();
         checkBoundsAndSettings();
+        validateDeformation(scene_, name_);
     }
 
 private:
@@ -213,7 +214,7 @@ private:
                 if (ch.node >= scene_.nodes.size())
                     fail(where + "node " + std::to_string(ch.node) + " does not exist (" +
                          std::to_string(scene_.nodes.size()) + " nodes)");
-                if (uint32_t(ch.path) > uint32_t(AnimationPath::Scale))
+                if (uint32_t(ch.path) > uint32_t(AnimationPath::Weights))
                     fail(where + "invalid path " + std::to_string(uint32_t(ch.path)));
                 if (uint32_t(ch.interpolation) > uint32_t(Interpolation::Step))
                     fail(where + "invalid interpolation " + std::to_string(uint32_t(ch.interpolation)));

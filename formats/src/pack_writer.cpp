@@ -196,6 +196,7 @@ public:
         std::vector<uint8_t> channels;
         std::vector<uint8_t> animations = encodeAnimations(channels);
         std::vector<uint8_t> primitives = encodePrimitives();
+        std::vector<uint8_t> skins = encodeSkins();
 
         const VertexStreams& v = scene_.vertices;
         addBytes(kTagBakeSettings, sizeof(BakeSettingsRecord), std::move(bake));
@@ -213,7 +214,10 @@ public:
         addBytes(kTagNodes, sizeof(NodeRecord), std::move(nodes));
         addBytes(kTagAnimations, sizeof(AnimationRecord), std::move(animations));
         addBytes(kTagChannels, sizeof(ChannelRecord), std::move(channels));
+        if (hasWeightChannels())
+            sections_.back().entry.version = kChannelsWeightsVersion;
         addKeys();
+        addDeformation(std::move(skins));
         // The large streamed section, then the texture and mip records: their formats and
         // stored sizes are known once the producer has made each texture.
         auto stored = std::make_shared<WrittenTextures>();
@@ -378,6 +382,7 @@ private:
                 r.node = c.node;
                 r.path = uint32_t(c.path);
                 r.interpolation = uint32_t(c.interpolation);
+                r.reserved = c.path == AnimationPath::Weights ? c.weightOffset : 0;
                 r.firstKey = keyCount_;
                 r.keyCount = c.times.size();
                 keyCount_ += c.times.size();
@@ -388,6 +393,58 @@ private:
             fail(name_, "too many animation channels");
         channelBytes = recordBytes(channels);
         return recordBytes(animations);
+    }
+
+    bool hasWeightChannels() const
+    {
+        for (const Animation& a : scene_.animations)
+            for (const AnimationChannel& c : a.channels)
+                if (c.path == AnimationPath::Weights)
+                    return true;
+        return false;
+    }
+
+    std::vector<uint8_t> encodeSkins()
+    {
+        std::vector<SkinRecord> records;
+        uint32_t joints = 0;
+        for (const Skin& skin : scene_.skins) {
+            records.push_back(SkinRecord{strings_.add(skin.name), joints, uint32_t(skin.joints.size())});
+            joints += uint32_t(skin.joints.size());
+        }
+        return recordBytes(records);
+    }
+
+    // Skin influences, morph deltas, skins and deformers: absent in static scenes.
+    void addDeformation(std::vector<uint8_t> skins)
+    {
+        const DeformationStreams& d = scene_.vertices.deform;
+        addArray(kTagJoints, d.joints, false);
+        addArray(kTagWeights, d.weights, false);
+        addArray(kTagMorphPositions, d.positions, false);
+        addArray(kTagMorphNormals, d.normals, false);
+        addArray(kTagMorphTangents, d.tangents, false);
+        if (scene_.deformers.empty())
+            return;
+        std::vector<SkinJointRecord> joints;
+        for (const Skin& skin : scene_.skins)
+            for (size_t j = 0; j < skin.joints.size(); ++j) {
+                SkinJointRecord r{};
+                r.node = skin.joints[j];
+                std::memcpy(r.inverseBindMatrix, &skin.inverseBindMatrices[j][0][0], sizeof r.inverseBindMatrix);
+                joints.push_back(r);
+            }
+        std::vector<DeformerRecord> deformers;
+        std::vector<float> weights;
+        for (const Deformer& f : scene_.deformers) {
+            deformers.push_back(DeformerRecord{f.node, f.skin, f.firstVertex, f.vertexCount, uint32_t(weights.size()),
+                                               uint32_t(f.weights.size()), {0, 0}});
+            weights.insert(weights.end(), f.weights.begin(), f.weights.end());
+        }
+        addBytes(kTagSkins, sizeof(SkinRecord), std::move(skins));
+        addBytes(kTagSkinJoints, sizeof(SkinJointRecord), recordBytes(joints));
+        addBytes(kTagDeformers, sizeof(DeformerRecord), recordBytes(deformers));
+        addBytes(kTagDeformerWeights, sizeof(float), recordBytes(weights));
     }
 
     void addKeys()

@@ -57,6 +57,7 @@ std::vector<glm::mat4> nodeWorldMatrices(const Scene& scene, float time)
             case AnimationPath::Translation: local[channel.node].translation = glm::vec3(v); break;
             case AnimationPath::Rotation: local[channel.node].rotation = glm::normalize(quatFromXyzw(v)); break;
             case AnimationPath::Scale: local[channel.node].scale = glm::vec3(v); break;
+            case AnimationPath::Weights: break; // morphWeights
             }
         }
     }
@@ -74,6 +75,31 @@ std::vector<glm::mat4> nodeWorldMatrices(const Scene& scene, float time)
                                                                : parentFromNode;
     }
     return sceneFromNode;
+}
+
+std::vector<float> morphWeights(const Scene& scene, float time)
+{
+    const size_t targets = scene.vertices.deform.morphTargets;
+    std::vector<float> weights(scene.deformers.size() * targets, 0.0f);
+    std::vector<int32_t> deformerOf(scene.nodes.size(), kNone);
+    for (size_t d = 0; d < scene.deformers.size(); ++d) {
+        const Deformer& deformer = scene.deformers[d];
+        if (deformer.node < deformerOf.size())
+            deformerOf[deformer.node] = int32_t(d);
+        std::copy_n(deformer.weights.begin(), std::min(targets, deformer.weights.size()),
+                    weights.begin() + std::ptrdiff_t(d * targets));
+    }
+    for (const Animation& animation : scene.animations)
+        for (const AnimationChannel& channel : animation.channels) {
+            if (channel.path != AnimationPath::Weights || channel.node >= deformerOf.size() ||
+                deformerOf[channel.node] == kNone || channel.times.empty())
+                continue;
+            const glm::vec4 v = sampleChannel(channel, time);
+            const size_t base = size_t(deformerOf[channel.node]) * targets;
+            for (uint32_t k = 0; k < 4 && channel.weightOffset + k < targets; ++k)
+                weights[base + channel.weightOffset + k] = v[glm::length_t(k)];
+        }
+    return weights;
 }
 
 float animationDuration(const Scene& scene)

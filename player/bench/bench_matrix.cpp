@@ -218,6 +218,8 @@ TimingCells timingCells(const BenchReport& rep, const RendererResult& r)
     c.eia = fmt("%.1f", e);
     const double t = stageMs(r, stage::kTotal);
     c.total = fmt("%.1f", t);
+    if (const double pose = stageMs(r, stage::kPose); !std::isnan(pose) && t > 0.0) // skinned scenes
+        c.total += " [pose " + fmt("%.1f", pose) + ", " + fmt("%.1f", 100.0 * pose / t) + "%]";
     if (const RendererResult* base = rep.mvrBaseline(r); base && t > 0.0)
         c.total += " (" + fmt("%.2f", base->stageMean(std::string(stage::kTotal)) / t) + "x)";
     return c;

@@ -150,6 +150,13 @@ std::string benchTable(const BenchReport& report)
                 if (name == stage::kDownsample ||
                     std::find(stage::kAll.begin(), stage::kAll.end(), name) == stage::kAll.end())
                     otherStages.push_back(r.name + " " + name + " " + format("%.2f ms", times.mean()));
+            // Skinned and morphed scenes: the pose pass, with its share of the frame.
+            if (r.stages.count(stageKey(stage::kPose))) {
+                const double pose = r.stageMean(stageKey(stage::kPose));
+                const double share = 100.0 * pose / std::max(r.stageMean(stageKey(stage::kTotal)), 1e-9);
+                otherStages.push_back(r.name + " pose " + format("%.2f ms", pose) + " (" + format("%.1f", share) +
+                                      "% of total)");
+            }
         }
         const std::string name = r.timed ? r.name : r.name + " (ref, untimed)";
         std::snprintf(line, sizeof(line), rowFormat, name.c_str(), pointGen.c_str(), viewGen.c_str(),

@@ -9,6 +9,8 @@
 
 namespace lfd::player::stage {
 
+// Scenes with skinned or morphed meshes: the pose pass (scene_poser.h); absent otherwise.
+inline constexpr std::string_view kPose = "pose";
 // lfdpr: points generated from the scene's triangles (paper section 3.1).
 inline constexpr std::string_view kPointGeneration = "point_generation";
 // Every renderer: the N views (lfdpr: splatting, paper section 3.2).
@@ -23,7 +25,7 @@ inline constexpr std::string_view kEia = "eia";
 inline constexpr std::string_view kTotal = "total";
 
 // Pipeline order, for reports.
-inline constexpr std::array<std::string_view, 6> kAll = {kPointGeneration, kViewGeneration, kResolve,
+inline constexpr std::array<std::string_view, 7> kAll = {kPose, kPointGeneration, kViewGeneration, kResolve,
                                                          kDownsample, kEia, kTotal};
 // The stages every renderer's frame has.
 inline constexpr std::array<std::string_view, 3> kRequired = {kViewGeneration, kEia, kTotal};

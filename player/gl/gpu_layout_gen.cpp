@@ -18,6 +18,7 @@
 // or std140 scalar arrays, nested structs) are refused with file:line, so the build fails
 // instead of a silent mismatch. Preprocessor conditionals are ignored: every declaration in
 // the file is generated. The output is only rewritten when it changes.
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <cstdio>
@@ -563,6 +564,12 @@ void emitTables(std::ostringstream& o, const std::vector<Aggregate>& aggregates,
         structIndex[a.glslName] = index++;
     }
     o << "};\n";
+    // Structs without blocks (the blocks declared by the shaders): an empty span, since
+    // C++ has no zero-size arrays.
+    if (std::none_of(aggregates.begin(), aggregates.end(), [](const Aggregate& a) { return a.block; })) {
+        o << "inline constexpr std::span<const lfd::gl::GpuBlock> kBlocks{};\n";
+        return;
+    }
     o << "inline constexpr lfd::gl::GpuBlock kBlocks[] = {\n";
     for (const Aggregate& a : aggregates) {
         if (!a.block)

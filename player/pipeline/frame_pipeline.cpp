@@ -103,6 +103,15 @@ void FramePipeline::animate(double time)
     frame_.textureAnisotropy = scene_->maxAnisotropy();
 }
 
+void FramePipeline::poseScene(GpuTimer& timer)
+{
+    if (!scene_->deforms())
+        return; // static scenes have no pose stage
+    timer.begin(stage::kPose);
+    scene_->pose();
+    timer.end();
+}
+
 void FramePipeline::buildEia(GpuTimer& timer, Reconstruction reconstruction)
 {
     eia_->build(*targets_, reconstruction, timer);
@@ -130,6 +139,7 @@ void FramePipeline::renderFrame(Renderer& renderer, double time, GpuTimer& timer
 {
     animate(time);
     timer.begin(stage::kTotal);
+    poseScene(timer);
     if (ss_ == Supersampling::None) {
         renderer.render(*scene_, frame_, *targets_, timer);
     } else {
@@ -214,6 +224,7 @@ void FramePipeline::renderPreviewFrame(Renderer& renderer, double time, GpuTimer
     frame_ = makeFrameSetup(previewProfile_, framing_, time, turntablePeriod_, controls_);
     frame_.textureAnisotropy = scene_->maxAnisotropy();
     timer.begin(stage::kTotal);
+    poseScene(timer);
     renderer.render(*scene_, frame_, *previewTargets_, timer);
     previewEia_->build(*previewTargets_, reconstruction, timer);
     timer.end();

@@ -105,6 +105,9 @@ public:
     // animate only, then interleave whatever the view targets hold.
     void animate(double time);
     void buildEia(GpuTimer& timer, Reconstruction reconstruction = Reconstruction::None);
+    // The pose stage (skinned and morphed meshes at the animated time), inside "total";
+    // nothing, not even the stage, for static scenes.
+    void poseScene(GpuTimer& timer);
 
     // The viewer's camera controls (frame.h), applied from the next frame on.
     void setViewControls(const ViewControls& controls) { controls_ = controls; }

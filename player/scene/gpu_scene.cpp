@@ -206,11 +206,24 @@ GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options)
     // Step 5: per-node transforms (rewritten every frame by update()).
     nodeSsbo_ = makeBuffer(nullptr, std::max<size_t>(scene_.nodes.size(), 1) * sizeof(bindings::NodeGpu),
                            GL_DYNAMIC_STORAGE_BIT, gpuBytes_);
+    // Step 6: the pose pass, for skinned and morphed meshes only.
+    if (!scene_.deformers.empty())
+        poser_ = std::make_unique<ScenePoser>(scene_, gpuBytes_);
     update(0.0);
+}
+
+void GpuScene::pose()
+{
+    if (!poser_)
+        return;
+    const PoseTargets targets{streamVbos_[bindings::kAttribPosition], streamVbos_[bindings::kAttribNormal],
+                              streamVbos_[bindings::kAttribTangent], ibo_, statsSsbo_};
+    poser_->pose(scene_, sceneFromNode_, float(time_), targets);
 }
 
 void GpuScene::update(double time)
 {
+    time_ = time;
     sceneFromNode_ = nodeWorldMatrices(scene_, float(time));
     if (sceneFromNode_.empty())
         return;

@@ -6,6 +6,7 @@
 
 #include "gl_handles.h"
 #include "gpu_memory_budget.h"
+#include "scene_poser.h"
 
 #include "lfd/scene.h"
 
@@ -13,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace lfd::player {
@@ -58,6 +60,11 @@ public:
 
     // Evaluates glTF node animations at `time` and uploads sceneFromObject per node.
     void update(double time);
+    // Whether the scene has skinned or morphed meshes (the frame then has a pose stage).
+    bool deforms() const { return poser_ != nullptr; }
+    // Poses them at the last update's time into the vertex streams and the triangle
+    // statistics (scene_poser.h); nothing for a static scene.
+    void pose();
 
     const Scene& cpu() const { return scene_; } // metadata (textures' texels released after upload)
     const std::vector<DrawItem>& draws() const { return draws_; }
@@ -94,6 +101,8 @@ private:
     gl::Buffer ibo_, materialSsbo_, statsSsbo_, nodeSsbo_;
     size_t gpuBytes_ = 0;
     uint64_t serial_;
+    std::unique_ptr<ScenePoser> poser_; // only for scenes with deformers
+    double time_ = 0.0;
 };
 
 } // namespace lfd::player

@@ -440,8 +440,8 @@ TEST_F(AssimpModels, ValidFilesImportWithKnownCounts)
         {"2CylinderEngine-glTF-Binary/2CylinderEngine.glb", 75730, 55843, 0, nullptr},
         {"ClearCoat-glTF/ClearCoatTest.gltf", 37116, 20106, 5, "KHR_materials_clearcoat"},
         {"cameras/Cameras.gltf", 2, 6, 0, "no normals"},
-        {"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", 12, 24, 0, "morph targets"},
-        {"simple_skin/simple_skin.gltf", 8, 24, 0, "skinned"},
+        {"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", 12, 24, 0, nullptr}, // morphed: skin_bake_test
+        {"simple_skin/simple_skin.gltf", 8, 24, 0, "no normals"}, // skinned: skin_bake_test
         {"issue_3269/texcoord_crash.gltf", 10, 20, 1, "uses TEXCOORD_0, which the primitive does not have"},
         {"textureTransform/TextureTransformTest.gltf", 18, 54, 5, "KHR_texture_transform"},
         // Schema violations a sensible bake survives: warnings naming the JSON path (the

@@ -525,8 +525,11 @@ TEST(PackReject, InvalidEnumsAndFlags)
         },
         "material 0: doubleSided is 2");
     expectPatchRejected(
+        [](std::vector<uint8_t>& b) { writeElement<uint32_t>(b, kTagChannels, 1, 4, offsetof(ChannelRecord, path)); },
+        "animation 0 channel 1: invalid path 4");
+    expectPatchRejected( // weights (path 3) exist only in ACHN version 2
         [](std::vector<uint8_t>& b) { writeElement<uint32_t>(b, kTagChannels, 1, 3, offsetof(ChannelRecord, path)); },
-        "animation 0 channel 1: invalid path 3");
+        "animation 0 channel 1: a weights channel in a version-1 'ACHN' section");
     expectPatchRejected(
         [](std::vector<uint8_t>& b) {
             writeElement<uint32_t>(b, kTagChannels, 1, 2, offsetof(ChannelRecord, interpolation));

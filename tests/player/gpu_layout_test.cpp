@@ -18,6 +18,7 @@
 
 #include "lfdpr_bindings_gpu.h"
 #include "lfdpr_constants.h"
+#include "pose_bindings_gpu.h"
 #include "scene_bindings.h"
 #include "shader_library.h"
 
@@ -40,7 +41,8 @@ namespace {
 namespace fs = std::filesystem;
 namespace lb = player::lfdpr_bindings;
 
-const gl::GpuLayoutFile* const kLayoutFiles[] = {&player::bindings::kLayoutFile, &lb::kLayoutFile};
+const gl::GpuLayoutFile* const kLayoutFiles[] = {&player::bindings::kLayoutFile, &lb::kLayoutFile,
+                                                  &player::pose_bindings::kLayoutFile};
 
 // ---- GLSL types ---------------------------------------------------------------------------
 

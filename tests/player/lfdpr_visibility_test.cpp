@@ -553,6 +553,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"eia_prefilter.comp", "comp", {}},
         {"gstd_reconstruct.comp", "comp", {}},
         {"view_downsample.comp", "comp", {}},
+        {"pose_vertices.comp", "comp", {}},
+        {"pose_triangles.comp", "comp", {}},
         {"lfdpr_paper_points.vert", "vert", {}},
         {"lfdpr_paper_points.geom", "geom", {}},
         {"lfdpr_paper_points.frag", "frag", {}},

@@ -36,6 +36,7 @@ RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const 
     sceneOptions.maxAnisotropy = request.aniso;
     player::GpuScene gpu(scene, sceneOptions);
     gpu.update(request.time);
+    gpu.pose(); // skinned and morphed meshes, as FramePipeline's pose stage
     // The framing lfd-play uses: the scene's bounding sphere at the fill it was baked for.
     const double fill = scene.settings.framingFill > 0.0f ? double(scene.settings.framingFill) : 1.0;
     out.setup = player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds, fill), request.time,

@@ -62,6 +62,19 @@ inline constexpr uint32_t kTagAnimations = makeTag("ANIM");
 inline constexpr uint32_t kTagChannels = makeTag("ACHN");
 inline constexpr uint32_t kTagKeyTimes = makeTag("AKTM");
 inline constexpr uint32_t kTagKeyValues = makeTag("AKVL");
+// Deformation (skins and morph targets), all optional; see formats/README.md.
+inline constexpr uint32_t kTagJoints = makeTag("VJNT");          // u32x4 per vertex
+inline constexpr uint32_t kTagWeights = makeTag("VWGT");         // f32x4 per vertex
+inline constexpr uint32_t kTagMorphPositions = makeTag("MPOS"); // f32x3 per vertex and target
+inline constexpr uint32_t kTagMorphNormals = makeTag("MNRM");
+inline constexpr uint32_t kTagMorphTangents = makeTag("MTAN");
+inline constexpr uint32_t kTagSkins = makeTag("SKIN");
+inline constexpr uint32_t kTagSkinJoints = makeTag("SKJT");
+inline constexpr uint32_t kTagDeformers = makeTag("DFRM");
+inline constexpr uint32_t kTagDeformerWeights = makeTag("DFWT"); // f32 per deformer and target
+// ACHN is written as section version 2 when it holds a Weights channel (path 3, the
+// reserved word becomes weightOffset); version-1 readers refuse such packs by name.
+inline constexpr uint32_t kChannelsWeightsVersion = 2;
 
 struct FileHeader {
     char magic[8];
@@ -203,12 +216,37 @@ struct ChannelRecord { // ACHN, 32 bytes
     uint32_t node;
     uint32_t path;          // lfd::AnimationPath
     uint32_t interpolation; // lfd::Interpolation
-    uint32_t reserved;
+    uint32_t reserved;      // section version 2: weightOffset (Weights channels), else 0
     uint64_t firstKey; // into AKTM / AKVL
     uint64_t keyCount;
 };
 static_assert(sizeof(ChannelRecord) == 32);
 // AKTM: float32 per key (stride 4). AKVL: float4 per key (stride 16).
+
+struct SkinRecord { // SKIN, 16 bytes
+    StringRef name;
+    uint32_t firstJoint; // into SKJT, consecutive runs
+    uint32_t jointCount;
+};
+static_assert(sizeof(SkinRecord) == 16);
+
+struct SkinJointRecord { // SKJT, 80 bytes
+    uint32_t node;
+    uint32_t reserved[3];
+    float inverseBindMatrix[16]; // column-major (glTF)
+};
+static_assert(sizeof(SkinJointRecord) == 80);
+
+struct DeformerRecord { // DFRM, 32 bytes
+    uint32_t node;
+    int32_t skin; // SKIN index or -1
+    uint32_t firstVertex;
+    uint32_t vertexCount;
+    uint32_t firstWeight; // into DFWT, consecutive runs
+    uint32_t weightCount; // == morph targets per vertex
+    uint32_t reserved[2];
+};
+static_assert(sizeof(DeformerRecord) == 32);
 
 struct BoundsRecord { // BNDS, 48 bytes, exactly one element
     float min[3];

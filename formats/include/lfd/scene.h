@@ -31,11 +31,32 @@ enum VertexStreamBits : uint32_t {
     kStreamUv = 1u << 3,      // TEXCOORD_0, only when some material has a texture
 };
 
+// Skin influences and morph-target deltas (glTF 2.0 sections 3.7.2.2 and 3.7.3): stored
+// only when some node is skinned / some mesh is morphed. The player poses them into the
+// streams above every frame (formats/README.md "Deformation"); the rest pose stays here.
+struct DeformationStreams {
+    // JOINTS_0 / WEIGHTS_0: indices into the owning deformer's Skin::joints and weights
+    // summing to 1 (the four largest, renormalised). Empty, or one per vertex.
+    std::vector<glm::uvec4> joints;
+    std::vector<glm::vec4> weights;
+    // Morph deltas, vertex-major: target t of vertex v at [v * morphTargets + t]. A
+    // vertex of an unmorphed mesh holds zeros. Normal / tangent deltas only when the
+    // scene stores that stream and some target has them.
+    uint32_t morphTargets = 0;
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec3> tangents;
+
+    bool skinned() const { return !joints.empty(); }
+    bool empty() const { return joints.empty() && morphTargets == 0; }
+};
+
 struct VertexStreams {
     std::vector<glm::vec3> positions; // always
     std::vector<glm::vec3> normals;   // empty, or positions.size()
     std::vector<glm::vec4> tangents;  // empty, or positions.size(); w = handedness (+-1)
     std::vector<glm::vec2> uvs;       // empty, or positions.size()
+    DeformationStreams deform;        // empty for static scenes
 
     uint32_t mask() const
     {
@@ -71,7 +92,28 @@ struct Node {
     glm::vec3 scale{1.0f};
 };
 
-enum class AnimationPath : uint32_t { Translation = 0, Rotation = 1, Scale = 2 };
+// A skin (glTF 3.7.3): joint nodes and their inverse bind matrices (identity where the
+// glTF gives none).
+struct Skin {
+    std::string name;
+    std::vector<uint32_t> joints; // node indices
+    std::vector<glm::mat4> inverseBindMatrices; // joints.size() entries
+};
+
+// One node instance of a skinned and/or morphed mesh. The baker gives each such instance
+// its own copy of the mesh, so the posed vertices [firstVertex, +vertexCount) belong to
+// this instance alone (they are the mesh's whole vertex range).
+struct Deformer {
+    uint32_t node = 0;
+    int32_t skin = kNone;         // Scene::skins index, or kNone (morph only)
+    uint32_t firstVertex = 0;
+    uint32_t vertexCount = 0;
+    std::vector<float> weights;   // default morph weights, DeformationStreams::morphTargets entries
+};
+
+// Weights: a morph-weight channel drives weights [weightOffset, +4) of the node's
+// deformer (a glTF "weights" channel of N targets becomes ceil(N / 4) channels).
+enum class AnimationPath : uint32_t { Translation = 0, Rotation = 1, Scale = 2, Weights = 3 };
 enum class Interpolation : uint32_t { Linear = 0, Step = 1 }; // cubic spline is linearised by the baker
 
 struct AnimationChannel {
@@ -79,7 +121,8 @@ struct AnimationChannel {
     AnimationPath path = AnimationPath::Translation;
     Interpolation interpolation = Interpolation::Linear;
     std::vector<float> times;      // seconds, strictly increasing, size >= 1
-    std::vector<glm::vec4> values; // size == times.size(); xyz for T/S, quaternion xyzw for R
+    std::vector<glm::vec4> values; // size == times.size(); xyz for T/S, quaternion xyzw for R, 4 weights
+    uint32_t weightOffset = 0;     // Weights only: the first morph weight the values drive
 };
 
 struct Animation {
@@ -198,6 +241,8 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Node> nodes;
     std::vector<Animation> animations;
+    std::vector<Skin> skins;
+    std::vector<Deformer> deformers; // by firstVertex, ranges disjoint
     SceneBounds bounds;
     BakeSettings settings;
 
