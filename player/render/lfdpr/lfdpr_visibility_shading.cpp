@@ -48,8 +48,13 @@ std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vect
 }
 
 LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, uint32_t testIndexRaces)
-    : int64_(int64), defines_(atomicsDefines(int64))
+    : int64_(int64), defines_(atomicsDefines(int64)), trilinear_(gl::createSampler())
 {
+    // As GpuScene's textures without anisotropy: trilinear, glTF's default REPEAT.
+    glSamplerParameteri(trilinear_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    glSamplerParameteri(trilinear_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(trilinear_, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glSamplerParameteri(trilinear_, GL_TEXTURE_WRAP_T, GL_REPEAT);
     if (gpuWork)
         defines_.emplace_back("LFDPR_WORK_GPU 1");
     auto build = [&](const char* shader, std::vector<std::string> extra) {
@@ -251,6 +256,9 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
     // is shaded only by its winner's group, so no barrier is needed between them.
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, shadeWork_);
     const uint32_t shared = k.maxShadeGroups - 1;
+    constexpr GLsizei kMaterialUnits = 5; // base colour, metallic-roughness, normal, occlusion, emissive
+    GLuint samplers[kMaterialUnits];
+    std::fill(std::begin(samplers), std::end(samplers), GLuint(trilinear_));
     for (size_t g = 0; g < groups_.size(); ++g) {
         const Group& group = groups_[g];
         const uint32_t slot = g == 0 ? 0u : 1u + uint32_t((g - 1) % shared);
@@ -261,9 +269,11 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
         glProgramUniform1ui(program, k.locShadeGroup, slot);
         glProgramUniform1ui(program, k.locShadeMaterial, group.gpuMaterial);
         scene.bindMaterialTextures(group.material);
+        glBindSamplers(bindings::kUnitBaseColor, kMaterialUnits, samplers);
         glDispatchComputeIndirect(kDispatchOffset + GLintptr(slot) * 16);
         ++dispatches_;
     }
+    glBindSamplers(bindings::kUnitBaseColor, kMaterialUnits, nullptr);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glUseProgram(0);
 }

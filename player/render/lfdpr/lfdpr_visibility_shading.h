@@ -93,6 +93,10 @@ private:
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
     gl::Program listProgram_, listRepairProgram_; // lfdpr_visibility_shade_list.comp: marks, repair list
     gl::Program repairDispatchProgram_;
+    // Trilinear, no anisotropy: bound to the material units while shading, so the textures'
+    // own --aniso state does not filter lfdpr's shader taps a second time (the taps are the
+    // anisotropic filter; lfdpr_visibility_shade.comp, lfdSampleFootprint).
+    gl::Sampler trilinear_;
     std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
     gl::Buffer depth_, index_; // 64-bit path: depth_ holds the words
     gl::Texture depthTexels_, indexTexels_; // the same, read as buffer textures
