@@ -259,12 +259,9 @@ int bakeScene(const Options& o)
     return 0;
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+// Every lfd-bake flag (README "Baking").
+void addBakeFlags(CLI::App& app, Options& o)
 {
-    Options o;
-    CLI::App app{"lfd-bake: bake a glTF 2.0 scene into a .lfdpack for light field display rendering"};
     app.add_option("input", o.input, "glTF 2.0 scene (.gltf or .glb)");
     app.add_option("-o,--output", o.output, "output pack (.lfdpack)");
     app.add_option("--inspect", o.inspect, "verify a pack and print its summary (exit 0 only if it verifies)");
@@ -307,6 +304,15 @@ int main(int argc, char** argv)
                    "--bench runs each stage this many times per thread count and reports the fastest (default 3)")
         ->check(CLI::Range(1u, 100u));
     app.add_option("--bench-run", o.benchRun)->check(CLI::Range(1u, 1024u))->group(""); // internal, see bake_bench.h
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    Options o;
+    CLI::App app{"lfd-bake: bake a glTF 2.0 scene into a .lfdpack for light field display rendering"};
+    addBakeFlags(app, o);
 
     try {
         app.parse(argc, argv);

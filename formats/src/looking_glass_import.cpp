@@ -84,6 +84,33 @@ uint32_t requirePixels(const json& root, const char* key, const std::string& sou
     return value;
 }
 
+// Nothing in our model mirrors the views vertically or knows subpixel cell patterns
+// (newer panels): refuse them rather than show a wrong image.
+void refuseUnsupportedCalibration(const json& root, const std::string& source) {
+    if (optionalFlag(root, "flipImageY", source))
+        throwProfileError(source, "flipImageY", "vertically mirrored panels are not supported");
+    if (optionalNumber(root, "CellPatternMode", 0.0, source) != 0.0)
+        throwProfileError(source, "CellPatternMode", "subpixel cell patterns are not supported");
+}
+
+// The views: a known device's standard quilt tiles, else the documented defaults at the
+// panel's aspect; the viewing geometry's defaults.
+void setLookingGlassViews(DisplayProfile& p, double viewConeDeg) {
+    const uint32_t W = p.panelWidth, H = p.panelHeight;
+    if (const auto quilt = standardQuiltFor(W, H, p.screenWidthMm)) {
+        p.viewCount = quilt->cols * quilt->rows;
+        p.viewWidth = quilt->tileWidth();
+        p.viewHeight = quilt->tileHeight();
+    } else {
+        p.viewCount = kDefaultViewCount;
+        p.viewHeight = kDefaultViewHeight;
+        const double viewWidth = std::round(double(kDefaultViewHeight) * double(W) / double(H));
+        p.viewWidth = uint32_t(std::clamp(viewWidth, 1.0, 1e9)); // validation rejects > 16384
+    }
+    p.viewConeDeg = viewConeDeg;
+    p.viewingDistanceMm = kDefaultViewingDistanceScreenHeights * p.screenHeightMm;
+}
+
 } // namespace
 
 bool isLookingGlassVisual(const json& root) {
@@ -102,12 +129,7 @@ DisplayProfile importLookingGlassVisual(const json& root, const std::string& sou
     const bool invView = optionalFlag(root, "invView", source);
     const bool flipImageX = optionalFlag(root, "flipImageX", source);
     const bool flipSubp = optionalFlag(root, "flipSubp", source);
-    // Nothing in our model mirrors the views vertically or knows subpixel cell patterns
-    // (newer panels): refuse them rather than show a wrong image.
-    if (optionalFlag(root, "flipImageY", source))
-        throwProfileError(source, "flipImageY", "vertically mirrored panels are not supported");
-    if (optionalNumber(root, "CellPatternMode", 0.0, source) != 0.0)
-        throwProfileError(source, "CellPatternMode", "subpixel cell patterns are not supported");
+    refuseUnsupportedCalibration(root, source);
     if (pitch <= 0.0)
         throwProfileError(source, "pitch", "must be > 0, got " + formatNumber(pitch));
     if (slope == 0.0)
@@ -162,18 +184,7 @@ DisplayProfile importLookingGlassVisual(const json& root, const std::string& sou
 
     // Step 5: views and viewing geometry (defaults documented in display_profiles.md).
     p.name = defaultProfileName(source);
-    if (const auto quilt = standardQuiltFor(W, H, p.screenWidthMm)) {
-        p.viewCount = quilt->cols * quilt->rows;
-        p.viewWidth = quilt->tileWidth();
-        p.viewHeight = quilt->tileHeight();
-    } else {
-        p.viewCount = kDefaultViewCount;
-        p.viewHeight = kDefaultViewHeight;
-        const double viewWidth = std::round(double(kDefaultViewHeight) * double(W) / double(H));
-        p.viewWidth = uint32_t(std::clamp(viewWidth, 1.0, 1e9)); // validation rejects > 16384
-    }
-    p.viewConeDeg = viewCone;
-    p.viewingDistanceMm = kDefaultViewingDistanceScreenHeights * p.screenHeightMm;
+    setLookingGlassViews(p, viewCone);
     return p;
 }
 

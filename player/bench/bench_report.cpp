@@ -109,6 +109,22 @@ std::string tickLabel(double v)
     return v >= 100.0 || v == std::floor(v) ? format("%.0f", v) : format("%.3g", v);
 }
 
+// The stages inside "total" the table has no column for (the downsample, the pose pass
+// with its share of the frame, any other), as "config stage ms" texts.
+void addOtherStages(const RendererResult& r, std::vector<std::string>& out)
+{
+    for (const auto& [name, times] : r.stages)
+        if (name == stage::kDownsample ||
+            std::find(stage::kAll.begin(), stage::kAll.end(), name) == stage::kAll.end())
+            out.push_back(r.name + " " + name + " " + format("%.2f ms", times.mean()));
+    // Skinned and morphed scenes: the pose pass, with its share of the frame.
+    if (r.stages.count(stageKey(stage::kPose))) {
+        const double pose = r.stageMean(stageKey(stage::kPose));
+        const double share = 100.0 * pose / std::max(r.stageMean(stageKey(stage::kTotal)), 1e-9);
+        out.push_back(r.name + " pose " + format("%.2f ms", pose) + " (" + format("%.1f", share) + "% of total)");
+    }
+}
+
 } // namespace
 
 std::string benchTable(const BenchReport& report)
@@ -146,17 +162,7 @@ std::string benchTable(const BenchReport& report)
             eia = format("%.2f", r.stageMean(stageKey(stage::kEia)));
             total = format("%.2f", r.stageMean(stageKey(stage::kTotal)));
             wall = format("%.2f", r.wallMsPerFrame);
-            for (const auto& [name, times] : r.stages)
-                if (name == stage::kDownsample ||
-                    std::find(stage::kAll.begin(), stage::kAll.end(), name) == stage::kAll.end())
-                    otherStages.push_back(r.name + " " + name + " " + format("%.2f ms", times.mean()));
-            // Skinned and morphed scenes: the pose pass, with its share of the frame.
-            if (r.stages.count(stageKey(stage::kPose))) {
-                const double pose = r.stageMean(stageKey(stage::kPose));
-                const double share = 100.0 * pose / std::max(r.stageMean(stageKey(stage::kTotal)), 1e-9);
-                otherStages.push_back(r.name + " pose " + format("%.2f ms", pose) + " (" + format("%.1f", share) +
-                                      "% of total)");
-            }
+            addOtherStages(r, otherStages);
         }
         const std::string name = r.timed ? r.name : r.name + " (ref, untimed)";
         std::snprintf(line, sizeof(line), rowFormat, name.c_str(), pointGen.c_str(), viewGen.c_str(),
