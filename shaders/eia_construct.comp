@@ -7,12 +7,7 @@
 // and the subpixel shows channel i (RGB stripe) or 2 - i (BGR) of the views around
 // phase * N. Each view covers the whole screen, so the view pixel read is the one under
 // the subpixel's screen position (u, v) = ((k + 0.5) / 3W, (l + 0.5) / H).
-//
-// note: the phase is computed in double precision. With single precision the argument
-// perSubpixel * k reaches 3W / X ~ 480 for the prototype, where a float ulp (3e-5) is
-// ~1.5e-3 of a view interval at 48 views, so subpixels near a view boundary would pick a
-// different view than the CPU reference. `precise` forbids fused multiply-adds, which
-// the CPU (x86-64 SSE2, -ffp-contract=off in ISO C++ mode) does not use either.
+// The phase is computed in double precision (shaders/subpixel_phase.glsl says why).
 
 // Reconstruction modes (C++: lfd::player::Reconstruction, checked by a test), paper
 // section 4, in linear light, computed exactly (no random samples: no fixed noise pattern,
@@ -54,17 +49,11 @@ layout(location = EIA_LOC_PHASE_OFFSET) uniform double phaseOffset;
 layout(location = EIA_LOC_INVERT_PHASE) uniform bool invertPhase;
 layout(location = EIA_LOC_SUBPIXELS_BGR) uniform bool subpixelsBgr;
 
-// Same operations, in the same order, as lfd::subpixelPhase (formats/src/display_profile.cpp).
+#include "subpixel_phase.glsl"
+
 double subpixelPhase(uint k, uint l)
 {
-    precise double phase = perSubpixel * double(k) + perRow * double(l) + phaseOffset;
-    phase -= floor(phase);
-    if (invertPhase)
-        phase = 1.0LF - phase;
-    // 1 is the same lens position as 0 (x - floor(x) can round up to 1 for tiny negative x).
-    if (phase >= 1.0LF)
-        phase = 0.0LF;
-    return phase;
+    return subpixelPhase(k, l, perSubpixel, perRow, phaseOffset, invertPhase);
 }
 
 // floor(a / b) for unsigned a, b > 0 with a < 2^31, exactly: a float quotient (within a

@@ -1,6 +1,6 @@
 #version 450 core
 // gstd reconstruction (Gavane & Watson 2024, section 5, "GStd"): one output view pixel per
-// invocation. The sub-view was rendered at `factor` times the view resolution into an
+// invocation. The sub-view (layer u_layer) was rendered at `factor` times the view resolution into an
 // GL_SRGB8_ALPHA8 texture, so every bilinear fetch decodes to linear light before it is
 // filtered. The pixel's value is the Gaussian reconstruction filter integrated with the
 // seeded sample offsets (drawn from the Gaussian itself, so the estimate is their plain
@@ -10,7 +10,7 @@
 #include "gstd_bindings.glsl"
 layout(local_size_x = GSTD_LOCAL_SIZE, local_size_y = GSTD_LOCAL_SIZE) in;
 
-layout(binding = GSTD_UNIT_HIGH_RES) uniform sampler2D u_highRes;             // linear filter, clamp
+layout(binding = GSTD_UNIT_HIGH_RES) uniform sampler2DArray u_highRes;        // linear filter, clamp
 layout(binding = GSTD_IMAGE_ACCUM, rgba32f) uniform image2D u_accum;         // view size, linear
 layout(binding = GSTD_IMAGE_VIEW, rgba8) uniform writeonly image2D u_view;   // one ViewTargets layer
 
@@ -19,6 +19,7 @@ layout(location = GSTD_LOC_SAMPLE_COUNT) uniform uint u_sampleCount;
 layout(location = GSTD_LOC_SUB_VIEW) uniform uint u_subView;
 layout(location = GSTD_LOC_SUB_VIEW_COUNT) uniform uint u_subViewCount;
 layout(location = GSTD_LOC_OFFSETS) uniform vec2 u_offsets[GSTD_MAX_SAMPLES];
+layout(location = GSTD_LOC_LAYER) uniform uint u_layer;
 
 #include "srgb.glsl"
 
@@ -32,7 +33,7 @@ void main()
     vec2 centre = vec2(pixel) + 0.5;
     vec3 sum = vec3(0.0);
     for (uint s = 0u; s < u_sampleCount; ++s)
-        sum += texture(u_highRes, (centre + u_offsets[s]) / vec2(u_size)).rgb;
+        sum += texture(u_highRes, vec3((centre + u_offsets[s]) / vec2(u_size), float(u_layer))).rgb;
     vec3 estimate = sum / float(u_sampleCount);
 
     ivec2 p = ivec2(pixel);

@@ -185,11 +185,15 @@ void tableHeader(std::ostringstream& s, const std::vector<BenchReport>& reports)
       << " timed per configuration (frame k at k/" << first.options.fps << " s, turntable period "
       << first.options.turntablePeriod << " s); quality at frame " << first.options.qualityFrame << " against "
       << first.options.reference;
-    s << "; texture anisotropy " << first.textureAnisotropy << " (`--aniso`)";
-    if (first.options.reference == "gstd")
-        s << " (factor " << first.options.rendererOptions.gstd.factor << ", "
-          << first.options.rendererOptions.gstd.samples << " samples, 2x views)";
-    s << ".\n\n";
+    if (first.options.reference == "gstd") {
+        const GstdOptions& g = first.options.rendererOptions.gstd;
+        s << " (" << gstdModelName(g.model) << " model, `--gstd-model`: " << g.subViewCount()
+          << " sub-views per view at factor " << g.factor;
+        if (g.model == GstdModel::Views)
+            s << ", " << g.samples << " Gaussian samples";
+        s << ")";
+    }
+    s << "; texture anisotropy " << first.textureAnisotropy << " (`--aniso`).\n\n";
 }
 
 // The timing cells of one result: point generation (points), view generation with the

@@ -139,7 +139,9 @@ std::string benchTable(const BenchReport& report)
       << p.panelWidth << "x" << p.panelHeight << "\n";
     s << "frames: " << o.warmup << " warm-up + " << o.frames << " timed (frame k at k/" << o.fps
       << " s, turntable period " << o.turntablePeriod << " s); quality at frame " << o.qualityFrame
-      << " against " << o.reference << "; GPU times are means over the timed frames\n\n";
+      << " against " << o.reference
+      << (o.reference == "gstd" ? " (" + gstdModelName(o.rendererOptions.gstd.model) + " model)" : std::string())
+      << "; GPU times are means over the timed frames\n\n";
 
     char line[512];
     const char* rowFormat = "%-28s %22s %12s %11s %9s %11s %9s %8s %15s %9s %9s %9s %10s %10s %10s %11s %11s\n";
@@ -227,7 +229,8 @@ nlohmann::json benchJson(const BenchReport& report)
                               {"seed", o.rendererOptions.gstd.seed},
                               {"filter_diameter", o.rendererOptions.gstd.filterDiameter},
                               {"max_anisotropy", o.rendererOptions.gstd.maxAnisotropy},
-                              {"sub_views", GstdOptions::kSubViews}}}};
+                              {"sub_views", o.rendererOptions.gstd.subViewCount()},
+                              {"model", gstdModelName(o.rendererOptions.gstd.model)}}}};
     nlohmann::json renderers = nlohmann::json::array();
     for (const RendererResult& r : report.results) {
         nlohmann::json e;

@@ -324,11 +324,17 @@ void renderQualityFrame(BenchRun& run, Renderer& renderer, Reconstruction aa, Re
     const std::string& name = result.name;
     GpuTimer qualityTimer;
     const bool cacheable = name == "gstd" && run.gstdCache; // (gstd, none, 1) only
+    // gstd's panel model integrates the EIA itself: it is cached with the views.
+    const DisplayProfile& profile = run.pipeline.profile();
+    const GstdCachePanel panelImage{run.pipeline.eia().texture(), profile.panelWidth, profile.panelHeight};
+    const GstdCachePanel* panel =
+        run.options.rendererOptions.gstd.model == GstdModel::Panel ? &panelImage : nullptr;
     if (cacheable) {
         run.pipeline.animate(run.qualityTime);
-        result.fromCache = run.gstdCache->load(run.gstdKey, run.pipeline.targets());
+        result.fromCache = run.gstdCache->load(run.gstdKey, run.pipeline.targets(), panel);
         if (result.fromCache) {
-            run.pipeline.buildEia(qualityTimer, aa);
+            if (!panel)
+                run.pipeline.buildEia(qualityTimer, aa);
             say("quality frame from the gstd cache " + run.gstdCache->entryPath(run.gstdKey).string());
         }
     }
@@ -337,7 +343,7 @@ void renderQualityFrame(BenchRun& run, Renderer& renderer, Reconstruction aa, Re
         run.pipeline.renderCompleteFrame(renderer, run.qualityTime, qualityTimer, aa);
         if (cacheable) {
             try {
-                run.gstdCache->store(run.gstdKey, run.pipeline.targets());
+                run.gstdCache->store(run.gstdKey, run.pipeline.targets(), panel);
             } catch (const std::exception& e) {
                 run.progress << "lfd-bench: warning: gstd cache not written: " << e.what() << std::endl;
             }

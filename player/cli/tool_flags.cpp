@@ -19,6 +19,13 @@ void addSharedFlags(CLI::App& app, SharedFlags& flags)
     app.add_option("--gstd-factor", flags.gstdFactor,
                    "gstd: sub-views render at this many times the view resolution (slow gold standard)")
         ->capture_default_str();
+    app.add_option("--gstd-model", flags.gstdModelText,
+                   "gstd: panel (every subpixel integrates its own angular interval and a view pixel at its lens: the limit "
+                   "of the display) | views (the paper's: N views from 2 sub-views each, interleaved like any method)")
+        ->capture_default_str();
+    app.add_option("--gstd-sub-views", flags.gstdSubViews,
+                   "gstd: sub-views per view interval, 1..16 (0 = the model's: panel 4, views 2)")
+        ->capture_default_str();
     app.add_option("--lfdpr-work", flags.lfdprWorkText,
                    "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
                    "short invocations) | cpu (long invocations); the views are the same")
@@ -48,6 +55,13 @@ void finishSharedFlags(SharedFlags& flags)
         throw UsageError(std::string("--gstd-factor: ") + e.what());
     }
     try {
+        flags.gstdModel = parseGstdModel(flags.gstdModelText);
+        gstd.subViews = flags.gstdSubViews;
+        validateGstdOptions(gstd);
+    } catch (const std::exception& e) {
+        throw UsageError(std::string(flags.gstdSubViews > 16 ? "--gstd-sub-views: " : "--gstd-model: ") + e.what());
+    }
+    try {
         flags.lfdprWork = parseLfdprWorkShape(flags.lfdprWorkText);
     } catch (const std::exception& e) {
         throw UsageError(e.what());
@@ -57,6 +71,8 @@ void finishSharedFlags(SharedFlags& flags)
 void applySharedFlags(const SharedFlags& flags, RendererOptions& options)
 {
     options.gstd.factor = flags.gstdFactor;
+    options.gstd.model = flags.gstdModel;
+    options.gstd.subViews = flags.gstdSubViews;
     options.lfdpr.workShape = flags.lfdprWork;
 }
 

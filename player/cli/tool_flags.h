@@ -23,6 +23,9 @@ struct SharedFlags {
     double fps = 60.0;                                      // --fps: frame k is at time k / fps
     double turntablePeriod = 10.0;                          // --turntable-period: 0 = still
     uint32_t gstdFactor = GstdOptions{}.factor;             // --gstd-factor
+    std::string gstdModelText = "panel";                    // --gstd-model
+    GstdModel gstdModel = GstdModel::Panel;
+    uint32_t gstdSubViews = 0;                              // --gstd-sub-views: 0 = the model's
     LfdprOptions::WorkShape lfdprWork = LfdprOptions::WorkShape::Auto; // --lfdpr-work
     bool glDebug = false;                                   // --gl-debug
     uint32_t aniso = 1;                                     // --aniso: 1, 2, 4, 8 or 16

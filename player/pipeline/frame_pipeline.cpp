@@ -162,7 +162,9 @@ void FramePipeline::renderFrame(Renderer& renderer, double time, GpuTimer& timer
         glUseProgram(0);
         timer.end();
     }
-    buildEia(timer, reconstruction);
+    // gstd's panel model writes the panel image itself (the reconstruction does not apply).
+    if (!renderer.writePanelImage(eia_->texture(), timer))
+        buildEia(timer, reconstruction);
     timer.end();
 }
 
@@ -226,7 +228,8 @@ void FramePipeline::renderPreviewFrame(Renderer& renderer, double time, GpuTimer
     timer.begin(stage::kTotal);
     poseScene(timer);
     renderer.render(*scene_, frame_, *previewTargets_, timer);
-    previewEia_->build(*previewTargets_, reconstruction, timer);
+    if (!renderer.writePanelImage(previewEia_->texture(), timer))
+        previewEia_->build(*previewTargets_, reconstruction, timer);
     timer.end();
 }
 

@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr char kMagic[8] = {'L', 'F', 'D', 'G', 'S', 'T', 'D', '1'};
+constexpr char kMagic[8] = {'L', 'F', 'D', 'G', 'S', 'T', 'D', '2'};
 
 void appendU32(std::vector<uint8_t>& out, uint32_t v)
 {
@@ -82,7 +82,16 @@ std::string gstdCacheKey(uint64_t packHash, double time, double turntablePeriod,
                   static_cast<unsigned long long>(packHash), time, turntablePeriod, profile.viewCount,
                   profile.viewWidth, profile.viewHeight, profile.viewConeDeg, profile.viewingDistanceMm,
                   profile.screenWidthMm, profile.screenHeightMm);
-    return std::string(text) + " " + gstdSettingsKey(options) + " gl=" + glDriver;
+    std::string key = std::string(text) + " " + gstdSettingsKey(options);
+    if (options.model == GstdModel::Panel) {
+        // The panel model's EIA also depends on the panel and its lenses.
+        const SubpixelMapping& m = profile.mapping;
+        std::snprintf(text, sizeof(text), " panel=%ux%u mapping=%a,%a,%a,%d order=%u", profile.panelWidth,
+                      profile.panelHeight, m.perSubpixel, m.perRow, m.offset, m.invert ? 1 : 0,
+                      unsigned(profile.subpixelOrder));
+        key += text;
+    }
+    return key + " gl=" + glDriver;
 }
 
 fs::path defaultGstdCacheDir()
@@ -102,13 +111,16 @@ fs::path GstdCache::entryPath(const std::string& key) const
     return dir_ / name;
 }
 
-bool GstdCache::load(const std::string& key, ViewTargets& targets) const
+bool GstdCache::load(const std::string& key, ViewTargets& targets, const GstdCachePanel* panel) const
 {
     const std::vector<uint8_t> bytes = readWholeFile(entryPath(key));
     const size_t header = sizeof(kMagic) + 4 + key.size() + 12;
     const size_t payload = size_t(targets.viewCount()) * targets.width() * targets.height() * 4;
+    const uint32_t panelWidth = panel ? panel->width : 0, panelHeight = panel ? panel->height : 0;
+    const size_t panelBytes = size_t(panelWidth) * panelHeight * 4;
     // Step 1: exact size, magic, key, dimensions, then the checksum over all of it.
-    if (bytes.size() != header + payload + 8 || std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
+    if (bytes.size() != header + payload + 8 + panelBytes + 8 ||
+        std::memcmp(bytes.data(), kMagic, sizeof(kMagic)) != 0)
         return false;
     if (readU32(bytes, 8) != key.size() || std::memcmp(bytes.data() + 12, key.data(), key.size()) != 0)
         return false;
@@ -116,20 +128,26 @@ bool GstdCache::load(const std::string& key, ViewTargets& targets) const
     if (readU32(bytes, dims) != targets.viewCount() || readU32(bytes, dims + 4) != targets.width() ||
         readU32(bytes, dims + 8) != targets.height())
         return false;
+    if (readU32(bytes, header + payload) != panelWidth || readU32(bytes, header + payload + 4) != panelHeight)
+        return false;
+    const size_t body = header + payload + 8 + panelBytes;
     uint64_t stored = 0;
-    std::memcpy(&stored, bytes.data() + header + payload, 8);
-    if (XXH3_64bits(bytes.data(), header + payload) != stored)
+    std::memcpy(&stored, bytes.data() + body, 8);
+    if (XXH3_64bits(bytes.data(), body) != stored)
         return false;
 
-    // Step 2: the views, as gstd left them.
+    // Step 2: the views (and the panel image), as gstd left them.
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTextureSubImage3D(targets.colorArray(), 0, 0, 0, 0, GLsizei(targets.width()), GLsizei(targets.height()),
                         GLsizei(targets.viewCount()), GL_RGBA, GL_UNSIGNED_BYTE, bytes.data() + header);
+    if (panel)
+        glTextureSubImage2D(panel->texture, 0, 0, 0, GLsizei(panelWidth), GLsizei(panelHeight), GL_RGBA,
+                            GL_UNSIGNED_BYTE, bytes.data() + header + payload + 8);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     return true;
 }
 
-void GstdCache::store(const std::string& key, const ViewTargets& targets) const
+void GstdCache::store(const std::string& key, const ViewTargets& targets, const GstdCachePanel* panel) const
 {
     const fs::path target = entryPath(key);
     std::vector<uint8_t> bytes(kMagic, kMagic + sizeof(kMagic));
@@ -143,6 +161,13 @@ void GstdCache::store(const std::string& key, const ViewTargets& targets) const
     bytes.resize(header + payload);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glGetTextureImage(targets.colorArray(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(payload), bytes.data() + header);
+    appendU32(bytes, panel ? panel->width : 0);
+    appendU32(bytes, panel ? panel->height : 0);
+    if (panel) {
+        const size_t at = bytes.size(), panelBytes = size_t(panel->width) * panel->height * 4;
+        bytes.resize(at + panelBytes);
+        glGetTextureImage(panel->texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(panelBytes), bytes.data() + at);
+    }
     const uint64_t checksum = XXH3_64bits(bytes.data(), bytes.size());
     const uint8_t* c = reinterpret_cast<const uint8_t*>(&checksum);
     bytes.insert(bytes.end(), c, c + 8);

@@ -41,6 +41,11 @@ public:
     // same frame again draws it whole. Blocking: for frames whose outputs are read, never
     // between steady-state frames.
     virtual bool settle() { return true; }
+    // A renderer that computes the panel image itself (gstd's panel model, which integrates
+    // every subpixel's own footprint instead of interleaving views) writes it into the EIA
+    // texture (RGBA8, panel size) after render(), as stage "eia", and returns true; the
+    // pipeline then skips its EIA pass. The default, false: the EIA is built from the views.
+    virtual bool writePanelImage(unsigned /*eiaTexture*/, GpuTimer& /*timer*/) { return false; }
 };
 
 // Renderers are built by name through the one registry, renderer_registry.h.

@@ -3,15 +3,17 @@
 # prefix, configure samples/batch_bake over two generated scenes with every generator
 # available (Ninja, Unix Makefiles), and check that a clean build bakes both packs, a
 # rebuild bakes nothing, touching one texture rebakes only the pack that read it, and the
-# packs verify. Usage: batch_bake_test.sh SOURCE_DIR BUILD_DIR
+# packs verify. Usage: batch_bake_test.sh SOURCE_DIR BUILD_DIR [TOOL,TOOL,...]
+# (the tools the install must hold; default every tool).
 set -euo pipefail
 src=$1 build=$2
+IFS=, read -r -a tools <<<"${3:-lfd-bake,lfd-make-samples,lfd-play,lfd-bench,lfd-compare}"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "batch_bake_test: $*" >&2; exit 1; }
 
 cmake --install "$build" --prefix "$work/prefix" >/dev/null
-for tool in lfd-bake lfd-make-samples lfd-play lfd-bench lfd-compare; do
+for tool in "${tools[@]}"; do
   [ -x "$work/prefix/bin/$tool" ] || fail "$tool not installed"
   PATH="$work/prefix/bin:$PATH" $tool --help >/dev/null || fail "installed $tool --help failed"
 done

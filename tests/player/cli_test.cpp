@@ -379,7 +379,8 @@ TEST_F(CliTest, GstdRendererHeadlessWithFactor)
     EXPECT_EQ(stats["renderer"], "gstd");
     EXPECT_EQ(stats["gstd_factor"], 2.0);
     EXPECT_EQ(stats["gstd_samples"], 32.0);
-    EXPECT_EQ(stats["gstd_sub_views"], 2.0);
+    EXPECT_EQ(stats["gstd_sub_views"], 4.0) << "the panel model's default";
+    EXPECT_EQ(stats["gstd_model_panel"], 1.0);
     EXPECT_GE(stats["anisotropy"].get<double>(), 1.0);
     // Content: gstd is seeded, so the views are the ones rendered here with factor 2.
     const DisplayProfile profile =
@@ -393,6 +394,43 @@ TEST_F(CliTest, GstdRendererHeadlessWithFactor)
     EXPECT_NE(bad.status, 0);
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
     EXPECT_NE(bad.err.find("--gstd-factor"), std::string::npos) << bad.err;
+    for (const auto& [flags, named] : {std::pair{" --gstd-model light", "--gstd-model"},
+                                       std::pair{" --gstd-sub-views 17", "--gstd-sub-views"}}) {
+        const RunResult refused = runPlay(dir_, common + " --renderer gstd" + flags);
+        EXPECT_NE(refused.status, 0) << flags;
+        EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+        EXPECT_NE(refused.err.find(named), std::string::npos) << refused.err;
+    }
+}
+
+// The two gold-standard models from the command line: the panel model's EIA is its own
+// integral (the one the renderer writes in a test render), the views model interleaves its
+// 2-sub-view views like any method.
+TEST_F(CliTest, GstdModelsFromTheCommandLine)
+{
+    const fs::path out = dir_ / "out";
+    fs::create_directories(out);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 48x36" +
+                               " --renderer gstd --gstd-factor 2";
+    const DisplayProfile profile =
+        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 48, 36);
+    for (const player::GstdModel model : {player::GstdModel::Panel, player::GstdModel::Views}) {
+        const std::string name = player::gstdModelName(model);
+        const fs::path eia = out / (name + "_eia.png"), stats = out / (name + ".json");
+        const RunResult r = runPlay(dir_, common + " --gstd-model " + name + " --gstd-sub-views 3 --out " + q(eia) +
+                                              " --stats " + q(stats));
+        ASSERT_EQ(r.status, 0) << r.err;
+        const nlohmann::json json = nlohmann::json::parse(readText(stats));
+        EXPECT_EQ(json["gstd_sub_views"], 3.0) << name;
+        EXPECT_EQ(json["gstd_model_panel"], model == player::GstdModel::Panel ? 1.0 : 0.0) << name;
+        player::GstdOptions options;
+        options.factor = 2;
+        options.subViews = 3;
+        options.model = model;
+        const RenderedFrame reference = renderFrame(*player::createGstdRenderer(options), readPack(pack_), profile,
+                                                    {.turntablePeriod = kTurntablePeriod, .eia = true});
+        EXPECT_EQ(imageMismatch(metrics::readImage(eia, 4), reference.eia, 1), "") << name;
+    }
 }
 
 TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)

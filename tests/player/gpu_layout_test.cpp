@@ -398,6 +398,9 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
         out.push_back({"mvr-layered", {{GL_VERTEX_SHADER, "mvr_layered.vert"}, {GL_FRAGMENT_SHADER, "mvr.frag"}}, {},
                        sceneBlocks()});
     out.push_back({"gstd reconstruction", {{GL_COMPUTE_SHADER, "gstd_reconstruct.comp"}}, {}, {}});
+    out.push_back({"gstd panel phases", {{GL_COMPUTE_SHADER, "gstd_panel_phases.comp"}}, {}, {}});
+    out.push_back({"gstd panel accumulation", {{GL_COMPUTE_SHADER, "gstd_panel_accumulate.comp"}}, {}, {}});
+    out.push_back({"gstd panel resolve", {{GL_COMPUTE_SHADER, "gstd_panel_resolve.comp"}}, {}, {}});
     out.push_back({"eia", {{GL_COMPUTE_SHADER, "eia_construct.comp"}}, {}, {}});
     out.push_back({"lfdpr paper points",
                    {{GL_VERTEX_SHADER, "lfdpr_paper_points.vert"},

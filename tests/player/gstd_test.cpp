@@ -79,8 +79,18 @@ Scene tiltedCheckerScene(double degrees)
     return scene;
 }
 
+// The views model: these tests are about gstd's views (the paper's definition; the panel
+// model renders the same views, from more sub-views, and gstd_panel_test.cpp covers its
+// EIA), and skipping the panel passes keeps them fast on a full-size panel.
+GstdOptions viewsModel()
+{
+    GstdOptions options;
+    options.model = player::GstdModel::Views;
+    return options;
+}
+
 // gstd with `options`, one still frame (time 0).
-RenderedFrame renderGstd(const Scene& scene, const DisplayProfile& profile, const GstdOptions& options = {})
+RenderedFrame renderGstd(const Scene& scene, const DisplayProfile& profile, const GstdOptions& options = viewsModel())
 {
     return renderFrame(*player::createGstdRenderer(options), scene, profile);
 }
@@ -148,7 +158,7 @@ TEST(GstdSamples, SeededGaussianInsideTheSupport)
 {
     const GstdOptions options;
     const std::vector<glm::vec2> a = player::gstdSampleOffsets(options);
-    ASSERT_EQ(a.size(), size_t(options.samples) * GstdOptions::kSubViews);
+    ASSERT_EQ(a.size(), size_t(options.samples) * options.subViewCount());
     EXPECT_EQ(a, player::gstdSampleOffsets(options)) << "same seed, same offsets";
     GstdOptions other = options;
     other.seed += 1;
@@ -226,7 +236,7 @@ TEST_F(GstdTest, AnisotropicFilteringSharpensGrazingTextures)
     const DisplayProfile profile = smallProfile(4, 96, 72);
     const Scene scene = tiltedCheckerScene(80.0);
     const std::vector<Image> truth = supersampledMvr(scene, profile, 8, 2);
-    GstdOptions aniso;
+    GstdOptions aniso = viewsModel();
     aniso.factor = 1;
     GstdOptions trilinear = aniso;
     trilinear.maxAnisotropy = 1.0f;
@@ -306,7 +316,7 @@ TEST_F(GstdTest, CacheReturnsIdenticalViewsAndMissesOnAnyChange)
     const Scene scene = cubeAndSphereScene();
     const fs::path dir = testOutputDir("gstd_cache");
     const player::GstdCache cache(dir / "cache");
-    const GstdOptions options;
+    const GstdOptions options = viewsModel();
     const std::string key = player::gstdCacheKey(0x1234, 0.0, 10.0, profile, options, "test GL");
 
     player::GpuScene gpu(scene);

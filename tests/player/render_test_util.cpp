@@ -52,7 +52,9 @@ RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const 
         renderer.render(gpu, out.setup, targets, timer);
     if (request.eia) {
         player::EiaBuilder eia(profile);
-        eia.build(targets, player::Reconstruction::None, timer);
+        // As FramePipeline does: a renderer that integrates the panel itself writes it.
+        if (!renderer.writePanelImage(eia.texture(), timer))
+            eia.build(targets, player::Reconstruction::None, timer);
         out.eia = {profile.panelWidth, profile.panelHeight, 4, eia.read()};
     }
     timer.finish();

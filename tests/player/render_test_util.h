@@ -20,7 +20,7 @@ struct RenderRequest {
     double time = 0.0;            // animation and turntable time, seconds
     double turntablePeriod = 0.0; // seconds per revolution; 0: still
     int frames = 1;               // frames rendered into the same targets; the last is read back
-    bool eia = false;             // also interleave the EIA (no reconstruction) and read it back
+    bool eia = false;             // also interleave the EIA (no reconstruction; gstd panel: its own) and read it back
     float aniso = 1.0f;           // the scene textures' max anisotropy (--aniso)
 };
 

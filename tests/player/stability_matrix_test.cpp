@@ -43,13 +43,14 @@ namespace {
 using metrics::Image;
 
 // Holes against gstd inside surfaces, fraction of gstd's interior pixels (all 8
-// neighbours covered). gstd covers a pixel where its two sub-views at 4x resolution see
-// the surface, every other method where the one view's pixel centre is covered, so the
-// two differ along silhouettes of geometry that moves across a view interval (near
-// geometry most); measured at the CI sizes: 0-2.14%, identical for all four methods in
-// every case but the point limit. So the bound is 3% against gstd, and a point method may
-// leave at most 0.5% more holes than mvr does (the method's own holes).
-constexpr double kHoleBound = 0.03;
+// neighbours covered). gstd covers a pixel where any of its sub-views at 4x resolution see
+// the surface (4 per view interval, spread across it), every other method where the one
+// view's pixel centre is covered, so the two differ along silhouettes of geometry that
+// moves across a view interval (near and edge-on geometry most); measured at the CI sizes:
+// 0-3.2% (edge-on), identical for all four methods in every case but the point limit. So
+// the bound is 4% against gstd, and a point method may leave at most 0.5% more holes than
+// mvr does (the method's own holes).
+constexpr double kHoleBound = 0.04;
 constexpr double kHolesOverMvr = 0.005;
 
 bool envSet(const char* name)
@@ -307,6 +308,11 @@ TEST_F(StabilityMatrix, EveryMethodAgainstGstd)
         double refMs = 0.0, refPoints = -1.0;
         player::RendererOptions refOptions;
         refOptions.gstd.factor = full ? 4 : 2;
+        // Views are compared here: the panel model's views (4 sub-views per view interval,
+        // Gaussian-reconstructed), rendered without its panel passes, which only make the
+        // EIA and would add a pass over the full panel to every case.
+        refOptions.gstd.model = player::GstdModel::Views;
+        refOptions.gstd.subViews = player::GstdOptions{}.subViewCount();
         const std::vector<Image> ref = render("gstd", c, refOptions, refMs, refPoints);
         double mvrHoles = 0.0; // methods run in order, mvr first
         for (const std::string& m : methods) {
