@@ -56,10 +56,14 @@ void finishSharedFlags(SharedFlags& flags)
     }
     try {
         flags.gstdModel = parseGstdModel(flags.gstdModelText);
-        gstd.subViews = flags.gstdSubViews;
+    } catch (const std::exception& e) {
+        throw UsageError(std::string("--gstd-model: ") + e.what());
+    }
+    gstd.subViews = flags.gstdSubViews;
+    try {
         validateGstdOptions(gstd);
     } catch (const std::exception& e) {
-        throw UsageError(std::string(flags.gstdSubViews > 16 ? "--gstd-sub-views: " : "--gstd-model: ") + e.what());
+        throw UsageError(std::string("--gstd-sub-views: ") + e.what());
     }
     try {
         flags.lfdprWork = parseLfdprWorkShape(flags.lfdprWorkText);
