@@ -8,8 +8,8 @@
 #define EIA_MODE_VIEW 2
 #define EIA_MODE_VIEW_SPATIAL 3
 #define EIA_LOCAL_SIZE 8              // x and y: one invocation per panel pixel
-#define EIA_UNIT_VIEWS 0              // sampler2DArray: the N views (as stored; sRGB-decoded in mode view)
-#define EIA_UNIT_PREFILTERED 1        // sampler3D: the prefiltered linear views (spatial modes), z = view, trilinear
+#define EIA_UNIT_VIEWS 0              // sampler2DArray: the N views, as stored (sRGB-encoded RGBA8)
+#define EIA_UNIT_PREFILTERED 1        // the prefiltered linear views, R16F channel planes: sampler3D (view-spatial, trilinear) or sampler2DArray (spatial)
 #define EIA_IMAGE_EIA 0               // rgba8 image2D: the panel-size output
 #define EIA_LOC_PANEL_SIZE 0          // uvec2
 #define EIA_LOC_VIEW_SIZE 1           // uvec2
@@ -19,8 +19,11 @@
 #define EIA_LOC_PHASE_OFFSET 5        // double
 #define EIA_LOC_INVERT_PHASE 6        // bool
 #define EIA_LOC_SUBPIXELS_BGR 7       // bool
-#define EIA_PREFILTER_LOCAL_SIZE 8    // x and y (each invocation 2x2 texels); z = 1 (one view per z)
-#define EIA_PREFILTER_UNIT_VIEWS 0    // sampler2DArray: the N views through an sRGB view (linear fetches)
-#define EIA_PREFILTER_IMAGE_OUT 0     // rgba16f image3D: the prefiltered linear views, z = view
+#define EIA_LOC_LINEAR_FROM_BYTE 8    // float[256] (mode view): sRGB byte -> linear, locations 8..263
+#define EIA_PREFILTER_LOCAL_SIZE 8    // x and y (each invocation EIA_PREFILTER_BLOCK^2 texels); z = 1 (one view per z)
+#define EIA_PREFILTER_BLOCK 4         // texels per invocation in x and y
+#define EIA_PREFILTER_UNIT_VIEWS 0    // sampler2DArray: the N views, as stored (sRGB-encoded RGBA8)
+#define EIA_PREFILTER_IMAGE_OUT 0     // r16f image3D (or image2DArray, EIA_PREFILTER_LAYERED): the prefiltered views, channel planes side by side
 #define EIA_PREFILTER_LOC_SIZE 0      // uvec3: view width, height, count
 #define EIA_PREFILTER_LOC_TAP 1       // float: the 3-tap kernel's outer weight a ([a, 1 - 2a, a])
+#define EIA_PREFILTER_LOC_LINEAR_FROM_BYTE 2 // float[256]: sRGB byte -> linear, locations 2..257

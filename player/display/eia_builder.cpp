@@ -119,34 +119,46 @@ unsigned EiaBuilder::program(Reconstruction mode) {
 }
 
 // The spatial modes' first step: every view in linear light through the 3-tap kernel
-// (eia_prefilter.comp), into prefiltered_ (RGBA16F, made or remade for the view size).
-void EiaBuilder::prefilter(const ViewTargets& views) {
+// (eia_prefilter.comp), into the mode's prefiltered texture (made or remade for the view size).
+unsigned EiaBuilder::prefilter(const ViewTargets& views, Reconstruction mode) {
+    const bool layered = mode == Reconstruction::Spatial;
+    Prefiltered& target = prefiltered_[layered ? 1 : 0];
     const uint32_t size[3] = {views.width(), views.height(), views.viewCount()};
-    if (!std::equal(size, size + 3, prefilteredSize_)) {
-        GLint max3d = 0;
-        glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
-        if (*std::max_element(size, size + 3) > uint32_t(max3d))
+    if (!std::equal(size, size + 3, target.size)) {
+        // Three channel planes side by side: the texture is 3 view widths wide.
+        GLint maxWidth = 0, maxDepth = 0;
+        glGetIntegerv(layered ? GL_MAX_TEXTURE_SIZE : GL_MAX_3D_TEXTURE_SIZE, &maxWidth);
+        glGetIntegerv(layered ? GL_MAX_ARRAY_TEXTURE_LAYERS : GL_MAX_3D_TEXTURE_SIZE, &maxDepth);
+        if (3 * uint64_t(size[0]) > uint64_t(maxWidth) || size[1] > uint32_t(maxWidth) || size[2] > uint32_t(maxDepth))
             throw gl::GlError("EIA: " + std::to_string(size[2]) + " views of " + std::to_string(size[0]) + "x" +
-                              std::to_string(size[1]) + " exceed the driver's 3D texture limit of " +
-                              std::to_string(max3d) + " for the spatial reconstruction; use --aa none or view");
-        prefiltered_ = gl::createTexture(GL_TEXTURE_3D);
-        glTextureStorage3D(prefiltered_, 1, GL_RGBA16F, GLsizei(size[0]), GLsizei(size[1]), GLsizei(size[2]));
-        std::copy(size, size + 3, prefilteredSize_);
+                              std::to_string(size[1]) + " exceed the driver's " + (layered ? "array" : "3D") +
+                              " texture limits (" + std::to_string(maxWidth) + " texels wide, " +
+                              std::to_string(maxDepth) + " deep; the " + reconstructionName(mode) +
+                              " reconstruction needs 3 view widths); use --aa none or view");
+        target.texture = gl::createTexture(layered ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_3D);
+        glTextureStorage3D(target.texture, 1, GL_R16F, GLsizei(3 * size[0]), GLsizei(size[1]), GLsizei(size[2]));
+        std::copy(size, size + 3, target.size);
     }
-    if (!prefilter_)
-        prefilter_.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_prefilter.comp"}}));
-    glUseProgram(prefilter_);
+    if (!target.program) {
+        std::vector<std::string> defines;
+        if (layered)
+            defines.push_back("EIA_PREFILTER_LAYERED 1");
+        target.program.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_prefilter.comp"}}, defines));
+    }
+    glUseProgram(target.program);
     glUniform3ui(eb::kPrefilterLocSize, size[0], size[1], size[2]);
     glUniform1f(eb::kPrefilterLocTap, float(ReconstructionFilter::kSpatialTap));
-    glBindTextureUnit(eb::kPrefilterUnitViews, views.linearColorArray());
+    glUniform1fv(eb::kPrefilterLocLinearFromByte, 256, linearFromByte().data());
+    glBindTextureUnit(eb::kPrefilterUnitViews, views.colorArray());
     glBindSampler(eb::kPrefilterUnitViews, nearest_);
-    glBindImageTexture(eb::kPrefilterImageOut, prefiltered_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F); // all slices
-    // One invocation per 2x2 texels.
-    const uint32_t blockGroup = 2 * eb::kPrefilterLocalSize;
+    glBindImageTexture(eb::kPrefilterImageOut, target.texture, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R16F); // all slices
+    // One invocation per block of texels.
+    const uint32_t blockGroup = eb::kPrefilterBlock * eb::kPrefilterLocalSize;
     glDispatchCompute((size[0] + blockGroup - 1) / blockGroup, (size[1] + blockGroup - 1) / blockGroup, size[2]);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
     glBindSampler(eb::kPrefilterUnitViews, 0);
-    glBindImageTexture(eb::kPrefilterImageOut, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(eb::kPrefilterImageOut, 0, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R16F);
+    return target.texture;
 }
 
 void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& timer) {
@@ -161,26 +173,28 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
     // The stage "eia" covers both passes.
     const bool spatial = mode == Reconstruction::Spatial || mode == Reconstruction::ViewSpatial;
     timer.begin(stage::kEia);
-    if (spatial)
-        prefilter(views);
+    const unsigned prefiltered = spatial ? prefilter(views, mode) : 0;
     const unsigned prog = program(mode);
     glUseProgram(prog);
     glUniform2ui(eb::kLocPanelSize, profile_.panelWidth, profile_.panelHeight);
     glUniform2ui(eb::kLocViewSize, views.width(), views.height());
-    glUniform1ui(eb::kLocViewCount, profile_.viewCount);
+    if (mode != Reconstruction::ViewSpatial) // view-spatial's trilinear read needs no view count
+        glUniform1ui(eb::kLocViewCount, profile_.viewCount);
     glUniform1d(eb::kLocPerSubpixel, m.perSubpixel);
     glUniform1d(eb::kLocPerRow, m.perRow);
     glUniform1d(eb::kLocPhaseOffset, m.offset);
     glUniform1i(eb::kLocInvertPhase, m.invert ? 1 : 0);
     glUniform1i(eb::kLocSubpixelsBgr, profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
+    if (mode == Reconstruction::View)
+        glUniform1fv(eb::kLocLinearFromByte, 256, linearFromByte().data());
 
     // Step 2: inputs and output on the shader's units. A nearest-filter sampler object
     // keeps the view array complete whatever its own filter state (texelFetch does not
     // filter, but an incomplete texture would read as zero).
-    glBindTextureUnit(eb::kUnitViews, mode == Reconstruction::View ? views.linearColorArray() : views.colorArray());
+    glBindTextureUnit(eb::kUnitViews, views.colorArray());
     glBindSampler(eb::kUnitViews, nearest_);
     if (spatial) {
-        glBindTextureUnit(eb::kUnitPrefiltered, prefiltered_);
+        glBindTextureUnit(eb::kUnitPrefiltered, prefiltered);
         glBindSampler(eb::kUnitPrefiltered, bilinear_);
     }
 

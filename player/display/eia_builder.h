@@ -61,20 +61,27 @@ private:
     gl::Sampler bilinear_; // the prefiltered views: linear filtering, edges clamped
     // One program per Reconstruction mode (EIA_MODE compiled in), built on first use.
     gl::Program programs_[4];
-    gl::Program prefilter_; // eia_prefilter.comp, built on first use
-    // The spatial modes' prefiltered linear views (RGBA16F, 3D: z = view), sized on first use.
-    gl::Texture prefiltered_;
-    uint32_t prefilteredSize_[3] = {0, 0, 0};
+    // The spatial modes' prefiltered linear views, one R16F plane per channel side by side
+    // (3 view widths wide): [0] a 3D texture (z = view) for view-spatial's trilinear read,
+    // [1] an array (layer = view) for spatial's bilinear read; each with its
+    // eia_prefilter.comp program, built and sized on first use.
+    struct Prefiltered {
+        gl::Program program;
+        gl::Texture texture;
+        uint32_t size[3] = {0, 0, 0}; // view width, height, count
+    };
+    Prefiltered prefiltered_[2];
     unsigned program(Reconstruction mode);
-    void prefilter(const ViewTargets& views);
+    // Runs the prefilter for `mode` (spatial or view-spatial); returns the texture to read.
+    unsigned prefilter(const ViewTargets& views, Reconstruction mode);
 };
 
 // CPU reference of the same mapping (tests, simulated viewer): views are RGBA8 images in
 // image order (row 0 = top), all of size viewWidth x viewHeight. Mode none is bit-identical
 // to the GPU pass; the filtered modes follow the GPU's steps (the prefilter stored as
-// half floats, bilinear reads, the same erf polynomial) in float, and differ from it by at
-// most one 8-bit level where the GPU fuses a multiply-add, decodes sRGB or filters with
-// other rounding (reconstruction_test states the tolerance).
+// half floats, bilinear reads, sRGB decoded through the same table) in float, and differ
+// from it by at most one 8-bit level where the GPU fuses a multiply-add, takes a power or
+// filters with other rounding (reconstruction_test states the tolerance).
 std::vector<uint8_t> buildEiaCpu(const DisplayProfile& profile,
                                  const std::vector<std::vector<uint8_t>>& views,
                                  uint32_t viewWidth, uint32_t viewHeight,

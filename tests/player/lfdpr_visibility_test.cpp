@@ -551,6 +551,7 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"eia_construct.comp", "comp", {"EIA_MODE 2"}},
         {"eia_construct.comp", "comp", {"EIA_MODE 3"}},
         {"eia_prefilter.comp", "comp", {}},
+        {"eia_prefilter.comp", "comp", {"EIA_PREFILTER_LAYERED 1"}},
         {"gstd_reconstruct.comp", "comp", {}},
         {"gstd_panel_phases.comp", "comp", {}},
         {"gstd_panel_accumulate.comp", "comp", {}},

@@ -65,18 +65,27 @@ std::vector<ProgramInterface> interfaces()
         {"view_downsample.comp", {}, &db::kLayoutFile, db::kLocalSize,
          {{"source", {}, db::kUnitSource}, {"target", {}, db::kImageTarget},
           {"targetSize", db::kLocTargetSize, {}}, {"mode", db::kLocMode, {}}}},
-        // View-spatial: the mode that reads every uniform but the views (it reads them prefiltered).
+        // View-spatial: the mode that reads every uniform but the views (it reads them
+        // prefiltered), the view count (its trilinear read takes the phase as z) and the table.
         {"eia_construct.comp", {"EIA_MODE " + std::to_string(eb::kModeViewSpatial)}, &eb::kLayoutFile, eb::kLocalSize,
          {{"eia", {}, eb::kImageEia},
           {"panelSize", eb::kLocPanelSize, {}}, {"viewSize", eb::kLocViewSize, {}},
-          {"viewCount", eb::kLocViewCount, {}}, {"perSubpixel", eb::kLocPerSubpixel, {}},
+          {"perSubpixel", eb::kLocPerSubpixel, {}},
           {"perRow", eb::kLocPerRow, {}}, {"phaseOffset", eb::kLocPhaseOffset, {}},
           {"invertPhase", eb::kLocInvertPhase, {}}, {"subpixelsBgr", eb::kLocSubpixelsBgr, {}},
           {"prefiltered", {}, eb::kUnitPrefiltered}}},
         // The view mode: the only one that reads the views themselves besides mode none.
         {"eia_construct.comp", {"EIA_MODE " + std::to_string(eb::kModeView)}, &eb::kLayoutFile, eb::kLocalSize,
-         {{"views", {}, eb::kUnitViews}, {"eia", {}, eb::kImageEia}, {"viewCount", eb::kLocViewCount, {}}}},
+         {{"views", {}, eb::kUnitViews}, {"eia", {}, eb::kImageEia}, {"viewCount", eb::kLocViewCount, {}},
+          {"linearFromByte[0]", eb::kLocLinearFromByte, {}}}},
+        // Spatial: the prefiltered views as an array.
+        {"eia_construct.comp", {"EIA_MODE " + std::to_string(eb::kModeSpatial)}, &eb::kLayoutFile, eb::kLocalSize,
+         {{"prefiltered", {}, eb::kUnitPrefiltered}, {"eia", {}, eb::kImageEia}, {"viewCount", eb::kLocViewCount, {}}}},
         {"eia_prefilter.comp", {}, &eb::kLayoutFile, eb::kPrefilterLocalSize,
+         {{"views", {}, eb::kPrefilterUnitViews}, {"prefiltered", {}, eb::kPrefilterImageOut},
+          {"size", eb::kPrefilterLocSize, {}}, {"tap", eb::kPrefilterLocTap, {}},
+          {"linearFromByte[0]", eb::kPrefilterLocLinearFromByte, {}}}},
+        {"eia_prefilter.comp", {"EIA_PREFILTER_LAYERED 1"}, &eb::kLayoutFile, eb::kPrefilterLocalSize,
          {{"views", {}, eb::kPrefilterUnitViews}, {"prefiltered", {}, eb::kPrefilterImageOut},
           {"size", eb::kPrefilterLocSize, {}}, {"tap", eb::kPrefilterLocTap, {}}}},
     };

@@ -257,12 +257,12 @@ TEST_F(ReconstructionGpu, ShaderConstantsMatchTheEnum)
 
 TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)
 {
-    // Tolerance: one 8-bit level, on at most 15% of the subpixels. The GPU passes and the
-    // CPU reference take the same steps in float (prefilter stored as half floats,
-    // bilinear and linear reads), but the driver decodes sRGB with its own approximation
-    // (the CPU uses the exact formula) and filters and fuses multiply-adds with its own
-    // rounding, which moves values near a rounding boundary by one level: 5-9% of the
-    // subpixels on llvmpipe, in every mode.
+    // Tolerance: one 8-bit level, on at most 15% of the subpixels (1% in mode view). The
+    // GPU passes and the CPU reference take the same steps in float (prefilter stored as
+    // half floats, bilinear and linear reads, sRGB decoded through the CPU's table), but
+    // the driver filters, fuses multiply-adds and takes powers with its own rounding,
+    // which moves values near a rounding boundary by one level: about 1.8% of the
+    // subpixels on llvmpipe in the spatial modes, none in mode view.
     for (const DisplayProfile& p : {player::displaytest::smallProfile("RGB"), player::displaytest::smallProfile("BGR", true)})
         for (Reconstruction mode : {Reconstruction::Spatial, Reconstruction::View, Reconstruction::ViewSpatial}) {
             const auto views = randomViews(p, 9);
@@ -285,7 +285,9 @@ TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)
                 worst = std::max(worst, d);
             }
             EXPECT_LE(worst, 1) << player::reconstructionName(mode);
-            EXPECT_LE(double(off) / double(gpu.size()), 0.15) << player::reconstructionName(mode);
+            // The view mode decodes through the CPU's own table: 0% off on llvmpipe.
+            EXPECT_LE(double(off) / double(gpu.size()), mode == Reconstruction::View ? 0.01 : 0.15)
+                << player::reconstructionName(mode);
         }
 }
 
