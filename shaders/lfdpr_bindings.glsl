@@ -112,7 +112,7 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
     vec4 screenCenter; // xyz screen centre in scene space (zero-parallax plane)
     vec4 viewLine;     // xyz a point of the viewing line (camera 0's eye)
     vec4 planes[6];    // convex hull of the union of all view frusta, inside: dot >= 0
-    uvec4 counts;      // x view count, y point capacity, z options (LFDPR_OPTION_*), w 0
+    uvec4 counts;      // x view count, y point capacity, z options (LFDPR_OPTION_*), w views splatted into
     vec4 viewSize;     // x view width, y view height (pixels), zw 0
 } u_lfd;
 

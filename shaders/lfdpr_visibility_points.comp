@@ -148,7 +148,9 @@ uint reservePoints(uint count)
     uint before = (min(first, capacity) + uint(LFDPR_GROUP_SIZE) - 1u) / uint(LFDPR_GROUP_SIZE);
     uint after = (min(first + count, capacity) + uint(LFDPR_GROUP_SIZE) - 1u) / uint(LFDPR_GROUP_SIZE);
     if (after > before) {
-        uvec3 groups = lfdSplatGroups(min(first + count, capacity), u_lfd.counts.x);
+        // The splat's view count (counts.w), not the sampling's (counts.x): under --ss 2v
+        // points sampled for N views are splatted into 2N, in twice the slices.
+        uvec3 groups = lfdSplatGroups(min(first + count, capacity), u_lfd.counts.w);
         atomicMax(vis.splatGroupsX, groups.x);
         atomicMax(vis.splatGroupsY, groups.y);
     }

@@ -63,7 +63,8 @@ std::array<glm::dvec4, 6> unionFrustumPlanesDisplay(const FrameSetup& frame, dou
     };
 }
 
-LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, uint32_t options)
+LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, uint32_t options,
+                             uint32_t splatViewCount)
 {
     const glm::dmat4 sceneFromDisplay = glm::inverse(frame.displayFromScene);
     const glm::dmat3 sceneFromDisplay3(sceneFromDisplay);
@@ -83,7 +84,8 @@ LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, ui
     const std::array<glm::dvec4, 6> planes = unionFrustumPlanesDisplay(frame);
     for (size_t k = 0; k < planes.size(); ++k)
         g.planes[k] = glm::vec4(glm::transpose(frame.displayFromScene) * planes[k]);
-    g.counts = glm::uvec4(frame.profile.viewCount, pointCapacity, options, 0u);
+    g.counts = glm::uvec4(frame.profile.viewCount, pointCapacity, options,
+                          splatViewCount ? splatViewCount : frame.profile.viewCount);
     g.viewSize = glm::vec4(float(frame.profile.viewWidth), float(frame.profile.viewHeight), 0.0f, 0.0f);
     return g;
 }

@@ -30,8 +30,11 @@ using lfdpr_bindings::LfdprFrameGpu;
 // `slackMm` so vertices on a frustum boundary are never culled.
 std::array<glm::dvec4, 6> unionFrustumPlanesDisplay(const FrameSetup& frame, double slackMm = 1e-3);
 
-// The frame constants for `frame` (planes taken to scene space).
-LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, uint32_t options);
+// The frame constants for `frame` (planes taken to scene space). `splatViewCount` (counts.w):
+// the views the points will be splatted into, 0 = frame's own; under angular supersampling
+// (FrameSetup::pointSampling) points are sampled for N views and splatted into 2N.
+LfdprFrameGpu makeLfdprFrame(const FrameSetup& frame, uint32_t pointCapacity, uint32_t options,
+                             uint32_t splatViewCount = 0);
 
 class LfdprPaperPointGeneration {
 public:

@@ -81,7 +81,7 @@ public:
         const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
                                  (options_.textureSplatting ? k_.optionTextureSplatting : 0u) |
                                  (options_.multiviewMipmapping ? k_.optionMvMipmapping : 0u);
-        const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options);
+        const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options, frame.profile.viewCount);
         glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
         uploadViewInverses(frame);
         bindBuffers(scene);

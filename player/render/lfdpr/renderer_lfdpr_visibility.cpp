@@ -119,7 +119,8 @@ public:
         uploadCameraLine(frame);
         const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
                                  (options_.textureSplatting ? k_.optionTextureSplatting : 0u);
-        const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options);
+        // Point generation sizes the splat's dispatch, for the views the points go into.
+        const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options, frame.profile.viewCount);
         glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
 
         // Step 2: every clear of the frame, behind one barrier; point generation, which also
