@@ -112,9 +112,12 @@ EiaBuilder::EiaBuilder(const DisplayProfile& profile) : profile_(profile) {
 unsigned EiaBuilder::program(Reconstruction mode) {
     reconstructionName(mode); // throws for a value outside the enum
     gl::Program& p = programs_[size_t(mode)];
-    if (!p)
+    if (!p) {
         p.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_construct.comp"}},
                                  {"EIA_MODE " + std::to_string(uint32_t(mode))}));
+        if (mode == Reconstruction::View) // the decode table is constant: set once, with the program
+            glProgramUniform1fv(p, eb::kLocLinearFromByte, 256, linearFromByte().data());
+    }
     return p.get();
 }
 
@@ -144,11 +147,11 @@ unsigned EiaBuilder::prefilter(const ViewTargets& views, Reconstruction mode) {
         if (layered)
             defines.push_back("EIA_PREFILTER_LAYERED 1");
         target.program.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_prefilter.comp"}}, defines));
+        glProgramUniform1fv(target.program, eb::kPrefilterLocLinearFromByte, 256, linearFromByte().data());
     }
     glUseProgram(target.program);
     glUniform3ui(eb::kPrefilterLocSize, size[0], size[1], size[2]);
     glUniform1f(eb::kPrefilterLocTap, float(ReconstructionFilter::kSpatialTap));
-    glUniform1fv(eb::kPrefilterLocLinearFromByte, 256, linearFromByte().data());
     glBindTextureUnit(eb::kPrefilterUnitViews, views.colorArray());
     glBindSampler(eb::kPrefilterUnitViews, nearest_);
     glBindImageTexture(eb::kPrefilterImageOut, target.texture, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R16F); // all slices
@@ -185,8 +188,6 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
     glUniform1d(eb::kLocPhaseOffset, m.offset);
     glUniform1i(eb::kLocInvertPhase, m.invert ? 1 : 0);
     glUniform1i(eb::kLocSubpixelsBgr, profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
-    if (mode == Reconstruction::View)
-        glUniform1fv(eb::kLocLinearFromByte, 256, linearFromByte().data());
 
     // Step 2: inputs and output on the shader's units. A nearest-filter sampler object
     // keeps the view array complete whatever its own filter state (texelFetch does not
