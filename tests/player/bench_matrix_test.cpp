@@ -3,6 +3,7 @@
 // front is the non-dominated set, the chart is drawn, a stop request keeps what finished,
 // and a missing chart tool is reported rather than failing.
 #include "gl_test_support.h"
+#include "render_test_util.h"
 #include "skip_or_fail.h"
 #include "test_scenes.h"
 
@@ -24,18 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-DisplayProfile tinyProfile()
-{
-    return parseDisplayProfile(R"({
-        "format": "lfd-display-profile/1", "name": "matrix-small",
-        "panel_width": 384, "panel_height": 216,
-        "screen_width_mm": 34.54, "screen_height_mm": 19.43,
-        "subpixel_order": "RGB", "lens_width_mm": 0.72, "lens_tilt_deg": -9.66,
-        "view_count": 4, "view_width": 64, "view_height": 48,
-        "view_cone_deg": 40.0, "viewing_distance_mm": 300.0
-    })",
-                               "matrix-small.json");
-}
+DisplayProfile tinyProfile() { return tenthPrototypeProfile("matrix-small", 4, 64, 48); }
 
 player::BenchOptions matrixOptions()
 {

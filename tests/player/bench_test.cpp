@@ -3,6 +3,7 @@
 // mvr, speed-ups are consistent, and the written JSON / CSV / SVG / PNGs hold what the
 // table shows.
 #include "gl_test_support.h"
+#include "render_test_util.h"
 #include "test_scenes.h"
 
 #include "bench_report.h"
@@ -28,19 +29,7 @@ using player::BenchOptions;
 using player::BenchReport;
 
 // 384x216 panel, 4 views of 64x48: a frame takes milliseconds on llvmpipe.
-DisplayProfile benchProfile()
-{
-    const DisplayProfile base = parseDisplayProfile(R"({
-        "format": "lfd-display-profile/1", "name": "bench-small",
-        "panel_width": 384, "panel_height": 216,
-        "screen_width_mm": 34.54, "screen_height_mm": 19.43,
-        "subpixel_order": "RGB", "lens_width_mm": 0.72, "lens_tilt_deg": -9.66,
-        "view_count": 4, "view_width": 64, "view_height": 48,
-        "view_cone_deg": 40.0, "viewing_distance_mm": 300.0
-    })",
-                                                    "bench-small.json");
-    return base;
-}
+DisplayProfile benchProfile() { return tenthPrototypeProfile("bench-small", 4, 64, 48); }
 
 BenchOptions options(std::vector<std::string> renderers)
 {

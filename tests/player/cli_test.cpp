@@ -193,7 +193,7 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
     // the same driver and code give the same bytes (1 level of slack for PNG round trips
     // elsewhere: none is expected here).
     const DisplayProfile profile =
-        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
+        tenthPrototypeProfile("cli-small", 4, 96, 72);
     const RenderedFrame reference = referenceFrame("mvr", pack_, profile, 2);
     std::vector<metrics::Image> views;
     for (uint32_t v = 0; v < 4; ++v) {
@@ -251,7 +251,7 @@ TEST_F(CliTest, LayeredRendererAndExplicitFrame)
     const RunResult r = runPlay(dir_, common + " --renderer mvr-layered --frames 2 --frame 30 --views-out " + q(b));
     ASSERT_EQ(r.status, 0) << r.err;
     const DisplayProfile profile =
-        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 64, 48);
+        tenthPrototypeProfile("cli-small", 4, 64, 48);
     const RenderedFrame frame30 = referenceFrame("mvr", pack_, profile, 30);
     for (uint32_t v = 0; v < 4; ++v) {
         EXPECT_EQ(imageMismatch(readView(a, v), frame30.views[v], 1), "") << "mvr, view " << v;
@@ -337,7 +337,7 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
     // equality: a driver's 32-bit visibility path may resolve a depth tie to either point
     // between runs, so a pixel may differ where two points meet.
     const DisplayProfile profile =
-        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
+        tenthPrototypeProfile("cli-small", 4, 96, 72);
     const RenderedFrame reference = referenceFrame("lfdpr", pack_, profile, 0);
     for (uint32_t v = 0; v < 4; ++v) {
         const metrics::Image view = readView(out / "lfdpr_views", v);
@@ -384,7 +384,7 @@ TEST_F(CliTest, GstdRendererHeadlessWithFactor)
     EXPECT_GE(stats["anisotropy"].get<double>(), 1.0);
     // Content: gstd is seeded, so the views are the ones rendered here with factor 2.
     const DisplayProfile profile =
-        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
+        tenthPrototypeProfile("cli-small", 4, 96, 72);
     const RenderedFrame reference = renderFrame(*player::createGstdRenderer({.factor = 2}), readPack(pack_), profile,
                                                 {.turntablePeriod = kTurntablePeriod});
     for (uint32_t v = 0; v < 4; ++v)
@@ -413,7 +413,7 @@ TEST_F(CliTest, GstdModelsFromTheCommandLine)
     const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 48x36" +
                                " --renderer gstd --gstd-factor 2";
     const DisplayProfile profile =
-        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 48, 36);
+        tenthPrototypeProfile("cli-small", 4, 48, 36);
     for (const player::GstdModel model : {player::GstdModel::Panel, player::GstdModel::Views}) {
         const std::string name = player::gstdModelName(model);
         const fs::path eia = out / (name + "_eia.png"), stats = out / (name + ".json");
@@ -449,7 +449,7 @@ TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
     // Content: the quality frame (frame 0) rendered here; lfdpr's EIA close to mvr's
     // (measured on llvmpipe: RMSE 0.64; the visibility pipeline shades like mvr).
     const DisplayProfile profile =
-        withViews(parseDisplayProfile(tenthPrototypeProfileJson("cli-small"), profile_.string()), 4, 96, 72);
+        tenthPrototypeProfile("cli-small", 4, 96, 72);
     const RenderedFrame mvr = referenceFrame("mvr", pack_, profile, 0);
     EXPECT_EQ(imageMismatch(metrics::readImage(out / "mvr_eia.png", 4), mvr.eia, 1), "") << "mvr EIA";
     const metrics::Image lfdprEia = metrics::readImage(out / "lfdpr_eia.png", 4);

@@ -6,6 +6,7 @@
 // supersampling.
 #include "display_test_profiles.h"
 #include "gl_test_support.h"
+#include "render_test_util.h"
 #include "test_scenes.h"
 
 #include "eia_builder.h"
@@ -292,18 +293,7 @@ TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)
 }
 
 // 4 views of 64x48 on a 384x216 panel: a frame takes milliseconds on llvmpipe.
-DisplayProfile tinyProfile()
-{
-    return parseDisplayProfile(R"({
-        "format": "lfd-display-profile/1", "name": "ss-small",
-        "panel_width": 384, "panel_height": 216,
-        "screen_width_mm": 34.54, "screen_height_mm": 19.43,
-        "subpixel_order": "RGB", "lens_width_mm": 0.72, "lens_tilt_deg": -9.66,
-        "view_count": 4, "view_width": 64, "view_height": 48,
-        "view_cone_deg": 40.0, "viewing_distance_mm": 300.0
-    })",
-                               "ss-small.json");
-}
+DisplayProfile tinyProfile() { return tenthPrototypeProfile("ss-small", 4, 64, 48); }
 
 TEST_F(ReconstructionGpu, DownsampleIsTheLinearMeanOfTheSupersampledViews)
 {

@@ -95,6 +95,11 @@ std::string tenthPrototypeProfileJson(const std::string& name)
     })";
 }
 
+DisplayProfile tenthPrototypeProfile(const std::string& name, uint32_t views, uint32_t width, uint32_t height)
+{
+    return withViews(parseDisplayProfile(tenthPrototypeProfileJson(name), name + ".json"), views, width, height);
+}
+
 double maskedRmse(const metrics::Image& a, const metrics::Image& b, const std::vector<uint8_t>& mask)
 {
     double sum = 0.0;

@@ -52,6 +52,8 @@ DisplayProfile smallProfile(uint32_t views, uint32_t width, uint32_t height);
 // lenses at -9.66 deg, 8 views of 48x36: non-square 0.72 x 0.54 mm view pixels, as on the
 // prototype), named `name`; small enough that EIAs stay cheap on llvmpipe.
 std::string tenthPrototypeProfileJson(const std::string& name);
+// That panel parsed, with `views` views of width x height.
+DisplayProfile tenthPrototypeProfile(const std::string& name, uint32_t views, uint32_t width, uint32_t height);
 
 // RMSE of the colour channels over the pixels where `mask` is set (0 for an empty mask).
 double maskedRmse(const metrics::Image& a, const metrics::Image& b, const std::vector<uint8_t>& mask);
