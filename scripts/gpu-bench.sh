@@ -93,3 +93,39 @@ for run in runs:
 PY
 mv "$out/table.md.tmp" "$out/table.md"
 cat "$out/table.md"
+
+# --aniso 16 on the textured scenes (README "Anisotropic filtering"): mvr against lfdpr with
+# each of its filters (--lfdpr-aniso hardware, a GPU's default, and taps), lfdpr's EIA
+# RMSE against mvr's (issue 23's target: 0.01). LFD_BENCH_ANISO=0 skips it.
+if [ "${LFD_BENCH_ANISO:-1}" != 0 ]; then
+  aniso=()
+  for pack in "${packs[@]}"; do
+    scene=$(basename "$pack" .lfdpack)
+    case "$scene" in car|room|dense) continue ;; esac # untextured: --aniso changes nothing
+    for filter in hardware taps; do
+      echo "gpu-bench: $scene --aniso 16 --lfdpr-aniso $filter"
+      "$bench" "$pack" --renderers mvr,lfdpr --reference mvr --frames "$frames" --warmup "$warmup" --views 48 \
+        --view-size 480x360 --aniso 16 --lfdpr-aniso "$filter" --out "$out/aniso-$scene-$filter" --quiet \
+        > "$out/aniso-$scene-$filter.txt"
+      aniso+=("aniso-$scene-$filter")
+    done
+  done
+  if [ "${#aniso[@]}" -gt 0 ]; then
+    python3 - "$out" "${aniso[@]}" > "$out/aniso.md.tmp" <<'PY'
+import json, os, sys
+out, runs = sys.argv[1], sys.argv[2:]
+print("| scene | --lfdpr-aniso | lfdpr EIA RMSE vs mvr | view RMSE vs mvr | mvr total ms | lfdpr total ms |")
+print("|---|---|---|---|---|---|")
+for run in runs:
+    b = json.load(open(os.path.join(out, run, "bench.json")))
+    r = {x["name"]: x for x in b["renderers"]}
+    q = r["lfdpr"].get("quality", {})
+    scene, flt = run[len("aniso-"):].rsplit("-", 1)
+    total = lambda name: r[name]["stages"]["total"]["mean"]
+    print(f"| {scene} | {flt} | {q.get('eia', {}).get('rmse', float('nan')):.3f} | "
+          f"{q.get('all_views', {}).get('rmse', float('nan')):.3f} | {total('mvr'):.2f} | {total('lfdpr'):.2f} |")
+PY
+    mv "$out/aniso.md.tmp" "$out/aniso.md"
+    cat "$out/aniso.md"
+  fi
+fi

@@ -32,12 +32,15 @@
 #include "pbr_shading.glsl"
 vec2 g_duvdx, g_duvdy; // this pixel's uv footprint, for LFD_SAMPLE
 
-// Anisotropic filtering (--aniso) in the shader rather than the sampler's: the footprint's
-// major axis is cut into n = min(ceil(major / minor), u_frame.maxAnisotropy) pieces, each
-// fetched with textureGrad over its own near-isotropic footprint (the piece along the
-// major axis, the minor axis across it), and averaged - what hardware anisotropic
-// filters do, independent of a driver's textureGrad in compute (llvmpipe's made lfdpr's
-// grazing textures worse, not better). At 1 it is the single trilinear textureGrad.
+#ifdef LFDPR_ANISO_TAPS
+// Anisotropic filtering (--aniso) in the shader rather than the sampler's
+// (LfdprOptions::AnisoFilter::Taps, the default on software rasterisers; compiled in only
+// at --aniso above 1): the footprint's major axis is cut into
+// n = min(ceil(major / minor), u_frame.maxAnisotropy) pieces, each fetched with textureGrad
+// over its own near-isotropic footprint (the piece along the major axis, the minor axis
+// across it), and averaged - what hardware anisotropic filters do, independent of a
+// driver's textureGrad in compute (llvmpipe's made lfdpr's grazing textures worse, not
+// better). Where n is 1 it is the single trilinear textureGrad.
 vec4 lfdSampleFootprint(sampler2D t, vec2 uv)
 {
     const vec2 size = vec2(textureSize(t, 0));
@@ -54,6 +57,13 @@ vec4 lfdSampleFootprint(sampler2D t, vec2 uv)
     return sum / float(n);
 }
 #define LFD_SAMPLE(t, uv) lfdSampleFootprint(t, uv)
+#else
+// One textureGrad at the pixel's exact footprint through the textures' own sampler state:
+// trilinear at --aniso 1, and above it the texture unit's anisotropic filter
+// (LfdprOptions::AnisoFilter::Hardware, a GPU's default), the one mvr's texture() gets,
+// fed the analytic gradients.
+#define LFD_SAMPLE(t, uv) textureGrad(t, uv, g_duvdx, g_duvdy)
+#endif
 #include "material_shading.glsl"
 #define LFDPR_SCENE_TEXELS
 #include "lfdpr_scene_access.glsl"

@@ -30,6 +30,11 @@ void addSharedFlags(CLI::App& app, SharedFlags& flags)
                    "lfdpr visibility pipeline work shape: auto (cpu on software rasterisers, else gpu) | gpu (many "
                    "short invocations) | cpu (long invocations); the views are the same")
         ->capture_default_str();
+    app.add_option("--lfdpr-aniso", flags.lfdprAnisoText,
+                   "lfdpr visibility pipeline, --aniso above 1: auto (taps on software rasterisers, else hardware) | "
+                   "hardware (the texture unit's anisotropic filter at the exact footprint) | taps (trilinear taps "
+                   "along the footprint's major axis)")
+        ->capture_default_str();
     app.add_option("--aniso", flags.aniso,
                    "anisotropic texture filtering for every renderer: 1 (trilinear), 2, 4, 8 or 16 (clamped to the "
                    "driver's limit; gstd always filters at 16)")
@@ -67,6 +72,7 @@ void finishSharedFlags(SharedFlags& flags)
     }
     try {
         flags.lfdprWork = parseLfdprWorkShape(flags.lfdprWorkText);
+        flags.lfdprAniso = parseLfdprAnisoFilter(flags.lfdprAnisoText);
     } catch (const std::exception& e) {
         throw UsageError(e.what());
     }
@@ -78,6 +84,7 @@ void applySharedFlags(const SharedFlags& flags, RendererOptions& options)
     options.gstd.model = flags.gstdModel;
     options.gstd.subViews = flags.gstdSubViews;
     options.lfdpr.workShape = flags.lfdprWork;
+    options.lfdpr.anisoFilter = flags.lfdprAniso;
 }
 
 Reconstruction parseReconstructionFlag(const std::string& flag, const std::string& text)

@@ -27,17 +27,18 @@ struct SharedFlags {
     GstdModel gstdModel = GstdModel::Panel;
     uint32_t gstdSubViews = 0;                              // --gstd-sub-views: 0 = the model's
     LfdprOptions::WorkShape lfdprWork = LfdprOptions::WorkShape::Auto; // --lfdpr-work
+    LfdprOptions::AnisoFilter lfdprAniso = LfdprOptions::AnisoFilter::Auto; // --lfdpr-aniso
     bool glDebug = false;                                   // --gl-debug
     uint32_t aniso = 1;                                     // --aniso: 1, 2, 4, 8 or 16
     // As CLI11 fills them.
-    std::string viewSizeText, lfdprWorkText = "auto";
+    std::string viewSizeText, lfdprWorkText = "auto", lfdprAnisoText = "auto";
     CLI::Option* viewSizeOpt = nullptr;
 };
 
 void addSharedFlags(CLI::App& app, SharedFlags& flags);
 // Checks and types the parsed flags; cli::UsageError naming the flag.
 void finishSharedFlags(SharedFlags& flags);
-// --gstd-factor and --lfdpr-work into the renderers' options.
+// --gstd-* and --lfdpr-work / --lfdpr-aniso into the renderers' options.
 void applySharedFlags(const SharedFlags& flags, RendererOptions& options);
 
 // --aa / --ss values; cli::UsageError naming `flag` and the choices.

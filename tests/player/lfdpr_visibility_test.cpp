@@ -581,6 +581,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
         {"lfdpr_visibility_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u", "LFD_STREAMS 0x1u"}},
         {"lfdpr_visibility_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x1u", "LFD_STREAMS 0x9u"}},
+        // --aniso above 1 with the shader's taps (llvmpipe's default).
+        {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_ANISO_TAPS 1", "LFD_TEXTURE_MASK 0x1Fu"}},
         {"lfdpr_visibility_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1"}},
         {"lfdpr_visibility_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_CELL_SCALE 2"}},
         {"lfdpr_visibility_points.comp", "comp", {"LFDPR_PIXEL_CENTRE_CULLING 1", "LFDPR_LARGE_PASS 1"}},
@@ -596,6 +598,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INDEX_PASS 1"}},
         {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
         {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFD_TEXTURE_MASK 0x0u"}},
+        // Every texture as a GPU shades it (the texture unit filters anisotropically).
+        {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x1Fu"}},
         {"lfdpr_visibility_shade_list.comp", "comp", {"LFDPR_WORK_GPU 1"}},
         {"lfdpr_visibility_repair_dispatch.comp", "comp", {"LFDPR_WORK_GPU 1"}},
     };

@@ -47,8 +47,8 @@ std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vect
     return groups;
 }
 
-LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, uint32_t testIndexRaces)
-    : int64_(int64), defines_(atomicsDefines(int64)), trilinear_(gl::createSampler())
+LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces)
+    : int64_(int64), hardwareAniso_(hardwareAniso), defines_(atomicsDefines(int64)), trilinear_(gl::createSampler())
 {
     // As GpuScene's textures without anisotropy: trilinear, glTF's default REPEAT.
     glSamplerParameteri(trilinear_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -82,14 +82,14 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, uint32_
     }
     // The untextured group's program is always needed; built now (for a scene with every
     // stream) so a shader error surfaces at construction, not in the middle of a frame.
-    shadeProgram(0u, kStreamsAll);
+    shadeProgram(0u, kStreamsAll, false);
 }
 
 LfdprVisibilityShading::~LfdprVisibilityShading() = default;
 
-unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t streams)
+unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t streams, bool taps)
 {
-    const uint64_t key = uint64_t(textureMask) << 32 | streams;
+    const uint64_t key = uint64_t(textureMask) << 33 | uint64_t(streams) << 1 | (taps ? 1u : 0u);
     if (const auto it = shadePrograms_.find(key); it != shadePrograms_.end())
         return it->second.get();
     std::vector<std::string> defines = defines_;
@@ -98,6 +98,8 @@ unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t str
     defines.emplace_back(mask);
     std::snprintf(mask, sizeof(mask), "LFD_STREAMS 0x%Xu", streams);
     defines.emplace_back(mask);
+    if (taps)
+        defines.emplace_back("LFDPR_ANISO_TAPS 1");
     gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility_shade.comp"}}, defines));
     const unsigned name = program.get();
     shadePrograms_[key] = std::move(program);
@@ -258,11 +260,15 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
     const uint32_t shared = k.maxShadeGroups - 1;
     constexpr GLsizei kMaterialUnits = 5; // base colour, metallic-roughness, normal, occlusion, emissive
     GLuint samplers[kMaterialUnits];
-    std::fill(std::begin(samplers), std::end(samplers), GLuint(trilinear_));
+    // The shader's taps only when there is anisotropy to filter: at --aniso 1 every filter is
+    // the one trilinear textureGrad, and the taps' code cost llvmpipe 5 ms of the gallery's
+    // shading even untaken (its branches run under a lane mask).
+    const bool taps = !hardwareAniso_ && scene.maxAnisotropy() > 1.0f;
+    std::fill(std::begin(samplers), std::end(samplers), taps ? GLuint(trilinear_) : 0u);
     for (size_t g = 0; g < groups_.size(); ++g) {
         const Group& group = groups_[g];
         const uint32_t slot = g == 0 ? 0u : 1u + uint32_t((g - 1) % shared);
-        const GLuint program = shadeProgram(group.textureMask, scene.cpu().vertices.mask());
+        const GLuint program = shadeProgram(group.textureMask, scene.cpu().vertices.mask(), taps);
         glUseProgram(program);
         if (!int64_) // only the 32-bit path's programs have the pass
             glProgramUniform1ui(program, k.locPass, pass);

@@ -33,13 +33,16 @@ public:
     // int64: one 64-bit atomicMin pass (GL_NV_shader_atomic_int64; its shaders are only
     // compiled then); otherwise a depth pass and a record (index) pass over 32-bit words.
     // gpuWork: LFDPR_WORK_GPU for every program (lfdpr_work_shape.glsl).
+    // hardwareAniso: LfdprOptions::AnisoFilter::Hardware (the shading samples through the
+    // textures' own state; else the trilinear sampler and the shader's taps).
     // testIndexRaces: LfdprOptions::testIndexRaces (32-bit path only).
-    LfdprVisibilityShading(bool int64, bool gpuWork, uint32_t testIndexRaces = 0);
+    LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces = 0);
     ~LfdprVisibilityShading();
     LfdprVisibilityShading(const LfdprVisibilityShading&) = delete;
     LfdprVisibilityShading& operator=(const LfdprVisibilityShading&) = delete;
 
     bool int64() const { return int64_; }
+    bool hardwareAniso() const { return hardwareAniso_; }
     void resize(uint32_t viewCount, uint32_t width, uint32_t height);
     // 8 bytes per view pixel (depth + the winner's record, or the 64-bit word).
     size_t viewBufferBytes() const;
@@ -86,18 +89,21 @@ private:
     // dispatched indirectly, the one not needed with zero workgroups).
     void listAndShade(const GpuScene& scene, uint32_t pass);
     void repair(const GpuScene& scene);
-    unsigned shadeProgram(uint32_t textureMask, uint32_t streams);
+    // taps: LFDPR_ANISO_TAPS (the shader's anisotropic taps), else one textureGrad.
+    unsigned shadeProgram(uint32_t textureMask, uint32_t streams, bool taps);
 
     bool int64_;
+    bool hardwareAniso_;
     std::vector<std::string> defines_; // every program's: atomics path, work shape
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
     gl::Program listProgram_, listRepairProgram_; // lfdpr_visibility_shade_list.comp: marks, repair list
     gl::Program repairDispatchProgram_;
-    // Trilinear, no anisotropy: bound to the material units while shading, so the textures'
-    // own --aniso state does not filter lfdpr's shader taps a second time (the taps are the
-    // anisotropic filter; lfdpr_visibility_shade.comp, lfdSampleFootprint).
+    // Trilinear, no anisotropy: bound to the material units while shading with the taps, so
+    // the textures' own --aniso state does not filter lfdpr's shader taps a second time (the
+    // taps are the anisotropic filter; lfdpr_visibility_shade.comp, lfdSampleFootprint).
+    // Not bound otherwise (hardwareAniso_, or --aniso 1): the textures' own state filters.
     gl::Sampler trilinear_;
-    std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 32 | LFD_STREAMS
+    std::map<uint64_t, gl::Program> shadePrograms_; // by LFD_TEXTURE_MASK << 33 | LFD_STREAMS << 1 | taps
     gl::Buffer depth_, index_; // 64-bit path: depth_ holds the words
     gl::Texture depthTexels_, indexTexels_; // the same, read as buffer textures
     gl::Buffer shadeWork_, chunkMasks_, repair_;

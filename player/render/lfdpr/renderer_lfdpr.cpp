@@ -35,6 +35,22 @@ bool lfdprUseInt64(LfdprOptions::Atomics atomics)
     }
 }
 
+namespace {
+
+// The software rasterisers Mesa ships (llvmpipe, softpipe) and OpenSWR, which run compute
+// invocations as SIMD rows on a few CPU cores; everything else is a GPU.
+bool softwareRasteriser()
+{
+    const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    const std::string name = renderer ? renderer : "";
+    for (const char* software : {"llvmpipe", "softpipe", "SWR"})
+        if (name.find(software) != std::string::npos)
+            return true;
+    return false;
+}
+
+} // namespace
+
 bool lfdprGpuWorkShape(LfdprOptions::WorkShape shape)
 {
     switch (shape) {
@@ -43,17 +59,33 @@ bool lfdprGpuWorkShape(LfdprOptions::WorkShape shape)
     case LfdprOptions::WorkShape::Cpu:
         return false;
     case LfdprOptions::WorkShape::Auto:
-    default: {
-        // The software rasterisers Mesa ships (llvmpipe, softpipe) and OpenSWR run compute
-        // invocations as SIMD rows on a few CPU cores; everything else is a GPU.
-        const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-        const std::string name = renderer ? renderer : "";
-        for (const char* software : {"llvmpipe", "softpipe", "SWR"})
-            if (name.find(software) != std::string::npos)
-                return false;
+    default:
+        return !softwareRasteriser();
+    }
+}
+
+bool lfdprHardwareAniso(LfdprOptions::AnisoFilter filter)
+{
+    switch (filter) {
+    case LfdprOptions::AnisoFilter::Hardware:
         return true;
+    case LfdprOptions::AnisoFilter::Taps:
+        return false;
+    case LfdprOptions::AnisoFilter::Auto:
+    default:
+        return !softwareRasteriser();
     }
-    }
+}
+
+LfdprOptions::AnisoFilter parseLfdprAnisoFilter(const std::string& text)
+{
+    if (text == "auto")
+        return LfdprOptions::AnisoFilter::Auto;
+    if (text == "hardware")
+        return LfdprOptions::AnisoFilter::Hardware;
+    if (text == "taps")
+        return LfdprOptions::AnisoFilter::Taps;
+    throw std::invalid_argument("--lfdpr-aniso: \"" + text + "\" is not one of auto, hardware, taps");
 }
 
 LfdprOptions::WorkShape parseLfdprWorkShape(const std::string& text)

@@ -73,6 +73,16 @@ struct LfdprOptions {
     // runs fastest. Auto: Cpu on Mesa's software rasterisers (llvmpipe, softpipe) and
     // OpenSWR, Gpu elsewhere. The views are the same either way.
     enum class WorkShape { Auto, Gpu, Cpu } workShape = WorkShape::Auto;
+    // Visibility pipeline, --aniso above 1: how the shading filters a texture anisotropically
+    // at the pixel's exact footprint (README "Anisotropic filtering"). Hardware: one
+    // textureGrad through the textures' own anisotropic sampler state, the texture unit's
+    // filter - the one mvr's texture() uses, given the analytic gradients instead of the
+    // quad's differences. Taps: n = min(ceil(major / minor), N) trilinear textureGrad taps
+    // along the footprint's major axis, averaged. Auto: Taps on Mesa's software
+    // rasterisers and OpenSWR (llvmpipe's anisotropic filter takes its ellipse from the
+    // lanes of a 2x2 quad, which in a compute shader are unrelated pixels), Hardware
+    // elsewhere. At --aniso 1 both are the same single trilinear textureGrad.
+    enum class AnisoFilter { Auto, Hardware, Taps } anisoFilter = AnisoFilter::Auto;
     // Auto: 64-bit atomics where GL_NV_shader_atomic_int64 exists, else two-pass 32-bit.
     // Int64 where unsupported throws gl::GlError at construction.
     enum class Atomics { Auto, Int64, TwoPass32 } atomics = Atomics::Auto;
@@ -104,6 +114,7 @@ struct LfdprFrameInfo {
     bool overflowed = false;       // points (or triangle records) were dropped this frame
     uint64_t overflowFrames = 0;   // frames overflowed so far
     bool int64Atomics = false;     // atomics path in use
+    bool hardwareAniso = false;    // visibility pipeline: AnisoFilter in use is Hardware
     uint32_t bytesPerPoint = 0;
     uint64_t pointBufferBytes = 0;
     uint64_t triangleBufferBytes = 0; // per-triangle records (and the large-triangle list)
@@ -136,6 +147,11 @@ bool lfdprUseInt64(LfdprOptions::Atomics atomics);
 // Whether the visibility pipeline runs the GPU work shape (WorkShape::Auto decided from
 // GL_RENDERER). Needs a current context.
 bool lfdprGpuWorkShape(LfdprOptions::WorkShape shape);
+// Whether the visibility pipeline's shading filters through the texture unit
+// (AnisoFilter::Auto decided from GL_RENDERER as WorkShape::Auto is). Needs a current context.
+bool lfdprHardwareAniso(LfdprOptions::AnisoFilter filter);
+// Parses "auto" | "hardware" | "taps" (the --lfdpr-aniso flag); throws std::invalid_argument.
+LfdprOptions::AnisoFilter parseLfdprAnisoFilter(const std::string& text);
 // Parses "auto" | "gpu" | "cpu" (the --lfdpr-work flag); throws std::invalid_argument.
 LfdprOptions::WorkShape parseLfdprWorkShape(const std::string& text);
 

@@ -57,7 +57,8 @@ public:
     explicit LfdprVisibilityRenderer(const LfdprOptions& options)
         : options_(options), k_(LfdprConstants::get()), gpuWork_(lfdprGpuWorkShape(options.workShape)),
           pointGeneration_(options.pixelCentreCulling, options.cellScale, gpuWork_),
-          shading_(lfdprUseInt64(options.atomics), gpuWork_, options.testIndexRaces)
+          shading_(lfdprUseInt64(options.atomics), gpuWork_, lfdprHardwareAniso(options.anisoFilter),
+                   options.testIndexRaces)
     {
         GLint64 maxBlockBytes = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
@@ -73,6 +74,7 @@ public:
         for (gl::Texture& t : texels_)
             t = gl::createTexture(GL_TEXTURE_BUFFER);
         info_.int64Atomics = shading_.int64();
+        info_.hardwareAniso = shading_.hardwareAniso();
         info_.bytesPerPoint = k_.compactPointBytes;
     }
 
@@ -208,6 +210,7 @@ public:
             {"pixel_centre_culling", options_.pixelCentreCulling ? 1.0 : 0.0},
             {"cell_scale", double(options_.cellScale)},
             {"work_shape_gpu", gpuWork_ ? 1.0 : 0.0},
+            {"aniso_hardware", shading_.hardwareAniso() ? 1.0 : 0.0},
             {"pipeline_paper", 0.0},
         };
     }
