@@ -261,7 +261,7 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
     constexpr GLsizei kMaterialUnits = 5; // base colour, metallic-roughness, normal, occlusion, emissive
     GLuint samplers[kMaterialUnits];
     // The shader's taps only when there is anisotropy to filter: at --aniso 1 every filter is
-    // the one trilinear textureGrad, and the taps' code cost llvmpipe 5 ms of the gallery's
+    // the one trilinear textureGrad, and the taps' code cost llvmpipe 9-10 ms of the gallery's
     // shading even untaken (its branches run under a lane mask).
     const bool taps = !hardwareAniso_ && scene.maxAnisotropy() > 1.0f;
     std::fill(std::begin(samplers), std::end(samplers), taps ? GLuint(trilinear_) : 0u);

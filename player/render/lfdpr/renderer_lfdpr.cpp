@@ -5,8 +5,10 @@
 
 #include <epoxy/gl.h>
 
+#include <initializer_list>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace lfd::player {
 
@@ -49,6 +51,21 @@ bool softwareRasteriser()
     return false;
 }
 
+// The value of flag `flag` named `text` among `choices`; std::invalid_argument naming the
+// flag, the text and every choice otherwise.
+template <class Choice>
+Choice parseChoice(const char* flag, const std::string& text,
+                   std::initializer_list<std::pair<const char*, Choice>> choices)
+{
+    std::string names;
+    for (const auto& [name, value] : choices) {
+        if (text == name)
+            return value;
+        names += (names.empty() ? "" : ", ") + std::string(name);
+    }
+    throw std::invalid_argument(std::string(flag) + ": \"" + text + "\" is not one of " + names);
+}
+
 } // namespace
 
 bool lfdprGpuWorkShape(LfdprOptions::WorkShape shape)
@@ -79,44 +96,26 @@ bool lfdprHardwareAniso(LfdprOptions::AnisoFilter filter)
 
 LfdprOptions::AnisoFilter parseLfdprAnisoFilter(const std::string& text)
 {
-    if (text == "auto")
-        return LfdprOptions::AnisoFilter::Auto;
-    if (text == "hardware")
-        return LfdprOptions::AnisoFilter::Hardware;
-    if (text == "taps")
-        return LfdprOptions::AnisoFilter::Taps;
-    throw std::invalid_argument("--lfdpr-aniso: \"" + text + "\" is not one of auto, hardware, taps");
+    using F = LfdprOptions::AnisoFilter;
+    return parseChoice<F>("--lfdpr-aniso", text, {{"auto", F::Auto}, {"hardware", F::Hardware}, {"taps", F::Taps}});
 }
 
 LfdprOptions::WorkShape parseLfdprWorkShape(const std::string& text)
 {
-    if (text == "auto")
-        return LfdprOptions::WorkShape::Auto;
-    if (text == "gpu")
-        return LfdprOptions::WorkShape::Gpu;
-    if (text == "cpu")
-        return LfdprOptions::WorkShape::Cpu;
-    throw std::invalid_argument("--lfdpr-work: \"" + text + "\" is not one of auto, gpu, cpu");
+    using W = LfdprOptions::WorkShape;
+    return parseChoice<W>("--lfdpr-work", text, {{"auto", W::Auto}, {"gpu", W::Gpu}, {"cpu", W::Cpu}});
 }
 
 LfdprOptions::Atomics parseLfdprAtomics(const std::string& text)
 {
-    if (text == "auto")
-        return LfdprOptions::Atomics::Auto;
-    if (text == "64")
-        return LfdprOptions::Atomics::Int64;
-    if (text == "32")
-        return LfdprOptions::Atomics::TwoPass32;
-    throw std::invalid_argument("--atomics: \"" + text + "\" is not one of auto, 64, 32");
+    using A = LfdprOptions::Atomics;
+    return parseChoice<A>("--atomics", text, {{"auto", A::Auto}, {"64", A::Int64}, {"32", A::TwoPass32}});
 }
 
 LfdprOptions::Pipeline parseLfdprPipeline(const std::string& text)
 {
-    if (text == "visibility")
-        return LfdprOptions::Pipeline::Visibility;
-    if (text == "paper")
-        return LfdprOptions::Pipeline::Paper;
-    throw std::invalid_argument("--lfdpr-pipeline: \"" + text + "\" is not one of visibility, paper");
+    using P = LfdprOptions::Pipeline;
+    return parseChoice<P>("--lfdpr-pipeline", text, {{"visibility", P::Visibility}, {"paper", P::Paper}});
 }
 
 } // namespace lfd::player
