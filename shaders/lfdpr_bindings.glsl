@@ -159,6 +159,7 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_LOC_SHADE_GROUP 11   // lfdpr_visibility_shade.comp: the shading group dispatched
 #define LFDPR_LOC_SHADE_GROUPS 12  // lfdpr_visibility_shade_list.comp, lfdpr_visibility_repair_dispatch.comp: groups in use
 #define LFDPR_LOC_LARGE_CLASS 13   // lfdpr_visibility_points.comp: the dispatch class (its LFDPR_SSBO_LARGE_DISPATCH entry)
+#define LFDPR_LOC_CLEAR_BACKGROUND 14 // lfdpr_visibility_clear.comp: the views' background colour
 
 // Shading (lfdpr_visibility_shade_list.comp, lfdpr_visibility_shade.comp): view pixels are shaded in tiles of
 // LFDPR_SHADE_TILE x LFDPR_SHADE_TILE pixels, a tile position over a chunk of views at a

@@ -512,6 +512,10 @@ TEST_F(LfdprVisibilityTest, BothWorkShapesRenderTheSameViews)
         auto cpu = player::createLfdprRenderer({.workShape = Shape::Cpu, .atomics = LfdprOptions::Atomics::TwoPass32});
         auto gpu = player::createLfdprRenderer({.workShape = Shape::Gpu, .atomics = LfdprOptions::Atomics::TwoPass32});
         const Frame a = render(*cpu, c.scene, c.profile, 0.6);
+        // The GPU shape clears its view words and colours in a shader
+        // (lfdpr_visibility_clear.comp): a frame from another angle first, so a word or
+        // colour the clear missed would show in the compared frame.
+        render(*gpu, c.scene, c.profile, 0.0);
         const Frame b = render(*gpu, c.scene, c.profile, 0.6);
         ASSERT_GT(a.info.points, 0u) << c.name;
         EXPECT_GE(b.info.points, a.info.points) << c.name << ": a cell never grows";
@@ -602,6 +606,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x1Fu"}},
         {"lfdpr_visibility_shade_list.comp", "comp", {"LFDPR_WORK_GPU 1"}},
         {"lfdpr_visibility_repair_dispatch.comp", "comp", {"LFDPR_WORK_GPU 1"}},
+        {"lfdpr_visibility_clear.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
+        {"lfdpr_visibility_clear.comp", "comp", {"LFDPR_WORK_GPU 1"}},
     };
     const std::filesystem::path dir = testOutputDir("shader_variants");
     size_t checked = 0;

@@ -48,7 +48,8 @@ struct LfdprConstants {
     int locFirstWorkgroup = lfdpr_bindings::kLocFirstWorkgroup, locWorkgroups = lfdpr_bindings::kLocWorkgroups,
         locLargeClass = lfdpr_bindings::kLocLargeClass,
         locShadeMaterial = lfdpr_bindings::kLocShadeMaterial, locLargeBase = lfdpr_bindings::kLocLargeBase,
-        locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups;
+        locShadeGroup = lfdpr_bindings::kLocShadeGroup, locShadeGroups = lfdpr_bindings::kLocShadeGroups,
+        locClearBackground = lfdpr_bindings::kLocClearBackground;
     // Shading in tiles per shading group (lfdpr_visibility_shade_list.comp, lfdpr_visibility_shade.comp).
     uint32_t shadeTile = lfdpr_bindings::kShadeTile, maxShadeGroups = lfdpr_bindings::kMaxShadeGroups,
              shadeDispatchWidth = lfdpr_bindings::kShadeDispatchWidth, viewChunk = lfdpr_bindings::kViewChunk,

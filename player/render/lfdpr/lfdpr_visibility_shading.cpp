@@ -73,6 +73,8 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool ha
     splatProgram_ = build("lfdpr_visibility_splat.comp", splatDefines);
     if (!int64)
         indexProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1"});
+    if (gpuWork) // lfdpr_visibility_clear.comp says why a GPU clears in a shader
+        clearProgram_ = build("lfdpr_visibility_clear.comp", {});
     listProgram_ = build("lfdpr_visibility_shade_list.comp", {});
     if (!int64)
         listRepairProgram_ = build("lfdpr_visibility_shade_list.comp", {"LFDPR_REPAIR_LIST 1"});
@@ -153,11 +155,30 @@ void LfdprVisibilityShading::beginFrame(const GpuScene& scene, const std::vector
     updateGroups(scene, texturedMaterials);
     const GLuint zero = 0, ones = 0xFFFFFFFFu;
     glClearNamedBufferData(chunkMasks_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    clearShadeDispatches();
+    if (clearProgram_) {
+        clearViews(targets);
+        return;
+    }
     glClearNamedBufferData(depth_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
     if (index_)
         glClearNamedBufferData(index_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
-    clearShadeDispatches();
     glClearTexImage(targets.colorArray(), 0, GL_RGBA, GL_FLOAT, kBackground);
+}
+
+// The GPU work shape's clear of the view words and colours: one dispatch
+// (lfdpr_visibility_clear.comp), an invocation per view pixel.
+void LfdprVisibilityShading::clearViews(ViewTargets& targets) const
+{
+    const LfdprConstants& k = LfdprConstants::get();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
+    if (index_)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewWinner, index_);
+    glBindImageTexture(k.imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glProgramUniform4fv(clearProgram_, k.locClearBackground, 1, kBackground);
+    glUseProgram(clearProgram_);
+    glDispatchCompute(divideUp(width_, 64), divideUp(height_, 4), views_); // the shader's local size
+    glUseProgram(0);
 }
 
 // The shading counters and each group's indirect dispatch: (0, 1, 0) workgroups, entry

@@ -52,8 +52,9 @@ public:
     // Every clear of a frame, before point generation: the splat's marks, the view words,
     // the shading's dispatches and the views' background (targets). Shading groups: 0 =
     // every untextured material, then one per textured material the scene draws with
-    // (`texturedMaterials`, scene material indices). No barrier: the caller puts one after
-    // all its clears.
+    // (`texturedMaterials`, scene material indices). On the GPU work shape the view words
+    // and colours are cleared by a dispatch (lfdpr_visibility_clear.comp), else by clear
+    // calls. No barrier: the caller puts one after all its clears.
     void beginFrame(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials, ViewTargets& targets);
     // Splats the points into every view (one pass on either path; an indirect dispatch from
     // `counters`, the LfdprVisibilityCountersGpu block whose splat arguments point generation
@@ -83,6 +84,7 @@ private:
     };
     void splatPass(unsigned program, unsigned arguments, size_t offset) const;
     void clearShadeDispatches() const;
+    void clearViews(ViewTargets& targets) const;
     void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
     // pass 0: every marked chunk; pass 2: after a repair, the chunks of the repaired pixels
     // when the repair list held them all, else every marked chunk again (both lists are
@@ -98,6 +100,7 @@ private:
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
     gl::Program listProgram_, listRepairProgram_; // lfdpr_visibility_shade_list.comp: marks, repair list
     gl::Program repairDispatchProgram_;
+    gl::Program clearProgram_; // lfdpr_visibility_clear.comp (the GPU work shape only)
     // Trilinear, no anisotropy: bound to the material units while shading with the taps, so
     // the textures' own --aniso state does not filter lfdpr's shader taps a second time (the
     // taps are the anisotropic filter; lfdpr_visibility_shade.comp, lfdSampleFootprint).

@@ -137,7 +137,9 @@ public:
                                   GL_RED_INTEGER, GL_UNSIGNED_INT, &one);
         pointGeneration_.clearQueues();
         shading_.beginFrame(scene, texturedMaterials_, targets);
-        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+        // The clears' writes (a shader's, on the GPU work shape) before every later access.
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                        GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         pointGeneration_.run(scene);
         readback_.begin(tag);
         readback_.copy(counters_, 0, 0, sizeof(LfdprVisibilityCountersGpu));
