@@ -1,12 +1,13 @@
 // Simulated viewer (see simulated_viewer.h for the model).
 #include "simulated_viewer.h"
 
+#include "parallel_bands.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 namespace lfd::player {
 
@@ -117,18 +118,10 @@ std::vector<uint8_t> simulateViewer(const DisplayProfile& profile,
         }
     };
 
-    // Rows are independent: split them over the hardware threads.
-    const uint32_t threadCount =
-        std::clamp(std::thread::hardware_concurrency(), 1u, std::max(1u, vh));
-    if (threadCount == 1) {
-        reconstructRows(0, vh);
-        return image;
-    }
-    std::vector<std::thread> threads;
-    for (uint32_t i = 0; i < threadCount; ++i)
-        threads.emplace_back(reconstructRows, vh * i / threadCount, vh * (i + 1) / threadCount);
-    for (std::thread& thread : threads)
-        thread.join();
+    // Rows are independent: bands of them over the cores.
+    metrics::forEachBand(vh, 8, [&](size_t, size_t begin, size_t end) {
+        reconstructRows(uint32_t(begin), uint32_t(end));
+    });
     return image;
 }
 

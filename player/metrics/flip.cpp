@@ -5,6 +5,7 @@
 // point detection on luminance), combined per pixel as colour ^ (1 - feature).
 #include "colour_spaces.h"
 #include "image_checks.h"
+#include "parallel_bands.h"
 #include "separable_filter.h"
 
 #include <algorithm>
@@ -28,6 +29,18 @@ constexpr double kPt = 0.95;
 // Feature-pipeline constants: the detectors' Gaussian has a standard deviation of 0.5 * w
 // degrees with w = 0.082 degrees, and the feature difference is raised to qf = 0.5.
 constexpr double kFeatureWidthDegrees = 0.082;
+
+// The per-pixel steps run over the cores in bands of pixels (parallel_bands.h); each
+// pixel's value is computed as it would be in one loop.
+constexpr size_t kBandPixels = size_t(1) << 16;
+template <typename PerPixel>
+void forEachPixel(size_t n, PerPixel perPixel)
+{
+    forEachBand(n, kBandPixels, [&](size_t, size_t begin, size_t end) {
+        for (size_t i = begin; i < end; ++i)
+            perPixel(i);
+    });
+}
 constexpr double kQf = 0.5;
 constexpr double kMaxPpd = 10000.0; // beyond any display; keeps the kernels finite
 
@@ -169,9 +182,9 @@ void featureMagnitude(const Plane& luminance, const std::vector<float>& derivati
     detail::filterSeparable(luminance, derivative, gaussian, scratch, alongX);
     detail::filterSeparable(luminance, gaussian, derivative, scratch, alongY);
     out = Plane{luminance.width, luminance.height, std::vector<float>(luminance.values.size())};
-    for (size_t i = 0; i < out.values.size(); ++i)
-        out.values[i] = std::sqrt(alongX.values[i] * alongX.values[i] +
-                                  alongY.values[i] * alongY.values[i]);
+    forEachPixel(out.values.size(), [&](size_t i) {
+        out.values[i] = std::sqrt(alongX.values[i] * alongX.values[i] + alongY.values[i] * alongY.values[i]);
+    });
 }
 
 // Planes reused by both images' filter passes (panel-size planes are 33 MB each).
@@ -189,13 +202,13 @@ Preprocessed preprocess(const RgbImage& image, double ppd, const FeatureKernels&
     std::array<Plane, 3> ycxcz;
     for (Plane& p : ycxcz)
         p = Plane{w, h, std::vector<float>(n)};
-    for (size_t i = 0; i < n; ++i) {
+    forEachPixel(n, [&](size_t i) {
         const Vec3 linear = {decodeSrgb(image.rgb[i * 3]), decodeSrgb(image.rgb[i * 3 + 1]),
                              decodeSrgb(image.rgb[i * 3 + 2])};
         const Vec3 v = detail::xyzToYcxcz(detail::linearRgbToXyz(linear));
         for (size_t c = 0; c < 3; ++c)
             ycxcz[c].values[i] = float(v[c]);
-    }
+    });
 
     Preprocessed out;
 
@@ -208,8 +221,7 @@ Preprocessed preprocess(const RgbImage& image, double ppd, const FeatureKernels&
     luminance.width = w;
     luminance.height = h;
     luminance.values.resize(n);
-    for (size_t i = 0; i < n; ++i)
-        luminance.values[i] = (ycxcz[0].values[i] + 16.0f) / 116.0f;
+    forEachPixel(n, [&](size_t i) { luminance.values[i] = (ycxcz[0].values[i] + 16.0f) / 116.0f; });
     featureMagnitude(luminance, features.edge, features.gaussian, scratch, first, second, out.edges);
     featureMagnitude(luminance, features.point, features.gaussian, scratch, first, second, out.points);
 
@@ -219,13 +231,11 @@ Preprocessed preprocess(const RgbImage& image, double ppd, const FeatureKernels&
         const std::vector<CsfComponent> components = csfComponents(kCsf[c], ppd);
         detail::filterSeparable(ycxcz[c], components[0].taps, components[0].taps, scratch, first);
         if (components.size() > 1) {
-            for (float& v : first.values)
-                v *= float(components[0].weight);
+            forEachPixel(n, [&](size_t i) { first.values[i] *= float(components[0].weight); });
             for (size_t k = 1; k < components.size(); ++k) {
                 detail::filterSeparable(ycxcz[c], components[k].taps, components[k].taps, scratch,
                                         second);
-                for (size_t i = 0; i < n; ++i)
-                    first.values[i] += float(components[k].weight) * second.values[i];
+                forEachPixel(n, [&](size_t i) { first.values[i] += float(components[k].weight) * second.values[i]; });
             }
         }
         std::swap(ycxcz[c], first);
@@ -233,7 +243,7 @@ Preprocessed preprocess(const RgbImage& image, double ppd, const FeatureKernels&
 
     // Step 4: back to linear RGB, clamped to [0, 1] (filtering can leave the gamut), then
     // CIELAB with the Hunt adjustment, in place.
-    for (size_t i = 0; i < n; ++i) {
+    forEachPixel(n, [&](size_t i) {
         Vec3 rgb = detail::xyzToLinearRgb(detail::ycxczToXyz(
             {ycxcz[0].values[i], ycxcz[1].values[i], ycxcz[2].values[i]}));
         for (double& v : rgb)
@@ -241,7 +251,7 @@ Preprocessed preprocess(const RgbImage& image, double ppd, const FeatureKernels&
         const Vec3 lab = detail::huntAdjust(detail::xyzToLab(detail::linearRgbToXyz(rgb)));
         for (size_t c = 0; c < 3; ++c)
             ycxcz[c].values[i] = float(lab[c]);
-    }
+    });
     out.lab = std::move(ycxcz);
     return out;
 }
@@ -290,7 +300,7 @@ std::vector<float> flipErrorMap(const RgbImage& reference, const RgbImage& test,
     work = Workspace{};
 
     std::vector<float> error(reference.pixelCount());
-    for (size_t i = 0; i < error.size(); ++i) {
+    forEachPixel(error.size(), [&](size_t i) {
         const Vec3 a = {ref.lab[0].values[i], ref.lab[1].values[i], ref.lab[2].values[i]};
         const Vec3 b = {tst.lab[0].values[i], tst.lab[1].values[i], tst.lab[2].values[i]};
         const double colour = colourError(detail::hyab(a, b));
@@ -301,7 +311,7 @@ std::vector<float> flipErrorMap(const RgbImage& reference, const RgbImage& test,
             std::pow(std::max(edgeDifference, pointDifference) / std::numbers::sqrt2, kQf);
 
         error[i] = float(std::pow(colour, 1.0 - feature));
-    }
+    });
     return error;
 }
 

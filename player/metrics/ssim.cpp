@@ -2,6 +2,7 @@
 // image or over a mask. The window, constants and colour handling are documented in
 // image_metrics.h.
 #include "image_checks.h"
+#include "parallel_bands.h"
 
 #include <algorithm>
 #include <array>
@@ -45,10 +46,24 @@ std::vector<double> gaussianTaps(int size)
     return g;
 }
 
-// Calls visit(centreX, centreY, ssim) for every window position that lies wholly inside
-// the image. The weighted moments (mu_x, mu_y, E[x^2], E[y^2], E[xy]) are filtered
-// separably; horizontal results are kept for the last `size` rows only, so memory stays
-// at a few rows even for panel-size EIAs.
+// Window rows per band: the bands run on the cores (parallel_bands.h), each filtering
+// the `size` - 1 rows above its first window row again (a sixth more work at 64).
+constexpr size_t kBandWindowRows = 64;
+
+// The bands of window rows forEachWindow visits for an image of this size.
+size_t windowBands(int width, int height)
+{
+    int size = std::min({kWindowSize, width, height});
+    if (size % 2 == 0)
+        --size;
+    return bandCount(size_t(height - size + 1), kBandWindowRows);
+}
+
+// Calls visit(band, centreX, centreY, ssim) for every window position that lies wholly
+// inside the image, from several threads: the windows of one band (a run of window rows,
+// 0 .. windowBands() - 1) from one thread, in row order. The weighted moments (mu_x, mu_y,
+// E[x^2], E[y^2], E[xy]) are filtered separably; horizontal results are kept for the last
+// `size` rows only, so memory stays at a few rows per band even for panel-size EIAs.
 template <typename Visit>
 void forEachWindow(const RgbImage& reference, const RgbImage& test, Visit visit)
 {
@@ -64,45 +79,47 @@ void forEachWindow(const RgbImage& reference, const RgbImage& test, Visit visit)
 
     constexpr size_t kMoments = 5;
     const int outWidth = width - size + 1;
-    std::vector<double> ring(size_t(size) * size_t(outWidth) * kMoments);
-    auto ringAt = [&](int row, int col) {
-        return &ring[(size_t(row % size) * size_t(outWidth) + size_t(col)) * kMoments];
-    };
+    forEachBand(size_t(height - size + 1), kBandWindowRows, [&](size_t band, size_t topBegin, size_t topEnd) {
+        std::vector<double> ring(size_t(size) * size_t(outWidth) * kMoments);
+        auto ringAt = [&](int row, int col) {
+            return &ring[(size_t(row % size) * size_t(outWidth) + size_t(col)) * kMoments];
+        };
 
-    for (int row = 0; row < height; ++row) {
-        for (int col = 0; col < outWidth; ++col) {
-            std::array<double, kMoments> s{};
-            for (int i = 0; i < size; ++i) {
-                const size_t p = size_t(row) * size_t(width) + size_t(col + i);
-                const double w = g[size_t(i)];
-                s[0] += w * x[p];
-                s[1] += w * y[p];
-                s[2] += w * x[p] * x[p];
-                s[3] += w * y[p] * y[p];
-                s[4] += w * x[p] * y[p];
+        for (int row = int(topBegin); row < int(topEnd) + size - 1; ++row) {
+            for (int col = 0; col < outWidth; ++col) {
+                std::array<double, kMoments> s{};
+                for (int i = 0; i < size; ++i) {
+                    const size_t p = size_t(row) * size_t(width) + size_t(col + i);
+                    const double w = g[size_t(i)];
+                    s[0] += w * x[p];
+                    s[1] += w * y[p];
+                    s[2] += w * x[p] * x[p];
+                    s[3] += w * y[p] * y[p];
+                    s[4] += w * x[p] * y[p];
+                }
+                std::copy(s.begin(), s.end(), ringAt(row, col));
             }
-            std::copy(s.begin(), s.end(), ringAt(row, col));
-        }
-        const int top = row - size + 1;
-        if (top < 0)
-            continue;
-        for (int col = 0; col < outWidth; ++col) {
-            std::array<double, kMoments> s{};
-            for (int i = 0; i < size; ++i) {
-                const double* h = ringAt(top + i, col);
-                for (size_t m = 0; m < kMoments; ++m)
-                    s[m] += g[size_t(i)] * h[m];
+            const int top = row - size + 1;
+            if (top < int(topBegin))
+                continue;
+            for (int col = 0; col < outWidth; ++col) {
+                std::array<double, kMoments> s{};
+                for (int i = 0; i < size; ++i) {
+                    const double* h = ringAt(top + i, col);
+                    for (size_t m = 0; m < kMoments; ++m)
+                        s[m] += g[size_t(i)] * h[m];
+                }
+                const double muX = s[0], muY = s[1];
+                const double varX = s[2] - muX * muX;
+                const double varY = s[3] - muY * muY;
+                const double covXY = s[4] - muX * muY;
+                // Wang et al. 2004, eq. 13.
+                const double value = ((2.0 * muX * muY + kC1) * (2.0 * covXY + kC2)) /
+                                     ((muX * muX + muY * muY + kC1) * (varX + varY + kC2));
+                visit(band, col + radius, top + radius, value);
             }
-            const double muX = s[0], muY = s[1];
-            const double varX = s[2] - muX * muX;
-            const double varY = s[3] - muY * muY;
-            const double covXY = s[4] - muX * muY;
-            // Wang et al. 2004, eq. 13.
-            const double value = ((2.0 * muX * muY + kC1) * (2.0 * covXY + kC2)) /
-                                 ((muX * muX + muY * muY + kC1) * (varX + varY + kC2));
-            visit(col + radius, top + radius, value);
         }
-    }
+    });
 }
 
 } // namespace
@@ -110,12 +127,20 @@ void forEachWindow(const RgbImage& reference, const RgbImage& test, Visit visit)
 double ssim(const RgbImage& reference, const RgbImage& test)
 {
     detail::requireSameSize(reference, test, "ssim");
+    // Per band, then in band order: the same sum whatever the number of threads.
+    const size_t bands = windowBands(reference.width, reference.height);
+    std::vector<double> sums(bands, 0.0);
+    std::vector<size_t> counts(bands, 0);
+    forEachWindow(reference, test, [&](size_t band, int, int, double value) {
+        sums[band] += value;
+        ++counts[band];
+    });
     double sum = 0.0;
     size_t count = 0;
-    forEachWindow(reference, test, [&](int, int, double value) {
-        sum += value;
-        ++count;
-    });
+    for (size_t b = 0; b < bands; ++b) {
+        sum += sums[b];
+        count += counts[b];
+    }
     return sum / double(count);
 }
 
@@ -123,14 +148,21 @@ double ssim(const RgbImage& reference, const RgbImage& test, std::span<const uin
 {
     detail::requireSameSize(reference, test, "ssim");
     detail::requireMaskSize(reference, mask, "ssim");
-    double sum = 0.0;
-    size_t count = 0;
-    forEachWindow(reference, test, [&](int cx, int cy, double value) {
+    const size_t bands = windowBands(reference.width, reference.height);
+    std::vector<double> sums(bands, 0.0);
+    std::vector<size_t> counts(bands, 0);
+    forEachWindow(reference, test, [&](size_t band, int cx, int cy, double value) {
         if (mask[size_t(cy) * size_t(reference.width) + size_t(cx)] == 0)
             return;
-        sum += value;
-        ++count;
+        sums[band] += value;
+        ++counts[band];
     });
+    double sum = 0.0;
+    size_t count = 0;
+    for (size_t b = 0; b < bands; ++b) {
+        sum += sums[b];
+        count += counts[b];
+    }
     if (count == 0)
         throw std::invalid_argument(
             "ssim: no window that fits inside the image is centred on a masked pixel");

@@ -89,6 +89,22 @@ TEST(Ssim, MatchesADirectEvaluationOfTheWindowedIndex)
     EXPECT_NEAR(ssim(a, b), directSsim(a, b), 1e-10);
 }
 
+TEST(Ssim, BandsOfWindowRowsMatchTheDirectEvaluation)
+{
+    // 150 rows: 140 window rows, three bands of 64 (parallel_bands.h), each filtering the
+    // rows above its first window again; a mask that keeps only the rows around the seams.
+    const RgbImage a = noisyImage(gradientImage(31, 150), 30.0, 10);
+    const RgbImage b = noisyImage(a, 15.0, 11);
+    EXPECT_NEAR(ssim(a, b), directSsim(a, b), 1e-10);
+    std::vector<uint8_t> mask(size_t(31) * 150, 0);
+    for (int y : {68, 69, 70, 132, 133, 134})
+        for (int x = 0; x < 31; ++x)
+            mask[size_t(y) * 31 + size_t(x)] = 1;
+    const double masked = ssim(a, b, mask);
+    EXPECT_GT(masked, -1.0);
+    EXPECT_LT(masked, 1.0);
+}
+
 TEST(Ssim, DecreasesWithTheNoiseLevel)
 {
     const RgbImage reference = gradientImage(48, 48);
