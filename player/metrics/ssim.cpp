@@ -122,51 +122,50 @@ void forEachWindow(const RgbImage& reference, const RgbImage& test, Visit visit)
     });
 }
 
+// The sum and count of the windows' SSIM whose centre `keep(x, y)` accepts, summed per
+// band and then in band order: the same sum whatever the number of threads.
+struct WindowSum {
+    double sum = 0.0;
+    size_t count = 0;
+};
+template <typename Keep>
+WindowSum sumWindows(const RgbImage& reference, const RgbImage& test, Keep keep)
+{
+    std::vector<WindowSum> bands(windowBands(reference.width, reference.height));
+    forEachWindow(reference, test, [&](size_t band, int cx, int cy, double value) {
+        if (!keep(cx, cy))
+            return;
+        bands[band].sum += value;
+        ++bands[band].count;
+    });
+    WindowSum total;
+    for (const WindowSum& band : bands) {
+        total.sum += band.sum;
+        total.count += band.count;
+    }
+    return total;
+}
+
 } // namespace
 
 double ssim(const RgbImage& reference, const RgbImage& test)
 {
     detail::requireSameSize(reference, test, "ssim");
-    // Per band, then in band order: the same sum whatever the number of threads.
-    const size_t bands = windowBands(reference.width, reference.height);
-    std::vector<double> sums(bands, 0.0);
-    std::vector<size_t> counts(bands, 0);
-    forEachWindow(reference, test, [&](size_t band, int, int, double value) {
-        sums[band] += value;
-        ++counts[band];
-    });
-    double sum = 0.0;
-    size_t count = 0;
-    for (size_t b = 0; b < bands; ++b) {
-        sum += sums[b];
-        count += counts[b];
-    }
-    return sum / double(count);
+    const WindowSum total = sumWindows(reference, test, [](int, int) { return true; });
+    return total.sum / double(total.count);
 }
 
 double ssim(const RgbImage& reference, const RgbImage& test, std::span<const uint8_t> mask)
 {
     detail::requireSameSize(reference, test, "ssim");
     detail::requireMaskSize(reference, mask, "ssim");
-    const size_t bands = windowBands(reference.width, reference.height);
-    std::vector<double> sums(bands, 0.0);
-    std::vector<size_t> counts(bands, 0);
-    forEachWindow(reference, test, [&](size_t band, int cx, int cy, double value) {
-        if (mask[size_t(cy) * size_t(reference.width) + size_t(cx)] == 0)
-            return;
-        sums[band] += value;
-        ++counts[band];
+    const WindowSum total = sumWindows(reference, test, [&](int cx, int cy) {
+        return mask[size_t(cy) * size_t(reference.width) + size_t(cx)] != 0;
     });
-    double sum = 0.0;
-    size_t count = 0;
-    for (size_t b = 0; b < bands; ++b) {
-        sum += sums[b];
-        count += counts[b];
-    }
-    if (count == 0)
+    if (total.count == 0)
         throw std::invalid_argument(
             "ssim: no window that fits inside the image is centred on a masked pixel");
-    return sum / double(count);
+    return total.sum / double(total.count);
 }
 
 double ssim(const Image& reference, const Image& test)
