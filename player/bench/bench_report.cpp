@@ -4,6 +4,7 @@
 #include "atomic_file.h"
 #include "frame_stats.h"
 #include "image_metrics.h"
+#include "parallel_bands.h"
 
 #include <algorithm>
 #include <cmath>
@@ -443,28 +444,39 @@ std::vector<fs::path> writeBenchOutputs(const fs::path& dir, const BenchReport& 
                                         const std::map<std::string, FrameImages>& images)
 {
     std::vector<fs::path> written;
+    // Each configuration's PNGs (a panel-size EIA compresses in about a second) on a core of
+    // their own (parallel_bands.h), listed per configuration and then in result order.
+    std::vector<std::vector<fs::path>> pngs(report.results.size());
+    auto collect = [&] {
+        for (std::vector<fs::path>& list : pngs)
+            written.insert(written.end(), list.begin(), list.end());
+        pngs.clear();
+    };
     try {
         fs::create_directories(dir);
         const DisplayProfile& p = report.profile;
         const FrameImages* reference = nullptr;
         if (auto it = images.find(report.options.reference); it != images.end())
             reference = &it->second;
-        for (const RendererResult& r : report.results) {
+        metrics::forEachBand(report.results.size(), 1, [&](size_t i, size_t, size_t) {
+            const RendererResult& r = report.results[i];
             const auto it = images.find(r.name);
             if (it == images.end())
-                continue;
+                return;
             const FrameImages& img = it->second;
+            std::vector<fs::path>& list = pngs[i];
             metrics::writeImage(dir / (r.name + "_eia.png"), img.eia.data(), p.panelWidth, p.panelHeight, 4);
-            written.push_back(dir / (r.name + "_eia.png"));
+            list.push_back(dir / (r.name + "_eia.png"));
             metrics::writeImage(dir / (r.name + "_view_centre.png"), img.centre.data(), p.viewWidth, p.viewHeight, 4);
-            written.push_back(dir / (r.name + "_view_centre.png"));
+            list.push_back(dir / (r.name + "_view_centre.png"));
             if (reference && r.name != report.options.reference) {
                 const metrics::Image a{p.panelWidth, p.panelHeight, 4, img.eia};
                 const metrics::Image b{p.panelWidth, p.panelHeight, 4, reference->eia};
                 metrics::writeDiffImage(dir / (r.name + "_diff_eia.png"), a, b, 4.0f);
-                written.push_back(dir / (r.name + "_diff_eia.png"));
+                list.push_back(dir / (r.name + "_diff_eia.png"));
             }
-        }
+        });
+        collect();
         io::writeFileAtomically(dir / "bench.csv", benchCsv(report));
         written.push_back(dir / "bench.csv");
         io::writeFileAtomically(dir / "speed_vs_error.svg", speedErrorSvg(report));
@@ -472,6 +484,7 @@ std::vector<fs::path> writeBenchOutputs(const fs::path& dir, const BenchReport& 
         io::writeFileAtomically(dir / "bench.json", benchJson(report).dump(2) + "\n");
         written.push_back(dir / "bench.json");
     } catch (...) {
+        collect(); // what the other configurations wrote before the failure stopped them
         for (const fs::path& path : written) {
             std::error_code ec;
             fs::remove(path, ec);
