@@ -49,6 +49,9 @@
 
 // Invocations per workgroup of the point-indexed compute passes (local_size_x).
 #define LFDPR_GROUP_SIZE 64
+// lfdpr_visibility_clear.comp's workgroup: a row of view pixels by a few rows.
+#define LFDPR_CLEAR_GROUP_X 64
+#define LFDPR_CLEAR_GROUP_Y 4
 
 // One point (std430): position, its triangle record, and the texture values
 // fetched at LOD_min and LOD_max (paper: tv_min, tv_max), packed 8 bits per channel.

@@ -14,7 +14,7 @@
 #define LFDPR_VISIBILITY_PIPELINE
 #include "lfdpr_bindings.glsl"
 
-layout(local_size_x = 64, local_size_y = 4) in;
+layout(local_size_x = LFDPR_CLEAR_GROUP_X, local_size_y = LFDPR_CLEAR_GROUP_Y) in;
 
 // The words as plain uints (one per pixel, or two on the 64-bit path; all ones is the empty
 // value of both halves). A clear writes each once, so the pixel numbering here need not be

@@ -29,6 +29,8 @@ constexpr double kPt = 0.95;
 // Feature-pipeline constants: the detectors' Gaussian has a standard deviation of 0.5 * w
 // degrees with w = 0.082 degrees, and the feature difference is raised to qf = 0.5.
 constexpr double kFeatureWidthDegrees = 0.082;
+constexpr double kQf = 0.5;
+constexpr double kMaxPpd = 10000.0; // beyond any display; keeps the kernels finite
 
 // The per-pixel steps run over the cores in bands of pixels (parallel_bands.h); each
 // pixel's value is computed as it would be in one loop.
@@ -41,8 +43,6 @@ void forEachPixel(size_t n, PerPixel perPixel)
             perPixel(i);
     });
 }
-constexpr double kQf = 0.5;
-constexpr double kMaxPpd = 10000.0; // beyond any display; keeps the kernels finite
 
 // Contrast sensitivity functions as spatial filters: per YCxCz channel a sum of two
 // Gaussians S(x) = sum_i a_i sqrt(pi / b_i) exp(-pi^2 x^2 / b_i), x in degrees of visual

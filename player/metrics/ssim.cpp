@@ -50,13 +50,17 @@ std::vector<double> gaussianTaps(int size)
 // the `size` - 1 rows above its first window row again (a sixth more work at 64).
 constexpr size_t kBandWindowRows = 64;
 
+// The window's side: the paper's 11, or the largest odd size the image holds.
+int windowSize(int width, int height)
+{
+    const int size = std::min({kWindowSize, width, height});
+    return size % 2 == 0 ? size - 1 : size;
+}
+
 // The bands of window rows forEachWindow visits for an image of this size.
 size_t windowBands(int width, int height)
 {
-    int size = std::min({kWindowSize, width, height});
-    if (size % 2 == 0)
-        --size;
-    return bandCount(size_t(height - size + 1), kBandWindowRows);
+    return bandCount(size_t(height - windowSize(width, height) + 1), kBandWindowRows);
 }
 
 // Calls visit(band, centreX, centreY, ssim) for every window position that lies wholly
@@ -71,9 +75,7 @@ void forEachWindow(const RgbImage& reference, const RgbImage& test, Visit visit)
     const std::vector<double> y = luma(test);
     const int width = reference.width, height = reference.height;
 
-    int size = std::min({kWindowSize, width, height});
-    if (size % 2 == 0)
-        --size;
+    const int size = windowSize(width, height);
     const int radius = size / 2;
     const std::vector<double> g = gaussianTaps(size);
 

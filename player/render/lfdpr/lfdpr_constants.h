@@ -23,6 +23,7 @@ struct LfdprConstants {
     int locPass = lfdpr_bindings::kLocPass, locRecordBase = lfdpr_bindings::kLocRecordBase,
         locFirstTriangle = lfdpr_bindings::kLocFirstTriangle;
     uint32_t groupSize = lfdpr_bindings::kGroupSize; // local_size_x of the point-indexed passes
+    uint32_t clearGroupX = lfdpr_bindings::kClearGroupX, clearGroupY = lfdpr_bindings::kClearGroupY;
     uint32_t tileSize = lfdpr_bindings::kTileSize;   // the paper pipeline's sampling viewport
     uint32_t pointBytes = sizeof(lfdpr_bindings::LfdprPaperPointGpu);
     uint32_t triangleRecordBytes = sizeof(lfdpr_bindings::LfdprPaperTriangleGpu);

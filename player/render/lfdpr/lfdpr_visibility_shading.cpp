@@ -177,7 +177,7 @@ void LfdprVisibilityShading::clearViews(ViewTargets& targets) const
     glBindImageTexture(k.imageViews, targets.colorArray(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glProgramUniform4fv(clearProgram_, k.locClearBackground, 1, kBackground);
     glUseProgram(clearProgram_);
-    glDispatchCompute(divideUp(width_, 64), divideUp(height_, 4), views_); // the shader's local size
+    glDispatchCompute(divideUp(width_, k.clearGroupX), divideUp(height_, k.clearGroupY), views_);
     glUseProgram(0);
 }
 
