@@ -20,10 +20,21 @@
 #define EIA_LOC_INVERT_PHASE 6        // bool
 #define EIA_LOC_SUBPIXELS_BGR 7       // bool
 #define EIA_LOC_LINEAR_FROM_BYTE 8    // float[256] (mode view): sRGB byte -> linear, locations 8..263
+#define EIA_ENCODE_BUCKETS 512        // buckets of the sRGB encode table, uniform in sqrt(linear)
+#define EIA_SSBO_ENCODE_TABLE 0       // float[EIA_ENCODE_BUCKETS] (filtered modes): linear -> sRGB level
 #define EIA_PREFILTER_LOCAL_SIZE 8    // x and y (each invocation EIA_PREFILTER_BLOCK^2 texels); z = 1 (one view per z)
 #define EIA_PREFILTER_BLOCK 4         // texels per invocation in x and y
 #define EIA_PREFILTER_UNIT_VIEWS 0    // sampler2DArray: the N views, as stored (sRGB-encoded RGBA8)
 #define EIA_PREFILTER_IMAGE_OUT 0     // r16f image3D (or image2DArray, EIA_PREFILTER_LAYERED): the prefiltered views, channel planes side by side
 #define EIA_PREFILTER_LOC_SIZE 0      // uvec3: view width, height, count
 #define EIA_PREFILTER_LOC_TAP 1       // float: the 3-tap kernel's outer weight a ([a, 1 - 2a, a])
-#define EIA_PREFILTER_LOC_LINEAR_FROM_BYTE 2 // float[256]: sRGB byte -> linear, locations 2..257
+// The prefilter's sRGB decode above the linear segment (bytes 11..255): linear =
+// ((x + 0.055) / 1.055)^2.4 ~ c6 x^6 + ... + c0, x = byte / 255, a least-squares fit in relative
+// error (at most 3.0e-4 there, under the 4.9e-4 of the half float the prefilter stores).
+#define EIA_DECODE_C6 -0.10479982942342758
+#define EIA_DECODE_C5 0.3657521605491638
+#define EIA_DECODE_C4 -0.5790112614631653
+#define EIA_DECODE_C3 0.7868330478668213
+#define EIA_DECODE_C2 0.4955563247203827
+#define EIA_DECODE_C1 0.03466804325580597
+#define EIA_DECODE_C0 0.0008686881046742201

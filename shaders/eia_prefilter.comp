@@ -13,7 +13,7 @@
 
 layout(local_size_x = EIA_PREFILTER_LOCAL_SIZE, local_size_y = EIA_PREFILTER_LOCAL_SIZE) in;
 
-// The views as stored (sRGB-encoded RGBA8), decoded through linearFromByte.
+// The views as stored (sRGB-encoded RGBA8), decoded by linearTexel.
 layout(binding = EIA_PREFILTER_UNIT_VIEWS) uniform sampler2DArray views;
 #ifdef EIA_PREFILTER_LAYERED
 layout(binding = EIA_PREFILTER_IMAGE_OUT, r16f) uniform writeonly image2DArray prefiltered;
@@ -22,15 +22,21 @@ layout(binding = EIA_PREFILTER_IMAGE_OUT, r16f) uniform writeonly image3D prefil
 #endif
 layout(location = EIA_PREFILTER_LOC_SIZE) uniform uvec3 size; // width, height, views
 layout(location = EIA_PREFILTER_LOC_TAP) uniform float tap;
-// sRGB byte -> linear value, the CPU reference's table (IEC 61966-2-1): the GPU and the
-// CPU decode alike (an sRGB texture view decodes with the driver's own approximation).
-layout(location = EIA_PREFILTER_LOC_LINEAR_FROM_BYTE) uniform float linearFromByte[256];
-
-// Texel p of the views in linear light.
+// Texel p of the views in linear light: IEC 61966-2-1's decode, x / 12.92 up to 0.04045 and
+// the polynomial of eia_bindings.glsl above (eia_builder.cpp's prefilterCpu evaluates it
+// the same way). Why not the CPU's byte table: llvmpipe reads a table entry lane by lane,
+// and three per texel were a third of this pass (car, 48 views of 480x360).
 vec3 linearTexel(ivec3 p)
 {
-    const uvec3 b = uvec3(round(texelFetch(views, p, 0).rgb * 255.0));
-    return vec3(linearFromByte[b.r], linearFromByte[b.g], linearFromByte[b.b]);
+    const vec3 x = texelFetch(views, p, 0).rgb;
+    vec3 high = vec3(EIA_DECODE_C6);
+    high = high * x + EIA_DECODE_C5;
+    high = high * x + EIA_DECODE_C4;
+    high = high * x + EIA_DECODE_C3;
+    high = high * x + EIA_DECODE_C2;
+    high = high * x + EIA_DECODE_C1;
+    high = high * x + EIA_DECODE_C0;
+    return mix(high, x * (1.0 / 12.92), lessThanEqual(x, vec3(0.04045)));
 }
 
 // One invocation filters a BxB block of texels from the (B + 2)^2 texels around it

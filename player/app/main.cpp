@@ -95,7 +95,7 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
                       ->capture_default_str();
     f.frameOpt = app.add_option("--frame", f.frame, "frame whose outputs are written (default: the last)");
     app.add_option("--aa,--reconstruction", f.aa,
-                   "EIA reconstruction: none|spatial|view|view-spatial (Gaussian, 8 seeded samples)")
+                   "EIA reconstruction: none|spatial|view|view-spatial (spatial: the paper's 2.25 view-pixel Gaussian; view: a tent over 2 view intervals; computed exactly)")
         ->capture_default_str();
     app.add_option("--ss", f.ss,
                    "supersampling: 1 | 2s (views at twice the resolution) | 2v (twice the views, random "

@@ -49,13 +49,6 @@ const std::array<float, 256>& linearFromByte() {
     return table;
 }
 
-// The shader's encodeSrgb: linear -> 8-bit sRGB level.
-uint8_t encodeSrgb(float linear) {
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    const float e = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    return uint8_t(std::lround(std::clamp(e, 0.0f, 1.0f) * 255.0f));
-}
-
 // GLSL mix(x, y, a) = x * (1 - a) + y * a.
 inline float mixf(float x, float y, float a) { return x * (1.0f - a) + y * a; }
 
@@ -85,6 +78,60 @@ std::string reconstructionName(Reconstruction mode) {
     return names[i];
 }
 
+namespace {
+
+// IEC 61966-2-1 in double precision: linear -> encoded, and the 8-bit level nearest to it.
+double srgbEncoded(double linear) {
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+double srgbDecoded(double encoded) {
+    return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+int srgbLevel(double linear) { return int(std::lround(std::clamp(srgbEncoded(linear), 0.0, 1.0) * 255.0)); }
+
+} // namespace
+
+const std::array<float, eia_bindings::kEncodeBuckets>& srgbEncodeTable() {
+    static const std::array<float, eb::kEncodeBuckets> table = [] {
+        constexpr double buckets = eb::kEncodeBuckets;
+        std::array<float, eb::kEncodeBuckets> t{};
+        for (uint32_t i = 0; i < eb::kEncodeBuckets; ++i) {
+            const double low = (i / buckets) * (i / buckets), high = ((i + 1) / buckets) * ((i + 1) / buckets);
+            const int level = srgbLevel(low);
+            // Where the level rises to level + 1 (its lower rounding edge), as a fraction of
+            // the bucket in sqrt(linear); the table's promise is at most one rise per bucket.
+            double rise = 1.0;
+            if (srgbLevel(std::min(high, 1.0)) > level) {
+                if (srgbLevel(std::min(high, 1.0)) > level + 1)
+                    throw std::logic_error("sRGB encode table: bucket " + std::to_string(i) + " spans two levels");
+                rise = std::sqrt(srgbDecoded((level + 0.5) / 255.0)) * buckets - i;
+            }
+            t[i] = float(level + 0.5 * std::clamp(rise, 0.0, 1.0));
+        }
+        return t;
+    }();
+    return table;
+}
+
+float prefilterLinear(uint8_t byte) {
+    // eia_prefilter.comp's linearTexel, operation for operation (Horner's scheme in float).
+    const float x = float(byte) / 255.0f;
+    float high = float(eb::kDecodeC6);
+    for (double c : {eb::kDecodeC5, eb::kDecodeC4, eb::kDecodeC3, eb::kDecodeC2, eb::kDecodeC1, eb::kDecodeC0})
+        high = high * x + float(c);
+    return x <= 0.04045f ? x * (1.0f / 12.92f) : high;
+}
+
+uint8_t encodeSrgbLevel(float linear) {
+    // eia_construct.comp's encodeSrgb, operation for operation.
+    const float x = std::sqrt(std::clamp(linear, 0.0f, 1.0f)) * float(eb::kEncodeBuckets);
+    const uint32_t i = std::min(uint32_t(x), eb::kEncodeBuckets - 1);
+    const float entry = srgbEncodeTable()[i];
+    const float level = std::floor(entry);
+    const float rise = x - float(i) >= 2.0f * (entry - level) ? 1.0f : 0.0f;
+    return uint8_t(std::min(level + rise, 255.0f));
+}
+
 EiaBuilder::EiaBuilder(const DisplayProfile& profile) : profile_(profile) {
     validateDisplayProfile(profile_, profile_.name.empty() ? "display profile" : profile_.name);
     program(Reconstruction::None); // the default mode; compile errors surface here
@@ -93,6 +140,7 @@ EiaBuilder::EiaBuilder(const DisplayProfile& profile) : profile_(profile) {
                        GLsizei(profile_.panelHeight));
     glTextureParameteri(eia_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(eia_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    encodeTable_ = gl::createBuffer(sizeof(float) * eb::kEncodeBuckets, 0, srgbEncodeTable().data());
     nearest_ = gl::createSampler();
     glSamplerParameteri(nearest_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glSamplerParameteri(nearest_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -115,7 +163,8 @@ unsigned EiaBuilder::program(Reconstruction mode) {
     if (!p) {
         p.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_construct.comp"}},
                                  {"EIA_MODE " + std::to_string(uint32_t(mode))}));
-        if (mode == Reconstruction::View) // the decode table is constant: set once, with the program
+        // The tables are constant: set once, with the program.
+        if (mode == Reconstruction::View)
             glProgramUniform1fv(p, eb::kLocLinearFromByte, 256, linearFromByte().data());
     }
     return p.get();
@@ -147,7 +196,6 @@ unsigned EiaBuilder::prefilter(const ViewTargets& views, Reconstruction mode) {
         if (layered)
             defines.push_back("EIA_PREFILTER_LAYERED 1");
         target.program.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_prefilter.comp"}}, defines));
-        glProgramUniform1fv(target.program, eb::kPrefilterLocLinearFromByte, 256, linearFromByte().data());
     }
     glUseProgram(target.program);
     glUniform3ui(eb::kPrefilterLocSize, size[0], size[1], size[2]);
@@ -194,6 +242,8 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
     // filter, but an incomplete texture would read as zero).
     glBindTextureUnit(eb::kUnitViews, views.colorArray());
     glBindSampler(eb::kUnitViews, nearest_);
+    if (mode != Reconstruction::None)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, eb::kSsboEncodeTable, encodeTable_);
     if (spatial) {
         glBindTextureUnit(eb::kUnitPrefiltered, prefiltered);
         glBindSampler(eb::kUnitPrefiltered, bilinear_);
@@ -211,6 +261,7 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
 
     glBindSampler(eb::kUnitViews, 0);
     glBindSampler(eb::kUnitPrefiltered, 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, eb::kSsboEncodeTable, 0);
 
     glBindImageTexture(eb::kImageEia, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glUseProgram(0);
@@ -257,7 +308,9 @@ void requireEiaInputs(const DisplayProfile& profile, const std::vector<std::vect
 // as half floats (as the RGBA16F texture holds it), image order.
 std::vector<std::vector<glm::vec4>> prefilterCpu(const std::vector<std::vector<uint8_t>>& views, uint32_t width,
                                                  uint32_t height) {
-    const std::array<float, 256>& linear = linearFromByte();
+    std::array<float, 256> linear{};
+    for (int i = 0; i < 256; ++i)
+        linear[size_t(i)] = prefilterLinear(uint8_t(i));
     const auto a = float(ReconstructionFilter::kSpatialTap);
     const float w[3] = {a, 1.0f - 2.0f * a, a};
     std::vector<std::vector<glm::vec4>> out;
@@ -333,7 +386,7 @@ void filteredEiaCpu(const DisplayProfile& profile, const std::vector<std::vector
                     value = mixf(bilinearCpu(prefiltered[v0], viewWidth, viewHeight, p, channel),
                                  bilinearCpu(prefiltered[v1], viewWidth, viewHeight, p, channel), a);
                 }
-                out[channel] = encodeSrgb(value);
+                out[channel] = encodeSrgbLevel(value);
             }
             out[3] = 255;
         }

@@ -15,6 +15,7 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -42,6 +43,17 @@ struct ReconstructionFilter {
     static constexpr double kSpatialTap = kSpatialSigma * kSpatialSigma / 2.0;
 };
 
+// The filtered modes' linear -> 8-bit sRGB level (IEC 61966-2-1, rounded to nearest, but
+// within 1e-4 levels of a rounding edge), as
+// eia_construct.comp's encodeSrgb computes it: through srgbEncodeTable, entry i for
+// sqrt(linear) * kEncodeBuckets in [i, i + 1) (at most 0.71 levels): level + f / 2, f where the level rises by
+// one inside the bucket (1: it does not).
+uint8_t encodeSrgbLevel(float linear);
+// The prefilter's sRGB byte -> linear value (eia_prefilter.comp's linearTexel): the linear
+// segment exactly, above it the polynomial of eia_bindings.glsl (within 3.0e-4 relative).
+float prefilterLinear(uint8_t byte);
+const std::array<float, eia_bindings::kEncodeBuckets>& srgbEncodeTable();
+
 class EiaBuilder {
 public:
     // Panel-size RGBA8 output texture.
@@ -57,6 +69,7 @@ public:
 private:
     DisplayProfile profile_;
     gl::Texture eia_;
+    gl::Buffer encodeTable_; // srgbEncodeTable, read by the filtered modes
     gl::Sampler nearest_;  // keeps the view array complete whatever its own filter state
     gl::Sampler bilinear_; // the prefiltered views: linear filtering, edges clamped
     // One program per Reconstruction mode (EIA_MODE compiled in), built on first use.

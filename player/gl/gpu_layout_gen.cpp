@@ -5,7 +5,7 @@
 //
 // * every `#define NAME <integer>` becomes `inline constexpr uint32_t kName` (PREFIX
 //   stripped from NAME, the rest in camel case: LFDPR_SSBO_POINTS -> kSsboPoints), and a
-//   `#define NAME <decimal>` a double;
+//   `#define NAME <decimal>` (a leading minus allowed) a double;
 // * every `struct` (std430: the structs are elements of storage buffers) and every block
 //   with fixed members (`layout(std140|std430, binding = B) uniform|buffer Name {...}`)
 //   becomes a C++ struct of glm types with the GLSL offsets (padding members where the
@@ -135,7 +135,8 @@ std::optional<uint64_t> parseInteger(std::string literal)
 bool isDecimal(const std::string& literal)
 {
     bool digits = false, dot = false;
-    for (char c : literal) {
+    // A leading minus sign: a negative constant (polynomial coefficients).
+    for (char c : literal.substr(!literal.empty() && literal[0] == '-' ? 1 : 0)) {
         if (std::isdigit(static_cast<unsigned char>(c)))
             digits = true;
         else if (c == '.' && !dot)

@@ -16,6 +16,7 @@
 #include "gl_handles.h"
 #include "gl_test_support.h"
 
+#include "eia_bindings_gpu.h"
 #include "lfdpr_bindings_gpu.h"
 #include "lfdpr_constants.h"
 #include "pose_bindings_gpu.h"
@@ -402,6 +403,13 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
     out.push_back({"gstd panel accumulation", {{GL_COMPUTE_SHADER, "gstd_panel_accumulate.comp"}}, {}, {}});
     out.push_back({"gstd panel resolve", {{GL_COMPUTE_SHADER, "gstd_panel_resolve.comp"}}, {}, {}});
     out.push_back({"eia", {{GL_COMPUTE_SHADER, "eia_construct.comp"}}, {}, {}});
+    // The filtered modes read the sRGB encode table (EiaBuilder uploads srgbEncodeTable).
+    for (uint32_t mode : {player::eia_bindings::kModeSpatial, player::eia_bindings::kModeView,
+                          player::eia_bindings::kModeViewSpatial})
+        out.push_back({"eia mode " + std::to_string(mode), {{GL_COMPUTE_SHADER, "eia_construct.comp"}},
+                       {"EIA_MODE " + std::to_string(mode)},
+                       {{"EncodeTable", player::eia_bindings::kSsboEncodeTable,
+                         sizeof(float) * player::eia_bindings::kEncodeBuckets}}});
     out.push_back({"lfdpr paper points",
                    {{GL_VERTEX_SHADER, "lfdpr_paper_points.vert"},
                     {GL_GEOMETRY_SHADER, "lfdpr_paper_points.geom"},
@@ -570,6 +578,9 @@ TEST(GpuLayoutGen, PadsWhereGlslAlignsAndNamesConstants)
     const GenResult r = runGenerator("#define TEST_SSBO_THINGS 3 // binding\n"
                                      "#define TEST_COUNT (2)\n"
                                      "#define TEST_MASK 0xFFu\n"
+                                     "#define TEST_WEIGHT 0.25\n"
+                                     "#define TEST_SLOPE -1.5\n"
+                                     "#define TEST_NEGATIVE_INT -3\n"
                                      "struct ThingGpu {\n"
                                      "    vec3 position; // xyz\n"
                                      "    vec4 colour;\n"
@@ -584,6 +595,10 @@ TEST(GpuLayoutGen, PadsWhereGlslAlignsAndNamesConstants)
     EXPECT_NE(r.header.find("inline constexpr uint32_t kSsboThings = 3; // TEST_SSBO_THINGS"), std::string::npos);
     EXPECT_NE(r.header.find("inline constexpr uint32_t kMask = 0xFFu;"), std::string::npos);
     EXPECT_EQ(r.header.find("kCount"), std::string::npos) << "an expression is not a constant";
+    // Decimals, negative ones too (polynomial coefficients), become doubles.
+    EXPECT_NE(r.header.find("inline constexpr double kWeight = 0.25;"), std::string::npos) << r.header;
+    EXPECT_NE(r.header.find("inline constexpr double kSlope = -1.5;"), std::string::npos) << r.header;
+    EXPECT_EQ(r.header.find("kNegativeInt"), std::string::npos) << "a negative integer is not a uint32_t constant";
     // std430: vec3 at 0 (12 bytes), vec4 aligned to 16: 4 bytes of padding; 48 bytes in all.
     EXPECT_NE(r.header.find("glm::vec3 position; // offset 0: xyz\n    uint32_t pad_0_[1]; // std430 alignment\n"
                             "    glm::vec4 colour; // offset 16"),

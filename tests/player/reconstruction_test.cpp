@@ -121,6 +121,57 @@ TEST(Reconstruction, NamesParseAndRoundTrip)
     EXPECT_THROW(player::parseSupersampling("4x"), std::invalid_argument);
 }
 
+TEST(Reconstruction, SrgbEncodeTableGivesTheNearestLevel)
+{
+    // The filtered modes' encode (a table read, eia_construct.comp's encodeSrgb) against
+    // IEC 61966-2-1 in double precision, rounded to nearest: everywhere on a fine sweep and
+    // on both sides of every level's rounding edge, except within 1e-4 levels of an edge
+    // (the float square root and the entry's 16-bit fraction each resolve about 2e-5).
+    auto exactLevel = [](double linear) {
+        const double e = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+        return 255.0 * std::clamp(e, 0.0, 1.0);
+    };
+    std::vector<float> values;
+    for (int i = 0; i <= 1 << 20; ++i)
+        values.push_back(float(i) / float(1 << 20));
+    auto linearAt = [](double level) { // the linear value whose exact encode is `level` / 255
+        const double e = level / 255.0;
+        return float(e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4));
+    };
+    for (int level = 0; level < 255; ++level) // 2e-4 levels either side of each rounding edge
+        for (double side : {-2e-4, 2e-4})
+            values.push_back(linearAt(level + 0.5 + side));
+    size_t checked = 0;
+    for (float v : values) {
+        const double exact = exactLevel(double(v));
+        if (std::abs(exact - std::floor(exact) - 0.5) < 1e-4)
+            continue;
+        ++checked;
+        ASSERT_EQ(int(player::encodeSrgbLevel(v)), int(std::lround(exact))) << "linear " << v;
+    }
+    EXPECT_GT(checked, values.size() - 1000); // the sweep lands within 1e-4 of an edge ~200 times
+    EXPECT_EQ(player::encodeSrgbLevel(-0.5f), 0);
+    EXPECT_EQ(player::encodeSrgbLevel(0.0f), 0);
+    EXPECT_EQ(player::encodeSrgbLevel(1.0f), 255);
+    EXPECT_EQ(player::encodeSrgbLevel(7.0f), 255);
+}
+
+TEST(Reconstruction, PrefilterDecodeIsTheSrgbCurveWithinItsBound)
+{
+    // The prefilter's decode: exact on the linear segment, the polynomial above it within
+    // the 3.0e-4 relative error eia_bindings.glsl states (a half float's step is 4.9e-4).
+    double worst = 0.0;
+    for (int b = 0; b < 256; ++b) {
+        const double exact = linearOf(uint8_t(b)), got = player::prefilterLinear(uint8_t(b));
+        if (b <= 10)
+            EXPECT_NEAR(got, exact, 1e-7 * (1.0 + exact)) << "byte " << b;
+        else
+            worst = std::max(worst, std::abs(got / exact - 1.0));
+    }
+    EXPECT_LE(worst, 3.0e-4);
+    EXPECT_GT(worst, 0.0); // a polynomial, not the table
+}
+
 TEST(Reconstruction, SpatialKernelHasTheGaussiansVariance)
 {
     // The prefilter's [a, 1 - 2a, a] has variance 2a: the paper's sigma^2 = (2.25 / 6)^2.
@@ -260,10 +311,11 @@ TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)
 {
     // Tolerance: one 8-bit level, on at most 15% of the subpixels (1% in mode view). The
     // GPU passes and the CPU reference take the same steps in float (prefilter stored as
-    // half floats, bilinear and linear reads, sRGB decoded through the CPU's table), but
-    // the driver filters, fuses multiply-adds and takes powers with its own rounding,
-    // which moves values near a rounding boundary by one level: about 1.8% of the
-    // subpixels on llvmpipe in the spatial modes, none in mode view.
+    // half floats, bilinear and linear reads, sRGB decoded through the same table or
+    // polynomial, encoded through the same table), but the driver filters and fuses
+    // multiply-adds with its own rounding, which moves values near a rounding boundary by
+    // one level: about 1.8% of the subpixels on llvmpipe in the spatial modes, 1 in 500,000
+    // in mode view.
     for (const DisplayProfile& p : {player::displaytest::smallProfile("RGB"), player::displaytest::smallProfile("BGR", true)})
         for (Reconstruction mode : {Reconstruction::Spatial, Reconstruction::View, Reconstruction::ViewSpatial}) {
             const auto views = randomViews(p, 9);
@@ -286,7 +338,7 @@ TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)
                 worst = std::max(worst, d);
             }
             EXPECT_LE(worst, 1) << player::reconstructionName(mode);
-            // The view mode decodes through the CPU's own table: 0% off on llvmpipe.
+            // The view mode decodes through the CPU's own table: all but 1 in 500,000 equal on llvmpipe.
             EXPECT_LE(double(off) / double(gpu.size()), mode == Reconstruction::View ? 0.01 : 0.15)
                 << player::reconstructionName(mode);
         }
