@@ -163,8 +163,7 @@ unsigned EiaBuilder::program(Reconstruction mode) {
     if (!p) {
         p.reset(gl::buildProgram({{GL_COMPUTE_SHADER, "eia_construct.comp"}},
                                  {"EIA_MODE " + std::to_string(uint32_t(mode))}));
-        // The tables are constant: set once, with the program.
-        if (mode == Reconstruction::View)
+        if (mode == Reconstruction::View) // the decode table is constant: set once, with the program
             glProgramUniform1fv(p, eb::kLocLinearFromByte, 256, linearFromByte().data());
     }
     return p.get();
