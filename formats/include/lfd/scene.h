@@ -132,6 +132,27 @@ struct Animation {
 
 enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
 
+// The material's texture slots, in MaterialRecord / MaterialGpu order.
+enum class TextureSlot : uint32_t { BaseColor = 0, MetallicRoughness = 1, Normal = 2, Occlusion = 3, Emissive = 4 };
+inline constexpr uint32_t kTextureSlotCount = 5;
+
+// KHR_texture_transform of one textureInfo, as the affine map the shaders apply to
+// TEXCOORD_0: uv' = linear * uv + offset, with
+//   linear = R * S, S = diag(scale), R = [[cos r, sin r], [-sin r, cos r]] (rows; the
+//   extension's "counter-clockwise in uv space", as the Khronos sample viewer and
+//   Cesium apply it: u' = u cos r + v sin r, v' = v cos r - u sin r).
+// Identity by default; a textureInfo without the extension keeps the identity.
+struct TextureTransform {
+    glm::mat2 linear{1.0f}; // glm column-major: linear[c][r]
+    glm::vec2 offset{0.0f};
+
+    glm::vec2 apply(glm::vec2 uv) const { return linear * uv + offset; }
+    // |det linear|: how much the map scales texture-space areas (A_ts of this slot).
+    float areaScale() const { float d = glm::determinant(linear); return d < 0.0f ? -d : d; }
+    bool identity() const { return linear == glm::mat2(1.0f) && offset == glm::vec2(0.0f); }
+    bool operator==(const TextureTransform&) const = default;
+};
+
 // glTF 2.0 metallic-roughness material. Texture fields index Scene::textures.
 struct Material {
     std::string name;
@@ -149,6 +170,46 @@ struct Material {
     int32_t normalTexture = kNone;            // linear
     int32_t occlusionTexture = kNone;         // linear (R)
     int32_t emissiveTexture = kNone;          // sRGB
+    // KHR_materials_unlit: the colour is the base colour (factor x texture) alone - no
+    // lighting, environment, exposure or tone mapping.
+    bool unlit = false;
+    // KHR_texture_transform per slot (TextureSlot order); identity where absent.
+    TextureTransform textureTransforms[kTextureSlotCount];
+
+    int32_t texture(TextureSlot slot) const
+    {
+        const int32_t t[kTextureSlotCount] = {baseColorTexture, metallicRoughnessTexture, normalTexture,
+                                              occlusionTexture, emissiveTexture};
+        return t[uint32_t(slot)];
+    }
+    const TextureTransform& transform(TextureSlot slot) const { return textureTransforms[uint32_t(slot)]; }
+    // Whether the material needs the pack's material-extension record (unlit or a
+    // non-identity texture transform).
+    bool hasExtensions() const
+    {
+        if (unlit)
+            return true;
+        for (const TextureTransform& t : textureTransforms)
+            if (!t.identity())
+                return true;
+        return false;
+    }
+};
+
+// KHR_lights_punctual, one light per node instance: the light sits at the node's origin
+// and shines along the node's -Z axis (scene space, node hierarchy and animation
+// applied), so lights attached to animated nodes move with them.
+enum class LightType : uint32_t { Directional = 0, Point = 1, Spot = 2 };
+
+struct Light {
+    std::string name;
+    LightType type = LightType::Directional;
+    uint32_t node = 0;           // Scene::nodes index
+    glm::vec3 color{1.0f};       // linear RGB
+    float intensity = 1.0f;      // directional: lux (lm/m^2); point and spot: candela (lm/sr)
+    float range = 0.0f;          // point and spot: distance where the light reaches zero; 0 = unlimited
+    float innerConeAngle = 0.0f; // spot only, radians, 0 <= inner < outer <= pi/2
+    float outerConeAngle = 0.78539816f; // spot only (glTF default pi/4)
 };
 
 struct MipLevel {
@@ -243,6 +304,7 @@ struct Scene {
     std::vector<Animation> animations;
     std::vector<Skin> skins;
     std::vector<Deformer> deformers; // by firstVertex, ranges disjoint
+    std::vector<Light> lights;       // KHR_lights_punctual instances; empty: the player's default light
     SceneBounds bounds;
     BakeSettings settings;
 
