@@ -38,8 +38,13 @@ struct TexPair {
     vec4 hi; // at LOD_max
 };
 
-TexPair fetchPair(sampler2D t, vec2 uv, vec2 vpuv, bool mipmapping)
+// Texture `slot` of material m at TEXCOORD_0 `uv`: the slot's KHR_texture_transform maps
+// uv into the texture's own space and scales its areas by |det| (uvOffset.z), so the view
+// pixel's footprint there, size_vpuv, scales with it.
+TexPair fetchPair(sampler2D t, MaterialGpu m, uint slot, vec2 uv, vec2 vpuv, bool mipmapping)
 {
+    uv = mat2(m.uvLinear[slot].xy, m.uvLinear[slot].zw) * uv + m.uvOffset[slot].xy;
+    vpuv *= m.uvOffset[slot].z;
     ivec2 size = textureSize(t, 0);
     float texels = float(size.x) * float(size.y);
     TexPair pair;
@@ -71,7 +76,7 @@ vec3 pointNormal(LfdprPaperSamplingGpu s, vec3 w, uint flags, vec3 faceNormal)
 
 // The normal map's perturbed normals at LOD_min and LOD_max (n itself where the tangent
 // is degenerate).
-void normalMapPair(LfdprPaperSamplingGpu s, vec3 w, vec3 n, vec2 uv, vec2 vpuv, bool mipmapping, float scale,
+void normalMapPair(LfdprPaperSamplingGpu s, MaterialGpu m, vec3 w, vec3 n, vec2 uv, vec2 vpuv, bool mipmapping,
                    inout vec3 normalLo, inout vec3 normalHi)
 {
     vec3 tangent = w.x * lfdOctDecode(unpackSnorm2x16(s.tangents.x)) +
@@ -83,9 +88,9 @@ void normalMapPair(LfdprPaperSamplingGpu s, vec3 w, vec3 n, vec2 uv, vec2 vpuv, 
     vec3 t = tangent - n * dot(n, tangent);
     if (dot(t, t) > 1e-12) {
         t = normalize(t);
-        TexPair nt = fetchPair(t_normal, uv, vpuv, mipmapping);
-        normalLo = perturb(n, t, handedness, nt.lo, scale);
-        normalHi = perturb(n, t, handedness, nt.hi, scale);
+        TexPair nt = fetchPair(t_normal, m, LFD_SLOT_NORMAL, uv, vpuv, mipmapping);
+        normalLo = perturb(n, t, handedness, nt.lo, m.params.z);
+        normalHi = perturb(n, t, handedness, nt.hi, m.params.z);
     }
 }
 
@@ -124,16 +129,16 @@ void main()
     TexPair emissive = TexPair(vec4(1.0), vec4(1.0));
     vec3 normalLo = n, normalHi = n;
     if (useTextures && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE) != 0u)
-        base = fetchPair(t_baseColor, uv, vpuv, mipmapping);
+        base = fetchPair(t_baseColor, m, LFD_SLOT_BASE_COLOR, uv, vpuv, mipmapping);
     if (useTextures && (m.flags & LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE) != 0u)
-        mr = fetchPair(t_metallicRoughness, uv, vpuv, mipmapping);
+        mr = fetchPair(t_metallicRoughness, m, LFD_SLOT_METALLIC_ROUGHNESS, uv, vpuv, mipmapping);
     if (useTextures && (m.flags & LFD_MATERIAL_OCCLUSION_TEXTURE) != 0u)
-        occlusion = fetchPair(t_occlusion, uv, vpuv, mipmapping);
+        occlusion = fetchPair(t_occlusion, m, LFD_SLOT_OCCLUSION, uv, vpuv, mipmapping);
     if (useTextures && (m.flags & LFD_MATERIAL_EMISSIVE_TEXTURE) != 0u)
-        emissive = fetchPair(t_emissive, uv, vpuv, mipmapping);
+        emissive = fetchPair(t_emissive, m, LFD_SLOT_EMISSIVE, uv, vpuv, mipmapping);
     if (useTextures && (m.flags & LFD_MATERIAL_NORMAL_TEXTURE) != 0u &&
         (u_streams & LFD_STREAM_TANGENT) != 0u && (flags & LFDPR_TRIANGLE_FACE_NORMAL) == 0u)
-        normalMapPair(s, w, n, uv, vpuv, mipmapping, m.params.z, normalLo, normalHi);
+        normalMapPair(s, m, w, n, uv, vpuv, mipmapping, normalLo, normalHi);
 
     // Step 4: append (never past the capacity: the count still grows, so the renderer sees
     // the overflow and enlarges the buffer for the next frame).

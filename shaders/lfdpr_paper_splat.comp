@@ -173,9 +173,12 @@ void fillSplat(uint view, ivec2 viewPixels, vec2 viewSize, ivec2 pixelLo, ivec2 
     }
 }
 
-// One splat's colour word for one view: glTF PBR as mvr shades it, sRGB-encoded.
+// One splat's colour word for one view: glTF PBR as mvr shades it (an unlit material: its
+// base colour), sRGB-encoded.
 uint shadeSplat(MaterialGpu m, vec4 base, vec4 orm, vec3 emissive, vec3 n, vec3 position, vec3 eye)
 {
+    if ((m.flags & LFD_MATERIAL_UNLIT) != 0u)
+        return packUnorm4x8(vec4(linearToSrgb(base.rgb), 1.0));
     SurfacePbr s;
     s.baseColor = base.rgb;
     s.metallic = clamp(m.params.x * orm.b, 0.0, 1.0);
@@ -183,7 +186,7 @@ uint shadeSplat(MaterialGpu m, vec4 base, vec4 orm, vec3 emissive, vec3 n, vec3 
     s.occlusion = 1.0 + m.params.w * (orm.r - 1.0);
     s.emissive = m.emissiveCutoff.rgb * emissive;
     s.normal = n;
-    return packUnorm4x8(vec4(linearToSrgb(shadePbr(s, position, eye)), 1.0));
+    return packUnorm4x8(vec4(lfdDisplayEncode(shadePbr(s, position, eye)), 1.0));
 }
 
 void main()

@@ -19,6 +19,13 @@ layout(binding = LFDPR_UNIT_DRAWS) uniform usamplerBuffer t_draws;
 layout(binding = LFDPR_UNIT_RECORDS) uniform usamplerBuffer t_records;
 layout(binding = LFDPR_UNIT_NODES) uniform samplerBuffer t_nodes;
 layout(binding = LFDPR_UNIT_MATERIALS) uniform samplerBuffer t_materials;
+// The material flags a program reads (the shading groups' LFD_TEXTURE_MASK): without
+// LFD_MATERIAL_UV_TRANSFORM in it, lfdMaterial leaves the texture transforms at identity.
+#ifdef LFD_TEXTURE_MASK
+#define LFD_SCENE_MATERIAL_MASK LFD_TEXTURE_MASK
+#else
+#define LFD_SCENE_MATERIAL_MASK 0xFFFFFFFFu
+#endif
 
 NodeGpu lfdNode(uint node)
 {
@@ -33,7 +40,9 @@ NodeGpu lfdNode(uint node)
 
 MaterialGpu lfdMaterial(uint material)
 {
-    int t = 4 * int(material);
+    // MaterialGpu is 4 + 2 * LFD_SLOT_COUNT texels; the texture transforms are read only
+    // where the material has one (most have none: identity, no fetches).
+    int t = (4 + 2 * LFD_SLOT_COUNT) * int(material);
     MaterialGpu m;
     m.baseColorFactor = texelFetch(t_materials, t);
     m.emissiveCutoff = texelFetch(t_materials, t + 1);
@@ -43,6 +52,18 @@ MaterialGpu lfdMaterial(uint material)
     m.alphaMode = bits.y;
     m.pad0 = bits.z;
     m.pad1 = bits.w;
+    // note: a program compiled for a texture set without LFD_MATERIAL_UV_TRANSFORM (the
+    // shading groups' LFD_TEXTURE_MASK) has no code for the fetches at all: llvmpipe would
+    // pay for them under a lane mask even where no material has a transform.
+    for (int slot = 0; slot < LFD_SLOT_COUNT; ++slot) {
+        m.uvLinear[slot] = vec4(1.0, 0.0, 0.0, 1.0);
+        m.uvOffset[slot] = vec4(0.0, 0.0, 1.0, 0.0);
+    }
+    if ((m.flags & LFD_MATERIAL_UV_TRANSFORM & LFD_SCENE_MATERIAL_MASK) != 0u)
+        for (int slot = 0; slot < LFD_SLOT_COUNT; ++slot) {
+            m.uvLinear[slot] = texelFetch(t_materials, t + 4 + slot);
+            m.uvOffset[slot] = texelFetch(t_materials, t + 4 + LFD_SLOT_COUNT + slot);
+        }
     return m;
 }
 

@@ -41,28 +41,28 @@ vec2 g_duvdx, g_duvdy; // this pixel's uv footprint, for LFD_SAMPLE
 // across it), and averaged - what hardware anisotropic filters do, independent of a
 // driver's textureGrad in compute (llvmpipe's made lfdpr's grazing textures worse, not
 // better). Where n is 1 it is the single trilinear textureGrad.
-vec4 lfdSampleFootprint(sampler2D t, vec2 uv)
+vec4 lfdSampleFootprint(sampler2D t, vec2 uv, vec2 duvdx, vec2 duvdy)
 {
     const vec2 size = vec2(textureSize(t, 0));
-    const float lx = length(g_duvdx * size), ly = length(g_duvdy * size);
-    const vec2 major = lx >= ly ? g_duvdx : g_duvdy, minor = lx >= ly ? g_duvdy : g_duvdx;
+    const float lx = length(duvdx * size), ly = length(duvdy * size);
+    const vec2 major = lx >= ly ? duvdx : duvdy, minor = lx >= ly ? duvdy : duvdx;
     const float ratio = max(lx, ly) / max(min(lx, ly), 1e-6);
     const int n = int(clamp(ceil(min(ratio, u_frame.maxAnisotropy)), 1.0, 16.0));
     if (n == 1)
-        return textureGrad(t, uv, g_duvdx, g_duvdy);
+        return textureGrad(t, uv, duvdx, duvdy);
     const vec2 piece = major / float(n);
     vec4 sum = vec4(0.0);
     for (int i = 0; i < n; ++i)
         sum += textureGrad(t, uv + piece * (float(i) + 0.5 - 0.5 * float(n)), piece, minor);
     return sum / float(n);
 }
-#define LFD_SAMPLE(t, uv) lfdSampleFootprint(t, uv)
+#define LFD_SAMPLE(t, uv, uvFromTexcoord) lfdSampleFootprint(t, uv, (uvFromTexcoord) * g_duvdx, (uvFromTexcoord) * g_duvdy)
 #else
 // One textureGrad at the pixel's exact footprint through the textures' own sampler state:
 // trilinear at --aniso 1, and above it the texture unit's anisotropic filter
 // (LfdprOptions::AnisoFilter::Hardware, a GPU's default), the one mvr's texture() gets,
-// fed the analytic gradients.
-#define LFD_SAMPLE(t, uv) textureGrad(t, uv, g_duvdx, g_duvdy)
+// fed the analytic gradients (carried through the slot's KHR_texture_transform).
+#define LFD_SAMPLE(t, uv, uvFromTexcoord) textureGrad(t, uv, (uvFromTexcoord) * g_duvdx, (uvFromTexcoord) * g_duvdy)
 #endif
 #include "material_shading.glsl"
 #define LFDPR_SCENE_TEXELS

@@ -1,8 +1,10 @@
 // The glTF metallic-roughness material at one surface point, shaded for one view's eye:
 // one function shared by mvr.frag (per fragment) and lfdpr_visibility_shade.comp (per visible view
 // pixel of the visibility pipeline), so both evaluate the same material the same way.
-// The includer defines LFD_SAMPLE(sampler, uv): texture() with the rasteriser's implicit
-// derivatives in a fragment shader, textureGrad() with analytic gradients in compute.
+// The includer defines LFD_SAMPLE(sampler, uv, uvFromTexcoord): texture() with the
+// rasteriser's implicit derivatives in a fragment shader (which see the transformed uv),
+// textureGrad() with analytic gradients in compute, taken through the slot's
+// KHR_texture_transform (its linear part, uvFromTexcoord) to the texture's own uv space.
 // Needs scene_bindings.glsl and pbr_shading.glsl first.
 
 // The textures a program can sample (LFD_MATERIAL_*_TEXTURE bits): a program compiled for
@@ -29,6 +31,33 @@ struct LfdSurfacePoint {
     vec2 uv;
 };
 
+// Slot `slot`'s texture coordinates (KHR_texture_transform: uv' = linear * uv + offset)
+// and the linear part, which carries uv gradients into the slot's space. A fragment
+// shader defines LFD_UV_TRANSFORMS to take them from its per-draw uniform
+// (LFD_LOC_UV_TRANSFORMS) instead of the material buffer: llvmpipe reads storage buffers as
+// zeros in a fragment shader's helper invocations, so a uv computed from one would corrupt
+// texture()'s implicit derivatives along every triangle edge.
+#ifdef LFD_UV_TRANSFORMS
+#define LFD_SLOT_LINEAR(m, slot) LFD_UV_TRANSFORMS[2u * (slot)]
+#define LFD_SLOT_OFFSET(m, slot) LFD_UV_TRANSFORMS[2u * (slot) + 1u]
+#else
+#define LFD_SLOT_LINEAR(m, slot) m.uvLinear[slot]
+#define LFD_SLOT_OFFSET(m, slot) m.uvOffset[slot]
+#endif
+
+mat2 lfdSlotLinear(MaterialGpu m, uint slot)
+{
+    vec4 l = LFD_SLOT_LINEAR(m, slot);
+    return mat2(l.xy, l.zw);
+}
+
+vec2 lfdSlotUv(MaterialGpu m, uint slot, vec2 uv)
+{
+    return lfdSlotLinear(m, slot) * uv + LFD_SLOT_OFFSET(m, slot).xy;
+}
+
+#define LFD_SAMPLE_SLOT(t, slot) LFD_SAMPLE(t, lfdSlotUv(m, slot, p.uv), lfdSlotLinear(m, slot))
+
 // False when an alpha-masked material discards the point.
 bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, out vec3 color)
 {
@@ -40,10 +69,15 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
     // Base colour and alpha (texture is GL_SRGB8_ALPHA8: the fetch returns linear values).
     vec4 baseColor = m.baseColorFactor;
     if (useTextures && (m.flags & LFD_MATERIAL_BASE_COLOR_TEXTURE & LFD_TEXTURE_MASK) != 0u)
-        baseColor *= LFD_SAMPLE(t_baseColor, p.uv);
+        baseColor *= LFD_SAMPLE_SLOT(t_baseColor, LFD_SLOT_BASE_COLOR);
     // note: BLEND is drawn as opaque (no sorting of transparent surfaces).
     if (m.alphaMode == LFD_ALPHA_MASK && baseColor.a < m.emissiveCutoff.w)
         return false;
+    // KHR_materials_unlit: the base colour as it is, shown as stored (no exposure or tone map).
+    if ((m.flags & LFD_MATERIAL_UNLIT) != 0u) {
+        color = linearToSrgb(baseColor.rgb);
+        return true;
+    }
 
     // Geometric normal: interpolated vertex normal (flipped on double-sided back faces),
     // or the face normal that always faces the eye.
@@ -58,7 +92,7 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
         if (dot(t, t) > 1e-12) {
             t = normalize(t);
             vec3 b = cross(n, t) * (p.tangent.w < 0.0 ? -1.0 : 1.0);
-            vec3 tn = LFD_SAMPLE(t_normal, p.uv).xyz * 2.0 - 1.0;
+            vec3 tn = LFD_SAMPLE_SLOT(t_normal, LFD_SLOT_NORMAL).xyz * 2.0 - 1.0;
             // A two-channel (BC5) normal map stores x and y of the unit normal.
             if ((m.flags & LFD_MATERIAL_NORMAL_TWO_CHANNEL) != 0u)
                 tn.z = sqrt(max(1.0 - dot(tn.xy, tn.xy), 0.0));
@@ -72,7 +106,7 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
     s.metallic = m.params.x;
     s.roughness = m.params.y;
     if (useTextures && (m.flags & LFD_MATERIAL_METALLIC_ROUGHNESS_TEXTURE & LFD_TEXTURE_MASK) != 0u) {
-        vec4 mr = LFD_SAMPLE(t_metallicRoughness, p.uv);
+        vec4 mr = LFD_SAMPLE_SLOT(t_metallicRoughness, LFD_SLOT_METALLIC_ROUGHNESS);
         s.roughness *= mr.g;
         s.metallic *= mr.b;
     }
@@ -80,12 +114,12 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
     s.metallic = clamp(s.metallic, 0.0, 1.0);
     s.occlusion = 1.0;
     if (useTextures && (m.flags & LFD_MATERIAL_OCCLUSION_TEXTURE & LFD_TEXTURE_MASK) != 0u)
-        s.occlusion = 1.0 + m.params.w * (LFD_SAMPLE(t_occlusion, p.uv).r - 1.0);
+        s.occlusion = 1.0 + m.params.w * (LFD_SAMPLE_SLOT(t_occlusion, LFD_SLOT_OCCLUSION).r - 1.0);
     s.emissive = m.emissiveCutoff.rgb;
     if (useTextures && (m.flags & LFD_MATERIAL_EMISSIVE_TEXTURE & LFD_TEXTURE_MASK) != 0u)
-        s.emissive *= LFD_SAMPLE(t_emissive, p.uv).rgb;
+        s.emissive *= LFD_SAMPLE_SLOT(t_emissive, LFD_SLOT_EMISSIVE).rgb;
     s.normal = n;
 
-    color = linearToSrgb(shadePbr(s, p.position, eye));
+    color = lfdDisplayEncode(shadePbr(s, p.position, eye));
     return true;
 }

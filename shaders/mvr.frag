@@ -1,10 +1,12 @@
 #version 450 core
 // Fragment stage of mvr and mvr-layered: glTF metallic-roughness material
 // (material_shading.glsl), shaded for the eye of this fragment's view, written
-// sRGB-encoded.
+// sRGB-encoded. texture() takes its derivatives from the slot's transformed uv itself.
 #include "scene_bindings.glsl"
 #include "pbr_shading.glsl"
-#define LFD_SAMPLE(t, uv) texture(t, uv)
+#define LFD_SAMPLE(t, uv, uvFromTexcoord) texture(t, uv)
+layout(location = LFD_LOC_UV_TRANSFORMS) uniform vec4 u_uvTransforms[2 * LFD_SLOT_COUNT];
+#define LFD_UV_TRANSFORMS u_uvTransforms
 #include "material_shading.glsl"
 
 layout(location = 0) in vec3 v_position;

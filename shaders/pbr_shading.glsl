@@ -1,8 +1,12 @@
 // glTF 2.0 metallic-roughness shading (glTF spec, appendix B): Lambert diffuse plus GGX
-// specular with Smith height-correlated visibility and Schlick Fresnel, lit by one fixed
-// directional light and a constant ambient term. View-dependent: `eye` is the camera of
-// the view being shaded. Output is encoded to sRGB in the shader, so the RGBA8 views hold
-// display values (readback bytes are what the panel shows).
+// specular with Smith height-correlated visibility and Schlick Fresnel, lit by the frame's
+// punctual lights (KHR_lights_punctual, or the default directional light) and by the
+// environment (image-based lighting, split sum) or, without one, a constant ambient term.
+// View-dependent: `eye` is the camera of the view being shaded. lfdDisplayEncode turns the
+// radiance into what the views store: exposure, the Khronos PBR Neutral tone mapper and
+// the sRGB encode, so the RGBA8 views hold display values (readback bytes are what the
+// panel shows). docs/lighting.md describes the model; player/lighting/ holds its CPU side
+// (prefiltering, the BRDF table, the Monte Carlo reference the tests compare with).
 
 const float LFD_PI = 3.14159265358979;
 
@@ -17,38 +21,161 @@ struct SurfacePbr {
 
 #include "srgb.glsl" // linearToSrgb
 
-vec3 shadePbr(SurfacePbr s, vec3 position, vec3 eye)
+layout(binding = LFD_UNIT_ENVIRONMENT) uniform samplerCube t_environment;
+layout(binding = LFD_UNIT_BRDF_TABLE) uniform sampler2D t_brdfTable;
+
+// The BRDF's inputs that do not depend on the light: alpha = roughness^2,
+// F0 = mix(0.04, baseColor, metallic), the diffuse colour.
+struct LfdBrdf {
+    vec3 f0;
+    vec3 diffuseColor;
+    float a2; // alpha^2
+};
+
+LfdBrdf lfdBrdf(SurfacePbr s)
 {
-    // Vectors: n normal, v towards the eye, l towards the light, h half vector.
-    vec3 n = s.normal;
-    vec3 v = normalize(eye - position);
-    vec3 l = normalize(u_frame.lightDirScene.xyz);
+    LfdBrdf b;
+    float alpha = max(s.roughness * s.roughness, 1e-3);
+    b.a2 = alpha * alpha;
+    b.f0 = mix(vec3(0.04), s.baseColor, s.metallic);
+    b.diffuseColor = s.baseColor * (1.0 - s.metallic);
+    return b;
+}
+
+// f(l, v) for one light direction l (unit, towards the light), and n.l.
+vec3 lfdBrdfValue(LfdBrdf b, vec3 n, vec3 v, vec3 l, float NdotV, out float NdotL)
+{
     vec3 h = normalize(v + l);
-    float NdotL = max(dot(n, l), 0.0);
-    float NdotV = max(dot(n, v), 1e-4);
+    NdotL = max(dot(n, l), 0.0);
     float NdotH = max(dot(n, h), 0.0);
     float VdotH = max(dot(v, h), 0.0);
 
-    // glTF BRDF inputs: alpha = roughness^2, F0 = mix(0.04, baseColor, metallic).
-    float alpha = max(s.roughness * s.roughness, 1e-3);
-    vec3 f0 = mix(vec3(0.04), s.baseColor, s.metallic);
-    vec3 diffuseColor = s.baseColor * (1.0 - s.metallic);
-
     // Specular: D (GGX/Trowbridge-Reitz), V (Smith height-correlated), F (Schlick).
-    float a2 = alpha * alpha;
-    float d = NdotH * NdotH * (a2 - 1.0) + 1.0;
-    float D = a2 / (LFD_PI * d * d);
-    float visV = NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2);
-    float visL = NdotV * sqrt(NdotL * NdotL * (1.0 - a2) + a2);
+    float d = NdotH * NdotH * (b.a2 - 1.0) + 1.0;
+    float D = b.a2 / (LFD_PI * d * d);
+    float visV = NdotL * sqrt(NdotV * NdotV * (1.0 - b.a2) + b.a2);
+    float visL = NdotV * sqrt(NdotL * NdotL * (1.0 - b.a2) + b.a2);
     float Vis = (visV + visL) > 0.0 ? 0.5 / (visV + visL) : 0.0;
-    vec3 F = f0 + (vec3(1.0) - f0) * pow(1.0 - VdotH, 5.0);
+    vec3 F = b.f0 + (vec3(1.0) - b.f0) * pow(1.0 - VdotH, 5.0);
 
-    vec3 diffuse = (vec3(1.0) - F) * diffuseColor / LFD_PI;
+    vec3 diffuse = (vec3(1.0) - F) * b.diffuseColor / LFD_PI;
     vec3 specular = F * (D * Vis);
-    vec3 direct = (diffuse + specular) * u_frame.lightColor.rgb * NdotL;
+    return diffuse + specular;
+}
 
-    // Ambient: constant light on the diffuse and F0-weighted specular lobes, occluded.
-    vec3 ambient = u_frame.ambientColor.rgb * (diffuseColor + f0 * (1.0 - s.roughness * 0.5)) *
-                   s.occlusion;
+// Light i at `position`: the unit direction towards it and the radiance it brings
+// (KHR_lights_punctual: directional lights in lux, point and spot lights in candela with
+// inverse-square falloff, windowed to zero at `range`; spot cones smoothed between the
+// inner and outer angles as the extension's reference implementation does).
+vec3 lfdLightIncidence(uint i, vec3 position, out vec3 l)
+{
+    vec4 dirType = u_frame.lightDirection[i];
+    vec3 radiance = u_frame.lightRadiance[i].rgb;
+    if (uint(dirType.w) == LFD_LIGHT_DIRECTIONAL) {
+        l = normalize(-dirType.xyz);
+        return radiance;
+    }
+    vec4 posRange = u_frame.lightPosition[i];
+    vec3 toLight = posRange.xyz - position;
+    float distance2 = max(dot(toLight, toLight), 1e-8);
+    l = toLight * inversesqrt(distance2);
+    float attenuation = 1.0 / distance2;
+    if (posRange.w > 0.0) {
+        float r = distance2 / (posRange.w * posRange.w); // (d / range)^2
+        attenuation *= clamp(1.0 - r * r, 0.0, 1.0);
+    }
+    if (uint(dirType.w) == LFD_LIGHT_SPOT) {
+        vec2 cone = u_frame.lightCone[i].xy;
+        float t = clamp(dot(dirType.xyz, -l) * cone.x + cone.y, 0.0, 1.0);
+        attenuation *= t * t;
+    }
+    return radiance * attenuation;
+}
+
+// E(n) / pi from the environment's SH9 coefficients (Ramamoorthi & Hanrahan 2001, the
+// clamped-cosine convolution folded into the coefficients on the CPU: lfd_lighting's
+// irradianceSh, which this mirrors term by term).
+vec3 lfdIrradianceSh(vec3 d)
+{
+    vec3 e = u_frame.irradianceSh[0].rgb;
+    e += u_frame.irradianceSh[1].rgb * d.y + u_frame.irradianceSh[2].rgb * d.z + u_frame.irradianceSh[3].rgb * d.x;
+    e += u_frame.irradianceSh[4].rgb * (d.x * d.y) + u_frame.irradianceSh[5].rgb * (d.y * d.z);
+    e += u_frame.irradianceSh[6].rgb * (3.0 * d.z * d.z - 1.0);
+    e += u_frame.irradianceSh[7].rgb * (d.x * d.z) + u_frame.irradianceSh[8].rgb * (d.x * d.x - d.y * d.y);
+    return max(e, vec3(0.0));
+}
+
+vec3 lfdEnvironmentDirection(vec3 sceneDirection)
+{
+    return mat3(u_frame.environmentFromScene[0].xyz, u_frame.environmentFromScene[1].xyz,
+                u_frame.environmentFromScene[2].xyz) * sceneDirection;
+}
+
+// Image-based lighting by the split sum (Karis 2013): the prefiltered environment along the
+// reflection at the roughness's level times F0 * A + B, and the irradiance times the
+// diffuse colour weighted by (1 - F0)(1 - C), the mean of (1 - F) over a Lambert lobe. A, B,
+// C come from the BRDF table at (n.v, roughness) (docs/lighting.md).
+vec3 lfdEnvironmentLight(SurfacePbr s, LfdBrdf b, vec3 n, vec3 v, float NdotV)
+{
+    vec3 abc = textureLod(t_brdfTable, vec2(NdotV, s.roughness), 0.0).rgb;
+    vec3 r = reflect(-v, n);
+    vec3 prefiltered = textureLod(t_environment, lfdEnvironmentDirection(r),
+                                  s.roughness * u_frame.environmentMaxLevel).rgb;
+    vec3 specular = prefiltered * (b.f0 * abc.x + abc.y);
+    vec3 diffuse = b.diffuseColor * (vec3(1.0) - b.f0) * (1.0 - abc.z) * lfdIrradianceSh(lfdEnvironmentDirection(n));
+    return (diffuse + specular) * s.occlusion;
+}
+
+// Radiance leaving the surface towards `eye` (linear, before exposure).
+vec3 shadePbr(SurfacePbr s, vec3 position, vec3 eye)
+{
+    // Vectors: n normal, v towards the eye, l towards a light.
+    vec3 n = s.normal;
+    vec3 v = normalize(eye - position);
+    float NdotV = max(dot(n, v), 1e-4);
+    LfdBrdf b = lfdBrdf(s);
+
+    vec3 direct = vec3(0.0);
+    for (uint i = 0u; i < u_frame.lightCount; ++i) {
+        vec3 l;
+        float NdotL;
+        vec3 radiance = lfdLightIncidence(i, position, l);
+        direct += lfdBrdfValue(b, n, v, l, NdotV, NdotL) * radiance * NdotL;
+    }
+
+    vec3 ambient;
+    if ((u_frame.lightingFlags & LFD_LIGHTING_ENVIRONMENT) != 0u)
+        ambient = lfdEnvironmentLight(s, b, n, v, NdotV);
+    else // constant light on the diffuse and F0-weighted specular lobes, occluded
+        ambient = u_frame.ambientColor.rgb * (b.diffuseColor + b.f0 * (1.0 - s.roughness * 0.5)) * s.occlusion;
     return direct + ambient + s.emissive;
+}
+
+// Khronos PBR Neutral tone mapping (Khronos 3D Commerce, "PBR Neutral", reference
+// implementation): colours under the compression start pass unchanged but for a small
+// toe, highlights are compressed towards white without hue shifts.
+vec3 lfdPbrNeutralToneMap(vec3 color)
+{
+    const float startCompression = 0.8 - 0.04;
+    const float desaturation = 0.15;
+    float x = min(color.r, min(color.g, color.b));
+    float offset = x < 0.08 ? x - 6.25 * x * x : 0.04;
+    color -= offset;
+    float peak = max(color.r, max(color.g, color.b));
+    if (peak < startCompression)
+        return color;
+    const float d = 1.0 - startCompression;
+    float newPeak = 1.0 - d * d / (peak + d - startCompression);
+    color *= newPeak / peak;
+    float g = 1.0 - 1.0 / (desaturation * (peak - newPeak) + 1.0);
+    return mix(color, vec3(newPeak), g);
+}
+
+// Scene radiance -> the sRGB-encoded value a view stores: exposure, tone mapping, encode.
+vec3 lfdDisplayEncode(vec3 radiance)
+{
+    radiance *= u_frame.exposure;
+    if ((u_frame.lightingFlags & LFD_LIGHTING_TONE_MAP) != 0u)
+        radiance = lfdPbrNeutralToneMap(radiance);
+    return linearToSrgb(radiance);
 }

@@ -27,11 +27,20 @@
 #define LFD_UNIT_OCCLUSION 3
 #define LFD_UNIT_EMISSIVE 4
 
+// Texture units of the scene's lighting (frame_uniforms.h binds them every frame): the
+// environment's GGX-prefiltered specular cube (one roughness per mip level) and the
+// split-sum BRDF table (A, B, C; pbr_shading.glsl).
+#define LFD_UNIT_ENVIRONMENT 6
+#define LFD_UNIT_BRDF_TABLE 7
+
 // Explicit uniform locations of the per-draw uniforms.
 #define LFD_LOC_NODE 0
 #define LFD_LOC_MATERIAL 1
 #define LFD_LOC_VIEW 2
 #define LFD_LOC_STREAMS 3
+// vec4[2 * LFD_SLOT_COUNT] (mvr.frag): the draw's texture transforms, slot s at 2s (the
+// linear part, as MaterialGpu.uvLinear) and 2s + 1 (as MaterialGpu.uvOffset).
+#define LFD_LOC_UV_TRANSFORMS 4
 
 // MaterialGpu.flags: which textures the material has, double-sidedness, and whether the
 // normal texture holds x and y only (BC5; the shader rebuilds z = sqrt(1 - x^2 - y^2)).
@@ -42,6 +51,19 @@
 #define LFD_MATERIAL_EMISSIVE_TEXTURE 16
 #define LFD_MATERIAL_DOUBLE_SIDED 32
 #define LFD_MATERIAL_NORMAL_TWO_CHANNEL 64
+// KHR_materials_unlit: the base colour alone, no lighting, exposure or tone mapping.
+#define LFD_MATERIAL_UNLIT 128
+// Some slot has a KHR_texture_transform (MaterialGpu.uvLinear / uvOffset are not all the
+// identity); without it the transforms are not read (lfdpr reads materials texel by texel).
+#define LFD_MATERIAL_UV_TRANSFORM 256
+
+// MaterialGpu.uvLinear / uvOffset slots (= lfd::TextureSlot).
+#define LFD_SLOT_BASE_COLOR 0
+#define LFD_SLOT_METALLIC_ROUGHNESS 1
+#define LFD_SLOT_NORMAL 2
+#define LFD_SLOT_OCCLUSION 3
+#define LFD_SLOT_EMISSIVE 4
+#define LFD_SLOT_COUNT 5
 
 // MaterialGpu.alphaMode (= lfd::AlphaMode).
 #define LFD_ALPHA_OPAQUE 0
@@ -63,6 +85,11 @@ struct MaterialGpu {
     uint alphaMode;      // LFD_ALPHA_*
     uint pad0;
     uint pad1;
+    // KHR_texture_transform per slot (LFD_SLOT_*): uv' = mat2(uvLinear[s]) * uv + uvOffset[s].xy
+    // (mat2 from a vec4 is column-major: columns xy and zw, as lfd::TextureTransform::linear);
+    // uvOffset[s].z = |det| of the linear part, the slot's texture-space area scale.
+    vec4 uvLinear[LFD_SLOT_COUNT];
+    vec4 uvOffset[LFD_SLOT_COUNT];
 };
 
 // Per-node transforms for the current frame (std430).
@@ -101,14 +128,36 @@ layout(std430, binding = LFD_SSBO_TRIANGLE_STATS) readonly buffer TriangleStatsB
     TriangleStatsGpu triangleStats[];
 };
 
+// FrameBlock.lightingFlags.
+#define LFD_LIGHTING_ENVIRONMENT 1 // image-based lighting (else the constant ambient term)
+#define LFD_LIGHTING_TONE_MAP 2    // Khronos PBR Neutral before the sRGB encode (else a clamp)
+
+// Punctual lights per frame (the scene's KHR_lights_punctual instances, or the default
+// directional light); FrameBlock.light* arrays.
+#define LFD_MAX_LIGHTS 16
+#define LFD_LIGHT_DIRECTIONAL 0
+#define LFD_LIGHT_POINT 1
+#define LFD_LIGHT_SPOT 2
+
 // Frame constants (C++: FrameGpu).
 layout(std140, binding = LFD_UBO_FRAME) uniform FrameBlock {
-    vec4 lightDirScene; // xyz unit vector towards the light, in scene space
-    vec4 lightColor;    // rgb irradiance scale of the directional light
-    vec4 ambientColor;  // rgb ambient light
+    vec4 ambientColor;  // rgb constant ambient light (without an environment)
     vec4 background;    // rgba clear colour (sRGB-encoded, as stored in the views)
     uint viewCount;
     uint viewWidth;
     uint viewHeight;
     float maxAnisotropy; // --aniso: lfdpr's textureGrad taps along a footprint's major axis
+    uint lightingFlags;  // LFD_LIGHTING_*
+    uint lightCount;     // punctual lights in the arrays below (<= LFD_MAX_LIGHTS)
+    float exposure;      // 2^EV: the scene radiance's scale before tone mapping
+    float environmentMaxLevel; // the specular cube's last mip level (roughness 1)
+    // The environment's orientation: environment direction = mat3(columns 0..2) * scene
+    // direction (a rotation: the environment is fixed to the display, turned by
+    // --environment-rotation about the vertical).
+    vec4 environmentFromScene[3];
+    vec4 irradianceSh[9]; // rgb: SH9 of the environment's irradiance / pi (pbr_shading.glsl)
+    vec4 lightPosition[LFD_MAX_LIGHTS];  // xyz scene position; w range (0: unlimited)
+    vec4 lightDirection[LFD_MAX_LIGHTS]; // xyz unit direction the light shines along; w type (LFD_LIGHT_*)
+    vec4 lightRadiance[LFD_MAX_LIGHTS];  // rgb colour * intensity; w unused
+    vec4 lightCone[LFD_MAX_LIGHTS];      // spot: x = 1 / (cos inner - cos outer), y = -cos outer * x
 } u_frame;

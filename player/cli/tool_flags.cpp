@@ -40,6 +40,18 @@ void addSharedFlags(CLI::App& app, SharedFlags& flags)
                    "driver's limit; gstd always filters at 16)")
         ->check(CLI::IsMember({1u, 2u, 4u, 8u, 16u}))
         ->capture_default_str();
+    app.add_option("--environment", flags.environment,
+                   "image-based lighting: neutral (a built-in studio) | none (the fixed directional light and a "
+                   "constant ambient term) | an equirectangular Radiance .hdr file")
+        ->capture_default_str();
+    app.add_option("--environment-rotation", flags.environmentRotationDeg,
+                   "turn the environment about the vertical by this many degrees (counter-clockwise seen from above)")
+        ->capture_default_str();
+    app.add_option("--exposure", flags.exposureEv, "exposure in stops: radiance x 2^EV before tone mapping")
+        ->capture_default_str();
+    app.add_option("--tone-map", flags.toneMapText,
+                   "tone mapper before the sRGB encode: pbr-neutral (Khronos PBR Neutral) | none (clamp)")
+        ->capture_default_str();
     app.add_flag("--gl-debug", flags.glDebug,
                  "debug GL context: print every KHR_debug message; a GL error fails the run naming the call");
 }
@@ -70,6 +82,18 @@ void finishSharedFlags(SharedFlags& flags)
     } catch (const std::exception& e) {
         throw UsageError(std::string("--gstd-sub-views: ") + e.what());
     }
+    if (!std::isfinite(flags.environmentRotationDeg))
+        throw UsageError("--environment-rotation: must be a finite number of degrees");
+    if (!std::isfinite(flags.exposureEv) || std::abs(flags.exposureEv) > 64.0)
+        throw UsageError("--exposure: must be a number of stops between -64 and 64");
+    if (flags.toneMapText == "pbr-neutral")
+        flags.toneMap = ToneMap::PbrNeutral;
+    else if (flags.toneMapText == "none")
+        flags.toneMap = ToneMap::None;
+    else
+        throw UsageError("--tone-map: '" + flags.toneMapText + "' is not one of pbr-neutral, none");
+    if (flags.environment.empty())
+        throw UsageError("--environment: empty (neutral, none or a .hdr file)");
     try {
         flags.lfdprWork = parseLfdprWorkShape(flags.lfdprWorkText);
         flags.lfdprAniso = parseLfdprAnisoFilter(flags.lfdprAnisoText);
@@ -103,6 +127,15 @@ Supersampling parseSupersamplingFlag(const std::string& flag, const std::string&
     } catch (const std::exception& e) {
         throw UsageError(flag + ": " + e.what());
     }
+}
+
+FrameLighting frameLightingFromFlags(const SharedFlags& flags)
+{
+    FrameLighting lighting;
+    lighting.environmentRotationDeg = flags.environmentRotationDeg;
+    lighting.exposureEv = flags.exposureEv;
+    lighting.toneMap = flags.toneMap;
+    return lighting;
 }
 
 } // namespace lfd::player

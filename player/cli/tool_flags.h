@@ -30,6 +30,13 @@ struct SharedFlags {
     LfdprOptions::AnisoFilter lfdprAniso = LfdprOptions::AnisoFilter::Auto; // --lfdpr-aniso
     bool glDebug = false;                                   // --gl-debug
     uint32_t aniso = 1;                                     // --aniso: 1, 2, 4, 8 or 16
+    // Lighting (docs/lighting.md): the environment ("neutral", "none" or a Radiance .hdr),
+    // its rotation about the vertical, the exposure and the tone mapper.
+    std::string environment = "neutral";                    // --environment
+    double environmentRotationDeg = 0.0;                    // --environment-rotation
+    double exposureEv = 0.0;                                // --exposure
+    std::string toneMapText = "pbr-neutral";                // --tone-map
+    ToneMap toneMap = ToneMap::PbrNeutral;
     // As CLI11 fills them.
     std::string viewSizeText, lfdprWorkText = "auto", lfdprAnisoText = "auto";
     CLI::Option* viewSizeOpt = nullptr;
@@ -38,6 +45,9 @@ struct SharedFlags {
 void addSharedFlags(CLI::App& app, SharedFlags& flags);
 // Checks and types the parsed flags; cli::UsageError naming the flag.
 void finishSharedFlags(SharedFlags& flags);
+// The frame lighting the flags ask for (its environment is loaded by the caller:
+// loadFlagEnvironment).
+FrameLighting frameLightingFromFlags(const SharedFlags& flags);
 // --gstd-* and --lfdpr-work / --lfdpr-aniso into the renderers' options.
 void applySharedFlags(const SharedFlags& flags, RendererOptions& options);
 

@@ -99,8 +99,24 @@ FramePipeline::FramePipeline(const DisplayProfile& profile, Scene scene, double 
 void FramePipeline::animate(double time)
 {
     scene_->update(time);
-    frame_ = makeFrameSetup(profile_, framing_, time, turntablePeriod_, controls_);
-    frame_.textureAnisotropy = scene_->maxAnisotropy();
+    frame_ = frameAt(profile_, time);
+}
+
+FrameSetup FramePipeline::frameAt(const DisplayProfile& profile, double time) const
+{
+    FrameSetup frame = makeFrameSetup(profile, framing_, time, turntablePeriod_, controls_);
+    frame.textureAnisotropy = scene_->maxAnisotropy();
+    frame.lighting = lighting_;
+    frame.lighting.environment = environment_.get();
+    frame.lighting.lights = sceneLights(scene_->cpu(), scene_->sceneFromNode());
+    return frame;
+}
+
+void FramePipeline::setLighting(const FrameLighting& lighting, std::shared_ptr<const GpuEnvironment> environment)
+{
+    lighting_ = lighting;
+    lighting_.lights.clear();
+    environment_ = std::move(environment);
 }
 
 void FramePipeline::poseScene(GpuTimer& timer)
@@ -223,8 +239,7 @@ void FramePipeline::renderPreviewFrame(Renderer& renderer, double time, GpuTimer
         previewEia_ = std::make_unique<EiaBuilder>(previewProfile_);
     }
     scene_->update(time);
-    frame_ = makeFrameSetup(previewProfile_, framing_, time, turntablePeriod_, controls_);
-    frame_.textureAnisotropy = scene_->maxAnisotropy();
+    frame_ = frameAt(previewProfile_, time);
     timer.begin(stage::kTotal);
     poseScene(timer);
     renderer.render(*scene_, frame_, *previewTargets_, timer);

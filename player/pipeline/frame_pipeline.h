@@ -109,6 +109,14 @@ public:
     // nothing, not even the stage, for static scenes.
     void poseScene(GpuTimer& timer);
 
+    // How later frames are lit (frame.h FrameLighting: exposure, tone mapping, the
+    // environment's rotation; its lights are the scene's, evaluated per frame) and the
+    // environment itself (null: the constant ambient term), kept alive by the pipeline.
+    // The default: no environment, no tone mapping, the default light - the look before
+    // image-based lighting; lfd-play and lfd-bench set their flags' choice.
+    void setLighting(const FrameLighting& lighting, std::shared_ptr<const GpuEnvironment> environment);
+    const FrameLighting& lighting() const { return lighting_; }
+
     // The viewer's camera controls (frame.h), applied from the next frame on.
     void setViewControls(const ViewControls& controls) { controls_ = controls; }
     const ViewControls& viewControls() const { return controls_; }
@@ -125,6 +133,9 @@ public:
     FrameOutputs read(uint32_t frameIndex) const;
 
 private:
+    // The frame at `time` for `profile`: cameras, the scene's lights and the lighting.
+    FrameSetup frameAt(const DisplayProfile& profile, double time) const;
+
     DisplayProfile profile_;
     Framing framing_;
     double turntablePeriod_;
@@ -133,6 +144,8 @@ private:
     std::unique_ptr<EiaBuilder> eia_;
     FrameSetup frame_;
     ViewControls controls_;
+    FrameLighting lighting_;
+    std::shared_ptr<const GpuEnvironment> environment_;
     PreviewShape previewShape_;
     DisplayProfile previewProfile_;
     std::unique_ptr<ViewTargets> previewTargets_;

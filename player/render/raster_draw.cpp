@@ -41,6 +41,8 @@ void RasterDraw::drawScene(const GpuScene& scene, unsigned instances) const
             draw.material == kNone ? nullptr : &cpu.materials[size_t(draw.material)];
         glProgramUniform1ui(program_, bindings::kLocNode, draw.node);
         glProgramUniform1ui(program_, bindings::kLocMaterial, scene.gpuMaterialIndex(draw.material));
+        glProgramUniform4fv(program_, bindings::kLocUvTransforms, 2 * kTextureSlotCount,
+                            &scene.uvTransforms(draw.material)[0].x);
         scene.bindMaterialTextures(draw.material);
 
         // Culling: glTF single-sided materials cull back faces, double-sided ones draw both

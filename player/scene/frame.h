@@ -2,6 +2,8 @@
 // N view cameras. Built once per frame by makeFrameSetup and handed to every renderer.
 #pragma once
 
+#include "scene_lights.h"
+
 #include "lfd/display_profile.h"
 #include "lfd/framing.h"
 
@@ -10,6 +12,22 @@
 #include <vector>
 
 namespace lfd::player {
+
+class GpuEnvironment; // gpu_environment.h
+
+// What the frame's views show of the scene's light (pbr_shading.glsl, docs/lighting.md).
+enum class ToneMap : uint32_t { None = 0, PbrNeutral = 1 };
+
+struct FrameLighting {
+    // Image-based lighting; null: the constant ambient term instead.
+    const GpuEnvironment* environment = nullptr;
+    double environmentRotationDeg = 0.0; // about the display's vertical (+: counter-clockwise from above)
+    double exposureEv = 0.0;             // radiance * 2^EV before tone mapping
+    ToneMap toneMap = ToneMap::None;
+    // The scene's punctual lights this frame (sceneLights). Empty: the default directional
+    // light, when there is no environment; an environment alone lights a scene without lights.
+    std::vector<PunctualLight> lights;
+};
 
 struct FrameSetup {
     DisplayProfile profile;  // views/view size already overridden from the command line
@@ -22,6 +40,7 @@ struct FrameSetup {
     // Per-view clipFromScene = cameras[i].clipFromDisplay * displayFromScene (float, for upload).
     std::vector<glm::mat4> clipFromScene;
     std::vector<glm::vec3> eyeScene; // camera positions in scene space (view-dependent shading)
+    FrameLighting lighting;
     // Angular supersampling (frame_pipeline.h, --ss 2v) renders more views than the
     // display has; point-based renderers then sample the scene for the display's own
     // views (this frame), so the point cloud does not grow. Null: sample for `cameras`.

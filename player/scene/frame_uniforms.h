@@ -1,6 +1,7 @@
 // Per-frame GPU constants shared by every renderer: the views SSBO (clipFromScene and eye
-// per view, binding LFD_SSBO_VIEWS) and the FrameBlock UBO (light, ambient, background,
-// view count and size, binding LFD_UBO_FRAME). Layouts: shaders/scene_bindings.glsl.
+// per view, binding LFD_SSBO_VIEWS) and the FrameBlock UBO (lights, environment, exposure
+// and tone mapping, background, view count and size, binding LFD_UBO_FRAME), with the
+// environment's textures bound. Layouts: shaders/scene_bindings.glsl.
 #pragma once
 
 #include "frame.h"
@@ -13,17 +14,20 @@ namespace lfd::player {
 // Background of every view (sRGB-encoded, as stored): dark grey.
 inline constexpr float kBackground[4] = {0.05f, 0.05f, 0.05f, 1.0f};
 
-// The fixed directional light, in display space (towards the light: upper left, in front
-// of the screen), so the light stays put while the turntable rotates the scene under it.
-glm::dvec3 lightDirectionDisplay();
-inline constexpr float kLightIntensity = 3.0f; // irradiance scale, white
-inline constexpr float kAmbientIntensity = 0.25f;
+// The lights a frame shades with (FrameLighting::lights, or the default light when it has
+// none and there is no environment), at most LFD_MAX_LIGHTS: the first ones.
+std::vector<PunctualLight> frameLights(const FrameSetup& frame);
+
+// environmentFromScene of the FrameBlock: the scene's orientation in the display (the
+// environment stays with the display, like the default light) turned by the rotation.
+glm::mat3 environmentFromScene(const FrameSetup& frame);
 
 class FrameUniforms {
 public:
     FrameUniforms();
 
-    // Uploads the frame's views and constants and binds both buffers.
+    // Uploads the frame's views and constants, binds both buffers and the environment's
+    // textures (when it has one).
     void upload(const FrameSetup& frame);
 
 private:

@@ -46,8 +46,15 @@ bindings::MaterialGpu toGpu(const Material& m, const std::vector<Texture>& textu
     const bool twoChannelNormals = m.normalTexture >= 0 && size_t(m.normalTexture) < textures.size() &&
                                    textures[size_t(m.normalTexture)].format == TextureFormat::Bc5;
     g.flags = materialTextureFlags(m) | (m.doubleSided ? bindings::kMaterialDoubleSided : 0u) |
-              (twoChannelNormals ? bindings::kMaterialNormalTwoChannel : 0u);
+              (twoChannelNormals ? bindings::kMaterialNormalTwoChannel : 0u) |
+              (m.unlit ? bindings::kMaterialUnlit : 0u);
     g.alphaMode = uint32_t(m.alphaMode);
+    // KHR_texture_transform per slot: the linear part's columns, the offset and |det|.
+    for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+        const TextureTransform& t = m.textureTransforms[slot];
+        g.uvLinear[slot] = glm::vec4(t.linear[0], t.linear[1]);
+        g.uvOffset[slot] = glm::vec4(t.offset, t.areaScale(), 0.0f);
+    }
     return g;
 }
 
@@ -124,11 +131,15 @@ std::vector<DrawItem> drawItems(const Scene& scene)
 
 uint32_t materialTextureFlags(const Material& m)
 {
+    bool transformed = false; // a textured slot with a KHR_texture_transform
+    for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot)
+        transformed |= m.texture(TextureSlot(slot)) != kNone && !m.textureTransforms[slot].identity();
     return (m.baseColorTexture != kNone ? bindings::kMaterialBaseColorTexture : 0u) |
            (m.metallicRoughnessTexture != kNone ? bindings::kMaterialMetallicRoughnessTexture : 0u) |
            (m.normalTexture != kNone ? bindings::kMaterialNormalTexture : 0u) |
            (m.occlusionTexture != kNone ? bindings::kMaterialOcclusionTexture : 0u) |
-           (m.emissiveTexture != kNone ? bindings::kMaterialEmissiveTexture : 0u);
+           (m.emissiveTexture != kNone ? bindings::kMaterialEmissiveTexture : 0u) |
+           (transformed ? bindings::kMaterialUvTransform : 0u);
 }
 
 namespace {
@@ -196,6 +207,13 @@ GpuScene::GpuScene(Scene scene, const GpuSceneOptions& options)
     for (const Material& m : scene_.materials)
         materials.push_back(toGpu(m, scene_.textures));
     materials.push_back(toGpu(Material{}, scene_.textures));
+    for (const bindings::MaterialGpu& g : materials) {
+        std::array<glm::vec4, 2 * kTextureSlotCount>& t = uvTransforms_.emplace_back();
+        for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+            t[2 * slot] = g.uvLinear[slot];
+            t[2 * slot + 1] = g.uvOffset[slot];
+        }
+    }
     materialSsbo_ = makeBuffer(materials.data(), materials.size() * sizeof(materials[0]), 0, gpuBytes_);
     statsSsbo_ = makeBuffer(options.streamed ? nullptr : scene_.triangleStats.data(),
                             scene_.triangleStats.size() * sizeof(TriangleStats), streamedFlags, gpuBytes_);

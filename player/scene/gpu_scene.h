@@ -27,7 +27,8 @@ struct DrawItem {
     int32_t material = -1;
 };
 
-// The LFD_MATERIAL_*_TEXTURE bits of a material: the textures it samples.
+// The LFD_MATERIAL_*_TEXTURE bits of a material: the textures it samples, and
+// LFD_MATERIAL_UV_TRANSFORM when a textured slot has a KHR_texture_transform.
 uint32_t materialTextureFlags(const Material& material);
 
 struct GpuSceneOptions {
@@ -77,6 +78,12 @@ public:
     // Binds the material's five textures to their units (LFD_UNIT_*; absent ones as 0, the
     // shaders branch on the material flags). material = kNone: the default material.
     void bindMaterialTextures(int32_t material) const;
+    // The material's texture transforms as MaterialGpu holds them, slot s at 2s (linear
+    // part) and 2s + 1 (offset, |det|): mvr.frag's per-draw uniform (LFD_LOC_UV_TRANSFORMS).
+    const std::array<glm::vec4, 2 * kTextureSlotCount>& uvTransforms(int32_t material) const
+    {
+        return uvTransforms_[gpuMaterialIndex(material)];
+    }
     // Index of `material` in the materials SSBO (kNone: the default material, stored last).
     uint32_t gpuMaterialIndex(int32_t material) const;
     unsigned materialBuffer() const { return materialSsbo_.get(); }
@@ -92,6 +99,7 @@ public:
 private:
     Scene scene_;
     std::vector<DrawItem> draws_;
+    std::vector<std::array<glm::vec4, 2 * kTextureSlotCount>> uvTransforms_; // by GPU material index
     std::vector<glm::mat4> sceneFromNode_;
     float anisotropy_ = 1.0f;
     std::vector<gl::Texture> textures_;

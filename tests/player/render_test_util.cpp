@@ -42,6 +42,8 @@ RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const 
     out.setup = player::makeFrameSetup(profile, fitSceneToDisplay(profile, scene.bounds, fill), request.time,
                                        request.turntablePeriod);
     out.setup.textureAnisotropy = gpu.maxAnisotropy();
+    out.setup.lighting = request.lighting;
+    out.setup.lighting.lights = player::sceneLights(scene, gpu.sceneFromNode());
     player::ViewTargets targets(profile.viewCount, profile.viewWidth, profile.viewHeight);
     player::GpuTimer timer;
     for (int i = 0; i < request.frames; ++i)

@@ -22,6 +22,9 @@ struct RenderRequest {
     int frames = 1;               // frames rendered into the same targets; the last is read back
     bool eia = false;             // also interleave the EIA (no reconstruction; gstd panel: its own) and read it back
     float aniso = 1.0f;           // the scene textures' max anisotropy (--aniso)
+    // Exposure, tone mapping and environment (frame.h); its lights are the scene's, at
+    // their nodes this frame. The default is the look without image-based lighting.
+    player::FrameLighting lighting;
 };
 
 struct RenderedFrame {

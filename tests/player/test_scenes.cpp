@@ -44,6 +44,8 @@ std::vector<uint32_t> addCube(Scene& scene)
     return indices;
 }
 
+} // namespace
+
 std::vector<uint32_t> addSphere(Scene& scene, float radius, uint32_t slices, uint32_t stacks)
 {
     VertexStreams& v = scene.vertices;
@@ -69,8 +71,6 @@ std::vector<uint32_t> addSphere(Scene& scene, float radius, uint32_t slices, uin
         }
     return indices;
 }
-
-} // namespace
 
 int32_t addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material)
 {

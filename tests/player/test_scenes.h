@@ -12,6 +12,9 @@ namespace lfd::test {
 
 // Appends a mesh of one primitive (indices absolute into scene.vertices); returns its index.
 int32_t addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material);
+// A UV sphere of `radius` about the origin (normals, tangents, uvs 0..1), vertices
+// appended to scene.vertices; returns its triangle list (absolute indices).
+std::vector<uint32_t> addSphere(Scene& scene, float radius, uint32_t slices, uint32_t stacks);
 // Appends a node instancing `mesh` with local transform T * R * S.
 void addNode(Scene& scene, int32_t mesh, const glm::vec3& t, const glm::quat& r, const glm::vec3& s);
 // What the baker computes for a finished scene: per-triangle statistics (texture sizes
