@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -145,6 +146,16 @@ inline constexpr uint32_t kTextureSlotCount = 5;
 struct TextureTransform {
     glm::mat2 linear{1.0f}; // glm column-major: linear[c][r]
     glm::vec2 offset{0.0f};
+
+    // The extension's offset, rotation (radians) and scale, as the map above.
+    static TextureTransform fromOffsetRotationScale(glm::vec2 offset, float rotation, glm::vec2 scale)
+    {
+        const float c = std::cos(rotation), s = std::sin(rotation);
+        TextureTransform t;
+        t.linear = glm::mat2(c * scale.x, -s * scale.x, s * scale.y, c * scale.y); // R * S, columns
+        t.offset = offset;
+        return t;
+    }
 
     glm::vec2 apply(glm::vec2 uv) const { return linear * uv + offset; }
     // |det linear|: how much the map scales texture-space areas (A_ts of this slot).
