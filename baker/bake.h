@@ -64,8 +64,9 @@ struct ImportedScene {
 // weights; LINEAR and STEP; CUBICSPLINE linearised with a warning), skins (JOINTS_0 /
 // WEIGHTS_0 and further sets: the four largest influences, renormalised; inverse bind
 // matrices) and morph targets (POSITION, NORMAL, TANGENT deltas): each node instance of a
-// skinned or morphed mesh becomes a Deformer with a mesh of its own. Drops streams
-// nothing uses. Errors (throw BakeError): unreadable/malformed file, Draco, required
+// skinned or morphed mesh becomes a Deformer with a mesh of its own; KHR_texture_transform
+// (Material::textureTransforms, texCoord overrides), KHR_materials_unlit and
+// KHR_lights_punctual (a Light per node instance). Drops streams nothing uses. Errors (throw BakeError): unreadable/malformed file, Draco, required
 // unsupported extensions, out-of-range accessors. Warnings name what is not supported:
 // a skinned node whose mesh has no influences, morph attributes other than the three,
 // more than four influences, non-triangle primitives, optional extensions.
