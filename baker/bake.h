@@ -64,8 +64,9 @@ struct ImportedScene {
 // weights; LINEAR and STEP; CUBICSPLINE linearised with a warning), skins (JOINTS_0 /
 // WEIGHTS_0 and further sets: the four largest influences, renormalised; inverse bind
 // matrices) and morph targets (POSITION, NORMAL, TANGENT deltas): each node instance of a
-// skinned or morphed mesh becomes a Deformer with a mesh of its own. Drops streams
-// nothing uses. Errors (throw BakeError): unreadable/malformed file, Draco, required
+// skinned or morphed mesh becomes a Deformer with a mesh of its own; KHR_texture_transform
+// (Material::textureTransforms, texCoord overrides), KHR_materials_unlit and
+// KHR_lights_punctual (a Light per node instance). Drops streams nothing uses. Errors (throw BakeError): unreadable/malformed file, Draco, required
 // unsupported extensions, out-of-range accessors. Warnings name what is not supported:
 // a skinned node whose mesh has no influences, morph attributes other than the three,
 // more than four influences, non-triangle primitives, optional extensions.
@@ -126,9 +127,17 @@ TessellationStats tessellateScene(Scene& scene, double maxEdgeWorld, const Log& 
 // each texture (scene.textures[i].width/height set). Ranges of triangles are computed on
 // up to `threads` threads (0: one per hardware thread); the result does not depend on it.
 void computeTriangleStats(Scene& scene, unsigned threads = 0);
+// One texture of a triangle's material: its stored size and the area scale of the slot's
+// texture transform (TextureTransform::areaScale), so A_ts in the texture's own uv space
+// is TEXCOORD_0's area times areaScale.
+struct TextureDensity {
+    glm::uvec2 size{0};
+    double areaScale = 1.0;
+    bool operator==(const TextureDensity&) const = default;
+};
 TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
                             const glm::vec2& uv0, const glm::vec2& uv1, const glm::vec2& uv2,
-                            const std::vector<glm::uvec2>& textureSizes);
+                            const std::vector<TextureDensity>& textures);
 
 // ---- texture_bake.cpp ------------------------------------------------------------
 class ThreadBudget; // parallel.h
@@ -153,8 +162,10 @@ Texture bakeTexture(const TextureSource& source, const TextureBakeOptions& optio
 // "Model no more than the scene needs": the largest size texture `textureIndex` needs so
 // that its texels are no finer than `detail` times the finest view pixel that can land on
 // any triangle using it (viewPixelWorld: conservative scene units per view pixel, see
-// framing.h; meshScale: meshMaxWorldScale). Returns sourceSize reduced by a power of two
-// (never enlarged); triangles without texture area are ignored.
+// framing.h; meshScale: meshMaxWorldScale). Texture area is measured in the texture's own
+// uv space (the sampling slot's texture transform applied: a tiled texture needs fewer
+// texels). Returns sourceSize reduced by a power of two (never enlarged); triangles
+// without texture area are ignored.
 glm::uvec2 resolvableTextureSize(const Scene& scene, uint32_t textureIndex, glm::uvec2 sourceSize,
                                  double viewPixelWorld, const std::vector<float>& meshScale,
                                  double detail);

@@ -3,7 +3,10 @@
 
 #include "lfd/pack_layout.h"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <iterator>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -34,7 +37,41 @@ void printSections(std::ostream& out, const PackInfo& info)
             << std::setw(10) << bytes(s.size) << (s.encoding == pack::kEncodingZstd ? "  zstd" : "") << "\n";
 }
 
+// "1 directional, 2 point" for the counts that are not zero.
+std::string countList(std::initializer_list<std::pair<size_t, const char*>> counts)
+{
+    std::string out;
+    for (const auto& [n, what] : counts)
+        if (n > 0)
+            out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+    return out;
+}
+
 } // namespace
+
+std::vector<std::string> materialAndLightLines(const Scene& scene)
+{
+    std::vector<std::string> lines;
+    size_t byType[3] = {};
+    for (const Light& l : scene.lights)
+        ++byType[std::min<size_t>(size_t(l.type), 2)];
+    if (!scene.lights.empty())
+        lines.push_back("lights: " + std::to_string(scene.lights.size()) + " (" +
+                        countList({{byType[0], "directional"}, {byType[1], "point"}, {byType[2], "spot"}}) +
+                        "; KHR_lights_punctual)");
+    size_t unlit = 0, transformed = 0;
+    for (const Material& m : scene.materials) {
+        unlit += m.unlit ? 1 : 0;
+        transformed += std::any_of(std::begin(m.textureTransforms), std::end(m.textureTransforms),
+                                   [](const TextureTransform& t) { return !t.identity(); })
+                           ? 1
+                           : 0;
+    }
+    if (unlit + transformed > 0)
+        lines.push_back("materials: " + countList({{unlit, "unlit (KHR_materials_unlit)"},
+                                                  {transformed, "with texture transforms (KHR_texture_transform)"}}));
+    return lines;
+}
 
 size_t peakResidentBytes()
 {
@@ -57,6 +94,8 @@ void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const
             << " meshes (refused: " << r.tessellation.surfaceMeshesRefused
             << "), split triangles placed by barycentric weights instead: " << r.tessellation.surfaceFallbacks
             << "\n";
+    for (const std::string& line : r.extensionLines)
+        out << "  " << line << "\n";
     out << "  max edge: " << r.maxEdgePxBefore << " view px before, " << r.maxEdgePxAfter << " after\n";
     out << "  mean edge after: " << r.meanEdgePxAfter << " view px (" << r.meanPieceEdgePx
         << " over the pieces of split triangles)\n";
@@ -101,6 +140,8 @@ void printInspectReport(std::ostream& out, const std::filesystem::path& pack, co
     out << "  " << scene.meshes.size() << " meshes, " << scene.primitives.size() << " primitives, "
         << scene.materials.size() << " materials, " << scene.textures.size() << " textures, " << scene.nodes.size()
         << " nodes, " << scene.animations.size() << " animations\n";
+    for (const std::string& line : materialAndLightLines(scene))
+        out << "  " << line << "\n";
     out << std::setprecision(4) << "  bounds: min (" << scene.bounds.min.x << ", " << scene.bounds.min.y << ", "
         << scene.bounds.min.z << ") max (" << scene.bounds.max.x << ", " << scene.bounds.max.y << ", "
         << scene.bounds.max.z << ") radius " << scene.bounds.radius << "\n";

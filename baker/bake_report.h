@@ -28,6 +28,7 @@ struct BakeReport {
     double maxEdgePxBefore = 0.0, maxEdgePxAfter = 0.0;
     double meanEdgePxAfter = 0.0, meanPieceEdgePx = 0.0;
     TessellationStats tessellation;
+    std::vector<std::string> extensionLines; // materialAndLightLines of the baked scene
     std::vector<TextureReport> textures;
     std::vector<std::pair<std::string, double>> stageSeconds;
     PackInfo pack;
@@ -37,6 +38,11 @@ struct BakeReport {
 
 // Peak resident set size of this process (VmHWM), 0 where unavailable.
 size_t peakResidentBytes();
+
+// What the scene uses of the glTF extensions the pack keeps, one line each and only when
+// present: "lights: 3 (1 directional, 1 point, 1 spot)", "materials: 1 unlit, 2 with
+// texture transforms".
+std::vector<std::string> materialAndLightLines(const Scene& scene);
 
 void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const BakeReport& report);
 void printInspectReport(std::ostream& out, const std::filesystem::path& pack, const PackInfo& info,

@@ -9,7 +9,9 @@
 #include "bake.h"
 #include "gltf_accessors.h"
 #include "gltf_deformation.h"
+#include "gltf_lights.h"
 #include "gltf_load.h"
+#include "gltf_material_extensions.h"
 #include "gltf_resources.h"
 #include "gltf_validation.h"
 
@@ -103,8 +105,6 @@ void checkExtensions(const tinygltf::Model& model, Warnings& warnings)
             continue;
         if (name == "KHR_materials_pbrSpecularGlossiness")
             warnings.add("ignores optional extension " + name + " (uses the metallic-roughness data)");
-        else if (name == "KHR_texture_transform")
-            warnings.add("ignores optional extension " + name + " (texture coordinates used untransformed)");
         else if (name == "KHR_draco_mesh_compression")
             warnings.add("ignores optional extension " + name + " (uses the uncompressed accessors)");
         else
@@ -385,6 +385,25 @@ private:
     std::vector<TextureSource> sources_;
 };
 
+// The texture info's name for messages ("baseColorTexture").
+std::string slotName(const gltf::MaterialTextureInfo& info)
+{
+    const std::string path = info.path;
+    return path.substr(path.find_last_of('.') + 1);
+}
+
+int32_t& textureField(Material& m, TextureSlot slot)
+{
+    switch (slot) {
+    case TextureSlot::BaseColor: return m.baseColorTexture;
+    case TextureSlot::MetallicRoughness: return m.metallicRoughnessTexture;
+    case TextureSlot::Normal: return m.normalTexture;
+    case TextureSlot::Occlusion: return m.occlusionTexture;
+    case TextureSlot::Emissive: break;
+    }
+    return m.emissiveTexture;
+}
+
 Material convertMaterial(const tinygltf::Model& model, size_t index, TextureTable& textures,
                          const std::string& file)
 {
@@ -433,17 +452,18 @@ Material convertMaterial(const tinygltf::Model& model, size_t index, TextureTabl
     m.occlusionStrength = unit(m.occlusionStrength);
     m.alphaCutoff = std::max(m.alphaCutoff, 0.0f);
 
-    m.baseColorTexture = textures.resolve(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, true,
-                                          label + " baseColorTexture");
-    m.metallicRoughnessTexture =
-        textures.resolve(pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord, false,
-                         label + " metallicRoughnessTexture");
-    m.normalTexture = textures.resolve(in.normalTexture.index, in.normalTexture.texCoord, false,
-                                       label + " normalTexture");
-    m.occlusionTexture = textures.resolve(in.occlusionTexture.index, in.occlusionTexture.texCoord, false,
-                                          label + " occlusionTexture");
-    m.emissiveTexture = textures.resolve(in.emissiveTexture.index, in.emissiveTexture.texCoord, true,
-                                         label + " emissiveTexture");
+    m.unlit = gltf::isUnlit(in);
+    for (const gltf::MaterialTextureInfo& info : gltf::materialTextureInfos(in)) {
+        const std::string slot = label + " " + slotName(info);
+        const int32_t texture = textures.resolve(info.index, info.texCoord, info.srgb, slot);
+        textureField(m, info.slot) = texture;
+        if (texture == kNone)
+            continue; // a transform of an unused slot would only make the pack larger
+        m.textureTransforms[uint32_t(info.slot)] = info.transform;
+        if (!std::isfinite(info.transform.areaScale()) || !std::isfinite(info.transform.offset.x) ||
+            !std::isfinite(info.transform.offset.y))
+            fail(file, slot + " KHR_texture_transform is too large for 32-bit floats");
+    }
     return m;
 }
 
@@ -1060,6 +1080,16 @@ void importNodes(const tinygltf::Model& model, const NodeOrder& order, const std
     }
 }
 
+// Step 6a: KHR_lights_punctual instances on the imported nodes.
+void importLights(const tinygltf::Model& model, const NodeOrder& order, const std::string& file, Warnings& warnings,
+                  Scene& scene)
+{
+    std::vector<std::string> dropped;
+    scene.lights = gltf::convertLights(model, order.newIndex, file, dropped);
+    for (std::string& warning : dropped)
+        warnings.add(std::move(warning));
+}
+
 // The morph weights a node starts from (3.7.2.2: the node's, else the mesh's, else 0),
 // one per target slot of the scene.
 std::vector<float> defaultWeights(const tinygltf::Model& model, size_t source, uint32_t slots)
@@ -1209,6 +1239,7 @@ void importInto(const std::filesystem::path& path, const std::string& file, cons
         fail(file, "contains no triangles to import");
 
     importNodes(model, order, meshes.meshIndex, file, scene);
+    importLights(model, order, file, warnings, scene);
     importDeformers(loaded, order, file, warnings, scene);
     importAnimations(loaded, order, file, warnings, log, scene);
     addTextures(textures, result);

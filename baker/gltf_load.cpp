@@ -329,7 +329,9 @@ std::vector<SkinJson> readSkins(const json& document, size_t nodeCount)
 
 const std::set<std::string>& supportedExtensions()
 {
-    static const std::set<std::string> names = {"KHR_mesh_quantization", "KHR_materials_emissive_strength"};
+    static const std::set<std::string> names = {"KHR_mesh_quantization", "KHR_materials_emissive_strength",
+                                                "KHR_texture_transform", "KHR_materials_unlit",
+                                                "KHR_lights_punctual"};
     return names;
 }
 

@@ -46,8 +46,9 @@ struct LoadedGltf {
 };
 
 // The extensions the baker honours when a file requires them: KHR_mesh_quantization
-// (wider accessor component types, which the accessor reader handles) and
-// KHR_materials_emissive_strength (folded into emissiveFactor).
+// (wider accessor component types, which the accessor reader handles),
+// KHR_materials_emissive_strength (folded into emissiveFactor), KHR_texture_transform and
+// KHR_materials_unlit (gltf_material_extensions.h) and KHR_lights_punctual (gltf_lights.h).
 const std::set<std::string>& supportedExtensions();
 
 // Loads `path`. When any check finds an error, throws BakeError naming `file` and the first

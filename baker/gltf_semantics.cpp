@@ -4,6 +4,7 @@
 
 #include "bake.h"
 #include "gltf_accessors.h"
+#include "gltf_material_extensions.h"
 #include "gltf_resources.h"
 
 #include <nlohmann/json.hpp>
@@ -424,28 +425,19 @@ private:
         texCoords(prim, path);
     }
 
-    // Section 3.9.2: a texture's texCoord n needs the primitive's TEXCOORD_n (a warning).
+    // Section 3.9.2: a texture's texCoord n needs the primitive's TEXCOORD_n (a warning);
+    // n is KHR_texture_transform's texCoord where the extension overrides it.
     void texCoords(const tinygltf::Primitive& prim, const std::string& path)
     {
         if (prim.material < 0 || size_t(prim.material) >= m_.materials.size())
             return;
-        const tinygltf::Material& mat = m_.materials[size_t(prim.material)];
-        const std::pair<const char*, std::pair<int, int>> slots[] = {
-            {"pbrMetallicRoughness.baseColorTexture", {mat.pbrMetallicRoughness.baseColorTexture.index,
-                                                        mat.pbrMetallicRoughness.baseColorTexture.texCoord}},
-            {"pbrMetallicRoughness.metallicRoughnessTexture",
-             {mat.pbrMetallicRoughness.metallicRoughnessTexture.index,
-              mat.pbrMetallicRoughness.metallicRoughnessTexture.texCoord}},
-            {"normalTexture", {mat.normalTexture.index, mat.normalTexture.texCoord}},
-            {"occlusionTexture", {mat.occlusionTexture.index, mat.occlusionTexture.texCoord}},
-            {"emissiveTexture", {mat.emissiveTexture.index, mat.emissiveTexture.texCoord}}};
         // "A mesh primitive MUST have the corresponding texture coordinate attributes for
         // the material to be applicable to it": the file is usable, the texture is not; the
         // baker samples it at uv (0, 0).
-        for (const auto& [slot, use] : slots)
-            if (use.first >= 0 && !prim.attributes.count("TEXCOORD_" + std::to_string(use.second)))
-                report(kWarn, at(path, "material"), "materials[" + std::to_string(prim.material) + "]." + slot +
-                                                        " uses TEXCOORD_" + std::to_string(use.second) +
+        for (const MaterialTextureInfo& info : materialTextureInfos(m_.materials[size_t(prim.material)]))
+            if (info.index >= 0 && !prim.attributes.count("TEXCOORD_" + std::to_string(info.texCoord)))
+                report(kWarn, at(path, "material"), "materials[" + std::to_string(prim.material) + "]." + info.path +
+                                                        " uses TEXCOORD_" + std::to_string(info.texCoord) +
                                                         ", which the primitive does not have: uvs set to zero");
     }
 

@@ -99,6 +99,7 @@ public:
         if (const json* v = member(root_, "scene"))
             index(*v, "scene", "scenes", kError);
         forEach("scenes", kError, [this](const json& s, const std::string& p) { scene(s, p); });
+        punctualLights(); // before the nodes that refer to them
         forEach("nodes", kError, [this](const json& n, const std::string& p) { node(n, p); });
         forEach("meshes", kError, [this](const json& m, const std::string& p) { mesh(m, p); });
         forEach("accessors", kError, [this](const json& a, const std::string& p) { accessor(a, p); });
@@ -231,6 +232,13 @@ private:
                 return nullptr;
             }
         return v;
+    }
+
+    size_t punctualLightCount() const
+    {
+        const json* lights = extensionObject(root_, "KHR_lights_punctual");
+        const json* list = lights != nullptr ? member(*lights, "lights") : nullptr;
+        return list != nullptr && list->is_array() ? list->size() : 0;
     }
 
     size_t rootCount(const char* array) const
@@ -410,6 +418,14 @@ private:
         indexMember(n, "camera", path, "cameras", kWarn);
         indexMember(n, "skin", path, "skins", kWarn);
         indexMember(n, "mesh", path, "meshes", kError);
+        if (const json* light = extensionObject(n, "KHR_lights_punctual")) {
+            const std::string p = at(at(path, "extensions"), "KHR_lights_punctual");
+            if (const json* index = member(*light, "light"))
+                indexInto(*index, at(p, "light"), "extensions.KHR_lights_punctual.lights", punctualLightCount(), kError);
+            else
+                report(kError, at(p, "light"), "required property missing");
+            common(*light, p);
+        }
         if (const json* children = array(n, "children", path, kError)) {
             if (children->empty())
                 report(kWarn, at(path, "children"), "empty array (the schema requires at least one child)");
@@ -574,6 +590,90 @@ private:
         integer(*info, "texCoord", p, kError, false, 0);
         indexMember(*info, "index", p, "textures", kError, true);
         common(*info, p);
+        if (const json* transform = extensionObject(*info, "KHR_texture_transform"))
+            textureTransform(*transform, at(at(p, "extensions"), "KHR_texture_transform"));
+    }
+
+    // The object `o.extensions.<name>`, or nullptr (a non-object one is common()'s warning).
+    static const json* extensionObject(const json& o, const char* name)
+    {
+        const json* ext = member(o, "extensions");
+        const json* value = ext != nullptr && ext->is_object() ? member(*ext, name) : nullptr;
+        return value != nullptr && value->is_object() ? value : nullptr;
+    }
+
+    // KHR_texture_transform (extension specification, "Properties"): offset and scale are
+    // two numbers, rotation a number, texCoord an index of a TEXCOORD set.
+    void textureTransform(const json& t, const std::string& path)
+    {
+        numbers(t, "offset", path, 2, kError);
+        typed(t, "rotation", path, kError, false, [](const json& v) { return v.is_number(); }, "a number");
+        numbers(t, "scale", path, 2, kError);
+        integer(t, "texCoord", path, kError, false, 0);
+        common(t, path);
+    }
+
+    // KHR_lights_punctual (extension specification, "Defining Light Sources"): the
+    // document's `lights`, each a directional, point or spot light.
+    void punctualLights()
+    {
+        const json* lights = extensionObject(root_, "KHR_lights_punctual");
+        if (lights == nullptr)
+            return;
+        const std::string path = "extensions.KHR_lights_punctual";
+        const json* list = array(*lights, "lights", path, kError, true);
+        if (list == nullptr)
+            return;
+        if (list->empty())
+            report(kWarn, at(path, "lights"), "empty array (the schema requires at least one light)");
+        for (size_t i = 0; i < list->size(); ++i) {
+            const std::string p = at(at(path, "lights"), i);
+            if (!(*list)[i].is_object())
+                report(kError, p, "expected an object, got " + describe((*list)[i]));
+            else
+                light((*list)[i], p);
+        }
+        common(*lights, path);
+    }
+
+    void light(const json& l, const std::string& path)
+    {
+        const std::optional<std::string> type = enumString(l, "type", path, {"directional", "point", "spot"}, kError,
+                                                           true, "");
+        factors(l, "color", path, 3);
+        number(l, "intensity", path, 0.0, 1e308);
+        // "range: MUST be greater than zero"; the importer treats others as unlimited.
+        if (const json* range = typed(l, "range", path, kError, false, [](const json& v) { return v.is_number(); },
+                                      "a number");
+            range != nullptr && !(range->get<double>() > 0.0))
+            report(kWarn, at(path, "range"), describe(*range) + " is not greater than 0: ignored (unlimited range)");
+        const bool spot = type && *type == "spot";
+        if (const json* cone = object(l, "spot", path, kError, spot)) {
+            if (type && !spot)
+                report(kWarn, at(path, "spot"), "given for a " + *type + " light: ignored");
+            else
+                spotCone(*cone, at(path, "spot"));
+        }
+        common(l, path);
+    }
+
+    // "0 <= innerConeAngle < outerConeAngle <= PI / 2": angles outside [0, pi/2] are
+    // clamped; an inner angle not below the outer one (compared as the f32 the pack
+    // stores) leaves no cone to fall off in.
+    void spotCone(const json& cone, const std::string& path)
+    {
+        constexpr double kQuarterTurn = 1.5707963267948966;
+        number(cone, "innerConeAngle", path, 0.0, kQuarterTurn);
+        number(cone, "outerConeAngle", path, 0.0, kQuarterTurn);
+        auto angle = [&](const char* key, double fallback) {
+            const json* v = member(cone, key);
+            return std::clamp(v != nullptr && v->is_number() ? v->get<double>() : fallback, 0.0, kQuarterTurn);
+        };
+        const double inner = angle("innerConeAngle", 0.0), outer = angle("outerConeAngle", kQuarterTurn / 2.0);
+        if (!(float(inner) < float(outer)))
+            report(kError, path, "innerConeAngle " + json(inner).dump() + " is not less than outerConeAngle " +
+                                     json(outer).dump());
+        common(cone, path);
     }
 
     void factors(const json& o, const char* key, const std::string& path, size_t n)
@@ -602,7 +702,7 @@ private:
         number(m, "alphaCutoff", path, 0.0, 1e308);
         boolean(m, "doubleSided", path, kError);
         common(m, path);
-        // KHR_materials_emissive_strength: the one material extension the baker reads.
+        // KHR_materials_unlit has no properties (an object: common()); emissive strength:
         if (const json* ext = member(m, "extensions"); ext != nullptr && ext->is_object())
             if (const json* strength = member(*ext, "KHR_materials_emissive_strength");
                 strength != nullptr && strength->is_object())

@@ -176,6 +176,7 @@ void finishReport(const ImportedScene& imported, double viewPixelWorld, const Op
     report.meanEdgePxAfter = report.tessellation.meanEdgeWorldAfter / viewPixelWorld;
     report.meanPieceEdgePx = report.tessellation.meanPieceEdgeWorld / viewPixelWorld;
     report.warnings = imported.warnings.size();
+    report.extensionLines = materialAndLightLines(imported.scene);
     report.peakRssBytes = peakResidentBytes();
     report.threads = resolveThreads(o.threads);
 }

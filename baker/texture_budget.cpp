@@ -8,10 +8,19 @@
 namespace lfd::bake {
 namespace {
 
-bool materialUsesTexture(const Material& m, int32_t t)
+// The smallest area scale (KHR_texture_transform, TextureTransform::areaScale) of the
+// slots of `m` that sample texture `t`, or a negative value when none does: the slot that
+// spreads the texture over the most uv area puts the fewest texels on a triangle, so it
+// decides how many the texture needs.
+double smallestAreaScale(const Material& m, int32_t t)
 {
-    return m.baseColorTexture == t || m.metallicRoughnessTexture == t || m.normalTexture == t ||
-           m.occlusionTexture == t || m.emissiveTexture == t;
+    double smallest = -1.0;
+    for (uint32_t s = 0; s < kTextureSlotCount; ++s)
+        if (m.texture(TextureSlot(s)) == t) {
+            const double scale = double(m.textureTransforms[s].areaScale());
+            smallest = smallest < 0.0 ? scale : std::min(smallest, scale);
+        }
+    return smallest;
 }
 
 } // namespace
@@ -26,7 +35,9 @@ glm::uvec2 resolvableTextureSize(const Scene& scene, uint32_t textureIndex, glm:
     // On a triangle of world area A (object area * scale^2) the finest view pixels cover
     // at most A / viewPixelWorld^2 pixels; the texture puts A_ts * X * Y texels on it.
     // The texture can shrink by f while texels still outnumber detail^2 * pixels on every
-    // triangle: f^2 = max_tri detail^2 * pixels / texels (paper eq. texelCount's n_tex).
+    // triangle: f^2 = max_tri detail^2 * pixels / texels (paper eq. texelCount's n_tex, A_ts
+    // in the texture's own uv space: TEXCOORD_0's area times the slot's transform's area
+    // scale, the smallest where several slots sample the texture).
     const double pixelArea = viewPixelWorld * viewPixelWorld;
     const double texelsAtSource = double(sourceSize.x) * double(sourceSize.y);
     double neededFraction = 0.0; // of the source's texel count
@@ -38,7 +49,9 @@ glm::uvec2 resolvableTextureSize(const Scene& scene, uint32_t textureIndex, glm:
             continue; // instanced by no node: never drawn
         for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p) {
             const Primitive& prim = scene.primitives[p];
-            if (prim.material < 0 || !materialUsesTexture(scene.materials[size_t(prim.material)], int32_t(textureIndex)))
+            const double areaScale =
+                prim.material < 0 ? -1.0 : smallestAreaScale(scene.materials[size_t(prim.material)], int32_t(textureIndex));
+            if (areaScale < 0.0)
                 continue;
             used = true;
             for (uint32_t i = prim.firstIndex; i < prim.firstIndex + prim.indexCount; i += 3) {
@@ -50,7 +63,7 @@ glm::uvec2 resolvableTextureSize(const Scene& scene, uint32_t textureIndex, glm:
                 const glm::dvec2 t2 = scene.vertices.uvs[scene.indices[i + 2]];
                 const double areaWorld = 0.5 * glm::length(glm::cross(p1 - p0, p2 - p0)) * scale * scale;
                 const glm::dvec2 e1 = t1 - t0, e2 = t2 - t0;
-                const double areaTexture = 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x);
+                const double areaTexture = 0.5 * std::abs(e1.x * e2.y - e1.y * e2.x) * areaScale;
                 if (areaTexture <= 0.0 || !std::isfinite(areaWorld))
                     continue;
                 const double pixels = areaWorld / pixelArea;

@@ -6,7 +6,9 @@
 // and the ratio A_ts / A_ws that the player multiplies by a view pixel's projected area
 // to get size_vpuv (eqs. minVPUVSize / maxVPUVSize). All of it is view independent, so
 // the baker computes it once; A_ws is in object units^2 (the player applies the node's
-// area scale).
+// area scale). A_ts of texture t is the triangle's area in t's own uv space: TEXCOORD_0's
+// area times the area scale of the slot's KHR_texture_transform (formats/README.md
+// "TSTA"); the stored areaTexture and texPerWorld stay in TEXCOORD_0's space.
 
 #include "bake.h"
 #include "parallel.h"
@@ -27,39 +29,38 @@ constexpr size_t kTrianglesPerRange = size_t(1) << 16;
 glm::dvec3 toDouble(const glm::vec3& v) { return glm::dvec3(v); }
 glm::dvec2 toDouble(const glm::vec2& v) { return glm::dvec2(v); }
 
-// Distinct texture sizes of a material: every slot that is set, each texture once,
+// The textures of a material as the statistics see them: one entry per slot that is set,
+// with that slot's area scale (a texture in two slots counts once per distinct scale);
 // textures whose size is still unknown (width or height 0) left out.
-std::vector<glm::uvec2> materialTextureSizes(const Scene& scene, int32_t materialIndex)
+std::vector<TextureDensity> materialTextureDensities(const Scene& scene, int32_t materialIndex)
 {
-    std::vector<glm::uvec2> sizes;
+    std::vector<TextureDensity> densities;
     if (materialIndex == kNone)
-        return sizes;
+        return densities;
     if (materialIndex < 0 || size_t(materialIndex) >= scene.materials.size())
         throw BakeError("triangle stats: material " + std::to_string(materialIndex) + " does not exist");
     const Material& material = scene.materials[size_t(materialIndex)];
-    std::vector<int32_t> slots = {material.baseColorTexture, material.metallicRoughnessTexture,
-                                  material.normalTexture, material.occlusionTexture,
-                                  material.emissiveTexture};
-    std::sort(slots.begin(), slots.end());
-    slots.erase(std::unique(slots.begin(), slots.end()), slots.end());
-    for (int32_t slot : slots) {
-        if (slot == kNone)
+    for (uint32_t s = 0; s < kTextureSlotCount; ++s) {
+        const int32_t t = material.texture(TextureSlot(s));
+        if (t == kNone)
             continue;
-        if (slot < 0 || size_t(slot) >= scene.textures.size())
-            throw BakeError("triangle stats: material '" + material.name + "' uses texture " +
-                            std::to_string(slot) + " which does not exist");
-        const Texture& texture = scene.textures[size_t(slot)];
-        if (texture.width > 0 && texture.height > 0)
-            sizes.emplace_back(texture.width, texture.height);
+        if (t < 0 || size_t(t) >= scene.textures.size())
+            throw BakeError("triangle stats: material '" + material.name + "' uses texture " + std::to_string(t) +
+                            " which does not exist");
+        const Texture& texture = scene.textures[size_t(t)];
+        const TextureDensity density{{texture.width, texture.height}, double(material.textureTransforms[s].areaScale())};
+        if (texture.width > 0 && texture.height > 0 &&
+            std::find(densities.begin(), densities.end(), density) == densities.end())
+            densities.push_back(density);
     }
-    return sizes;
+    return densities;
 }
 
 } // namespace
 
 TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm::vec3& p2,
                             const glm::vec2& uv0, const glm::vec2& uv1, const glm::vec2& uv2,
-                            const std::vector<glm::uvec2>& textureSizes)
+                            const std::vector<TextureDensity>& textures)
 {
     TriangleStats stats;
 
@@ -74,7 +75,7 @@ TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm:
     else
         stats.areaWorld = float(areaWorld);
 
-    if (textureSizes.empty())
+    if (textures.empty())
         return stats; // untextured: texture statistics stay 0
     stats.flags |= kTriangleTextured;
 
@@ -86,10 +87,10 @@ TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm:
         areaTexture = 0.0;
     stats.areaTexture = float(areaTexture);
 
-    // Compute n_tex = max_t A_ts * X_t * Y_t (eq. texelCount).
+    // Compute n_tex = max_t A_ts * X_t * Y_t (eq. texelCount), A_ts in t's uv space.
     double texelCount = 0.0;
-    for (const glm::uvec2& size : textureSizes)
-        texelCount = std::max(texelCount, areaTexture * double(size.x) * double(size.y));
+    for (const TextureDensity& t : textures)
+        texelCount = std::max(texelCount, areaTexture * t.areaScale * double(t.size.x) * double(t.size.y));
     stats.texelCount = float(texelCount);
 
     if (degenerate)
@@ -120,11 +121,11 @@ void computeTriangleStats(Scene& scene, unsigned threads)
             throw BakeError("triangle stats: primitive " + std::to_string(p) + " has an invalid index range");
     }
 
-    // Texture sizes per material (computed once; kNone maps to the last entry: none).
-    std::vector<std::vector<glm::uvec2>> sizesOf(scene.materials.size() + 1);
+    // Texture densities per material (computed once; kNone maps to the last entry: none).
+    std::vector<std::vector<TextureDensity>> sizesOf(scene.materials.size() + 1);
     for (size_t m = 0; m < scene.materials.size(); ++m)
-        sizesOf[m] = materialTextureSizes(scene, int32_t(m));
-    auto sizesFor = [&](int32_t material) -> const std::vector<glm::uvec2>& {
+        sizesOf[m] = materialTextureDensities(scene, int32_t(m));
+    auto sizesFor = [&](int32_t material) -> const std::vector<TextureDensity>& {
         if (material == kNone)
             return sizesOf.back();
         if (material < 0 || size_t(material) >= scene.materials.size())

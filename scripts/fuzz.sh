@@ -46,7 +46,8 @@ for key, mime in (("buffers", "application/octet-stream"), ("images", "image/png
 json.dump(doc, open(dst, "w"), separators=(",", ":"))
 EOF
 done
-cp tests/data/golden_v1.lfdpack tests/data/golden_v2.lfdpack "$seeds/pack/"
+# The golden packs: every section of each format version, MEXT and LGHT included.
+cp tests/data/golden_*.lfdpack "$seeds/pack/"
 cp tests/data/gltf/*.gltf "$seeds/gltf/"
 [ -d tests/data/fuzz/gltf ] && cp tests/data/fuzz/gltf/* "$seeds/gltf/"
 [ -d tests/data/fuzz/pack ] && cp tests/data/fuzz/pack/* "$seeds/pack/"

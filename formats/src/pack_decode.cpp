@@ -34,8 +34,10 @@ public:
         decodePrimitives(scene.primitives);
         decodeMeshes(scene.meshes);
         decodeMaterials(scene.materials);
+        decodeMaterialExtensions(scene.materials);
         decodeTextures(scene.textures);
         decodeNodes(scene.nodes);
+        decodeLights(scene.lights);
         decodeAnimations(scene.animations);
         decodeDeformation(scene);
         return scene;
@@ -175,6 +177,32 @@ private:
         }
     }
 
+    // MEXT (optional): one record per MATL record, in the same order.
+    void decodeMaterialExtensions(std::vector<Material>& materials) const
+    {
+        const SectionEntry* e = table_.find(kTagMaterialExtensions);
+        if (!e)
+            return;
+        if (e->count != materials.size())
+            fail("'MEXT' holds " + std::to_string(e->count) + " records for " + std::to_string(materials.size()) +
+                 " materials");
+        for (uint64_t i = 0; i < e->count; ++i) {
+            const auto r = record<MaterialExtensionRecord>(*e, i);
+            const std::string where = "material " + std::to_string(i) + " extensions";
+            if (r.flags & ~kMaterialUnlit)
+                fail(where + ": unknown flags " + std::to_string(r.flags));
+            reserved(uint64_t(r.reserved[0]) | r.reserved[1] | r.reserved[2], where);
+            Material& m = materials[size_t(i)];
+            m.unlit = (r.flags & kMaterialUnlit) != 0;
+            for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+                const UvTransformRecord& uv = r.uvTransforms[slot];
+                reserved(uint64_t(uv.reserved[0]) | uv.reserved[1], where);
+                std::memcpy(&m.textureTransforms[slot].linear[0][0], uv.linear, sizeof uv.linear);
+                std::memcpy(&m.textureTransforms[slot].offset, uv.offset, sizeof uv.offset);
+            }
+        }
+    }
+
     // Textures own consecutive runs of MIPS and TEXL, in order, covering both sections.
     void decodeTextures(std::vector<Texture>& textures)
     {
@@ -308,6 +336,29 @@ private:
             n.rotation = glm::quat(r.rotation[3], r.rotation[0], r.rotation[1], r.rotation[2]);
             std::memcpy(&n.scale, r.scale, sizeof r.scale);
             reserved(uint64_t(r.reserved[0]) | r.reserved[1], "node " + std::to_string(i));
+        }
+    }
+
+    // LGHT (optional); types, nodes and values are validateScene's.
+    void decodeLights(std::vector<Light>& lights)
+    {
+        const SectionEntry* e = table_.find(kTagLights);
+        if (!e)
+            return;
+        lights.resize(size_t(e->count));
+        for (uint64_t i = 0; i < e->count; ++i) {
+            const auto r = record<LightRecord>(*e, i);
+            const std::string where = "light " + std::to_string(i);
+            Light& l = lights[size_t(i)];
+            l.name = string(r.name, where);
+            l.type = LightType(r.type);
+            l.node = r.node;
+            std::memcpy(&l.color, r.color, sizeof r.color);
+            l.intensity = r.intensity;
+            l.range = r.range;
+            l.innerConeAngle = r.innerConeAngle;
+            l.outerConeAngle = r.outerConeAngle;
+            reserved(r.reserved, where);
         }
     }
 

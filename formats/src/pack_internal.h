@@ -45,6 +45,8 @@ enum class TexelPolicy {
 void validateScene(const Scene& scene, const std::string& name, TexelPolicy texels);
 // The rules of skins, morph deltas, deformers and weight channels (part of validateScene).
 void validateDeformation(const Scene& scene, const std::string& name);
+// The rules of lights (part of validateScene).
+void validateLights(const Scene& scene, const std::string& name);
 
 // The header and section table after the structural pass: bounds, alignment, overlaps,
 // padding, checksums and per-section count/stride/version rules all hold.

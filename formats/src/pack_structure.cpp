@@ -48,6 +48,8 @@ constexpr KnownSection kKnownSections[] = {
     {kTagSkinJoints, sizeof(SkinJointRecord), false, false},
     {kTagDeformers, sizeof(DeformerRecord), false, false},
     {kTagDeformerWeights, 4, false, false},
+    {kTagMaterialExtensions, sizeof(MaterialExtensionRecord), false, false},
+    {kTagLights, sizeof(LightRecord), false, false},
 };
 
 // The newest layout version of a known section (ACHN's version 2 adds Weights channels).

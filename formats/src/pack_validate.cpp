@@ -44,6 +44,7 @@ public:
         checkAnimations();
         checkBoundsAndSettings();
         validateDeformation(scene_, name_);
+        validateLights(scene_, name_);
     }
 
 private:
@@ -137,6 +138,9 @@ private:
                 fail(where + "factors are not finite");
             if (uint32_t(mat.alphaMode) > uint32_t(AlphaMode::Blend))
                 fail(where + "invalid alpha mode " + std::to_string(uint32_t(mat.alphaMode)));
+            for (const TextureTransform& t : mat.textureTransforms)
+                if (!finite(t.linear[0]) || !finite(t.linear[1]) || !finite(t.offset))
+                    fail(where + "texture transform is not finite");
             const struct {
                 const char* slot;
                 int32_t ref;

@@ -18,6 +18,7 @@ namespace {
 
 static_assert(sizeof(glm::vec2) == 8 && sizeof(glm::vec3) == 12 && sizeof(glm::vec4) == 16,
               "vertex streams are written straight from glm arrays");
+static_assert(sizeof(glm::mat2) == 16, "MEXT uv maps are copied from glm::mat2 (column-major)");
 static_assert(offsetof(TriangleStats, flags) == 20, "TSTA is written straight from lfd::TriangleStats");
 
 class MemorySink final : public Sink {
@@ -197,6 +198,9 @@ public:
         std::vector<uint8_t> animations = encodeAnimations(channels);
         std::vector<uint8_t> primitives = encodePrimitives();
         std::vector<uint8_t> skins = encodeSkins();
+        // Optional sections add their names last, so a pack without them keeps its strings.
+        std::vector<uint8_t> materialExtensions = encodeMaterialExtensions();
+        std::vector<uint8_t> lights = encodeLights();
 
         const VertexStreams& v = scene_.vertices;
         addBytes(kTagBakeSettings, sizeof(BakeSettingsRecord), std::move(bake));
@@ -211,7 +215,11 @@ public:
         addBytes(kTagPrimitives, sizeof(PrimitiveRecord), std::move(primitives));
         addBytes(kTagMeshes, sizeof(MeshRecord), std::move(meshes));
         addBytes(kTagMaterials, sizeof(MaterialRecord), std::move(materials));
+        if (!materialExtensions.empty())
+            addBytes(kTagMaterialExtensions, sizeof(MaterialExtensionRecord), std::move(materialExtensions));
         addBytes(kTagNodes, sizeof(NodeRecord), std::move(nodes));
+        if (!lights.empty())
+            addBytes(kTagLights, sizeof(LightRecord), std::move(lights));
         addBytes(kTagAnimations, sizeof(AnimationRecord), std::move(animations));
         addBytes(kTagChannels, sizeof(ChannelRecord), std::move(channels));
         if (hasWeightChannels())
@@ -345,6 +353,45 @@ private:
             r.occlusionTexture = m.occlusionTexture;
             r.emissiveTexture = m.emissiveTexture;
             r.name = strings_.add(m.name);
+            records.push_back(r);
+        }
+        return recordBytes(records);
+    }
+
+    // MEXT: one record per material when some material is unlit or has a texture
+    // transform; nothing otherwise (the section is absent).
+    std::vector<uint8_t> encodeMaterialExtensions() const
+    {
+        const auto& materials = scene_.materials;
+        if (std::none_of(materials.begin(), materials.end(), [](const Material& m) { return m.hasExtensions(); }))
+            return {};
+        std::vector<MaterialExtensionRecord> records;
+        for (const Material& m : materials) {
+            MaterialExtensionRecord r{};
+            r.flags = m.unlit ? kMaterialUnlit : 0;
+            for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+                const TextureTransform& t = m.textureTransforms[slot];
+                std::memcpy(r.uvTransforms[slot].linear, &t.linear[0][0], sizeof r.uvTransforms[slot].linear);
+                std::memcpy(r.uvTransforms[slot].offset, &t.offset, sizeof r.uvTransforms[slot].offset);
+            }
+            records.push_back(r);
+        }
+        return recordBytes(records);
+    }
+
+    std::vector<uint8_t> encodeLights()
+    {
+        std::vector<LightRecord> records;
+        for (const Light& l : scene_.lights) {
+            LightRecord r{};
+            r.type = uint32_t(l.type);
+            r.node = l.node;
+            std::memcpy(r.color, &l.color, sizeof r.color);
+            r.intensity = l.intensity;
+            r.range = l.range;
+            r.innerConeAngle = l.innerConeAngle;
+            r.outerConeAngle = l.outerConeAngle;
+            r.name = strings_.add(l.name);
             records.push_back(r);
         }
         return recordBytes(records);

@@ -317,6 +317,42 @@ TEST_F(BakeCli, BakingTwiceGivesByteIdenticalPacks)
     EXPECT_GE(baked, 3u);
 }
 
+// The pack keeps lights, unlit materials and texture transforms, and both reports name them.
+TEST_F(BakeCli, BakesLightsUnlitMaterialsAndTextureTransforms)
+{
+    const fs::path input = fs::path(LFD_TEST_DATA) / "gltf" / "materials_and_lights.gltf";
+    const fs::path pack = dir_ / "materials_and_lights.lfdpack";
+    const RunResult bake = run(kBake + " " + quoted(input) + " -o " + quoted(pack));
+    ASSERT_EQ(bake.exitCode, 0) << bake.out;
+    const std::string lights = "lights: 4 (1 directional, 1 point, 2 spot; KHR_lights_punctual)";
+    const std::string materials =
+        "materials: 1 unlit (KHR_materials_unlit), 1 with texture transforms (KHR_texture_transform)";
+    EXPECT_NE(bake.out.find("  " + lights + "\n"), std::string::npos) << bake.out;
+    EXPECT_NE(bake.out.find("  " + materials + "\n"), std::string::npos) << bake.out;
+    EXPECT_NE(bake.out.find("light 0 is on a node outside the imported scene: dropped"), std::string::npos);
+
+    const RunResult inspect = run(kBake + " --inspect " + quoted(pack));
+    ASSERT_EQ(inspect.exitCode, 0) << inspect.out;
+    EXPECT_NE(inspect.out.find("  " + lights + "\n"), std::string::npos) << inspect.out;
+    EXPECT_NE(inspect.out.find("  " + materials + "\n"), std::string::npos) << inspect.out;
+    EXPECT_NE(inspect.out.find("MEXT"), std::string::npos) << inspect.out;
+    EXPECT_NE(inspect.out.find("LGHT"), std::string::npos) << inspect.out;
+
+    const lfd::Scene scene = lfd::readPack(pack);
+    ASSERT_EQ(scene.lights.size(), 4u);
+    EXPECT_TRUE(scene.materials[1].unlit);
+    EXPECT_NEAR(scene.materials[0].transform(lfd::TextureSlot::BaseColor).areaScale(), 8.0f, 1e-5f);
+
+    // A scene without them: no such lines, no such sections.
+    const fs::path car = dir_ / "car_plain.lfdpack";
+    ASSERT_EQ(run(kBake + " " + quoted(dir_ / "samples" / "car" / "car.gltf") + " -o " + quoted(car) + " --quiet").exitCode,
+              0);
+    const RunResult plain = run(kBake + " --inspect " + quoted(car));
+    EXPECT_EQ(plain.out.find("lights:"), std::string::npos) << plain.out;
+    EXPECT_EQ(plain.out.find("materials:"), std::string::npos) << plain.out;
+    EXPECT_EQ(plain.out.find("MEXT"), std::string::npos) << plain.out;
+}
+
 TEST_F(BakeCli, BakesThirdPartyScenes)
 {
     const fs::path scenes = LFD_SHARED_SCENES;

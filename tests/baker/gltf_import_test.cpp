@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <set>
 #include <unistd.h>
 
@@ -327,6 +328,47 @@ TEST(GltfImport, InterleavedNormalizedAndSparseAccessors)
     EXPECT_EQ(r.scene.indices, (std::vector<uint32_t>{0, 1, 2}));
 }
 
+// make_cases.py materials_and_lights(): the three extensions, required.
+TEST(GltfImport, TextureTransformUnlitAndLightsOfAHandMadeFile)
+{
+    const ImportedScene r = import(kCases / "materials_and_lights.gltf");
+    expectWellFormed(r);
+    const lfd::Scene& s = r.scene;
+    ASSERT_EQ(s.materials.size(), 2u);
+    const lfd::Material& tiled = s.materials[0];
+    EXPECT_FALSE(tiled.unlit);
+    const lfd::TextureTransform& base = tiled.transform(lfd::TextureSlot::BaseColor);
+    EXPECT_NEAR(base.areaScale(), 8.0f, 1e-5f);
+    EXPECT_EQ(base.offset, glm::vec2(0.5f, 0.25f));
+    EXPECT_NEAR(base.linear[0][0], 4.0f * std::cos(0.5f), 1e-6f);
+    EXPECT_NEAR(base.linear[1][0], 2.0f * std::sin(0.5f), 1e-6f);
+    EXPECT_NE(tiled.normalTexture, lfd::kNone); // texCoord 1 overridden to 0
+    EXPECT_EQ(tiled.transform(lfd::TextureSlot::Normal).offset, glm::vec2(0.0f, 0.5f));
+    EXPECT_TRUE(s.materials[1].unlit);
+    EXPECT_TRUE(s.materials[1].transform(lfd::TextureSlot::BaseColor).identity());
+
+    // Nodes: quad, sun node, bulb node, spot left, spot right (the unused sun's node is out).
+    ASSERT_EQ(s.nodes.size(), 5u);
+    ASSERT_EQ(s.lights.size(), 4u);
+    const char* nodes[] = {"sun node", "bulb node", "spot left", "spot right"};
+    const lfd::LightType types[] = {lfd::LightType::Directional, lfd::LightType::Point, lfd::LightType::Spot,
+                                    lfd::LightType::Spot};
+    for (size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(s.nodes[s.lights[i].node].name, nodes[i]);
+        EXPECT_EQ(s.lights[i].type, types[i]);
+    }
+    EXPECT_EQ(s.lights[1].name, "light 1");
+    EXPECT_EQ(s.lights[1].range, 4.0f);
+    EXPECT_EQ(s.lights[3].innerConeAngle, 0.2f);
+    EXPECT_EQ(s.lights[3].outerConeAngle, 0.6f);
+    EXPECT_EQ(s.nodes[s.lights[0].node].parent, 0);
+    // The dropped light and the generated tangents, nothing about the extensions.
+    EXPECT_EQ(r.warnings.size(), 2u);
+    EXPECT_TRUE(hasWarning(r, "nodes[5].extensions.KHR_lights_punctual.light: light 0 is on a node outside the "
+                              "imported scene: dropped"));
+    EXPECT_TRUE(hasWarning(r, "has a normal map but no TANGENT"));
+}
+
 TEST(GltfImport, BrokenHandMadeFilesAreRejected)
 {
     expectRejected(kCases / "sheared_matrix.gltf", "nodes[0].matrix: has shear");
@@ -443,7 +485,7 @@ TEST_F(AssimpModels, ValidFilesImportWithKnownCounts)
         {"glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf", 12, 24, 0, nullptr}, // morphed: skin_bake_test
         {"simple_skin/simple_skin.gltf", 8, 24, 0, "no normals"}, // skinned: skin_bake_test
         {"issue_3269/texcoord_crash.gltf", 10, 20, 1, "uses TEXCOORD_0, which the primitive does not have"},
-        {"textureTransform/TextureTransformTest.gltf", 18, 54, 5, "KHR_texture_transform"},
+        {"textureTransform/TextureTransformTest.gltf", 18, 54, 5, "no normals"}, // transforms: next test
         // Schema violations a sensible bake survives: warnings naming the JSON path (the
         // rest of each file is a valid box). The refused ones are in the next test.
         {"wrongTypes/badExtension.gltf", 12, 24, 1,
@@ -462,6 +504,27 @@ TEST_F(AssimpModels, ValidFilesImportWithKnownCounts)
         else
             EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
     }
+}
+
+// The Khronos TextureTransformTest model: offset, rotation and scale per material.
+TEST_F(AssimpModels, TextureTransformTestModel)
+{
+    const ImportedScene r = import(kAssimp / "textureTransform/TextureTransformTest.gltf");
+    std::map<std::string, lfd::TextureTransform> byName;
+    for (const lfd::Material& m : r.scene.materials)
+        byName[m.name] = m.transform(lfd::TextureSlot::BaseColor);
+    ASSERT_EQ(byName.size(), 9u);
+    EXPECT_EQ(byName["Offset U"].offset, glm::vec2(0.5f, 0.0f));
+    EXPECT_EQ(byName["Offset U"].linear, glm::mat2(1.0f));
+    EXPECT_EQ(byName["Offset UV"].offset, glm::vec2(0.5f, 0.5f));
+    EXPECT_NEAR(byName["Rotation"].linear[1][0], std::sin(0.39269908f), 1e-6f); // u' = u cos r + v sin r
+    EXPECT_NEAR(byName["Rotation"].linear[0][1], -std::sin(0.39269908f), 1e-6f);
+    EXPECT_NEAR(byName["Scale"].areaScale(), 2.25f, 1e-6f);
+    EXPECT_EQ(byName["All"].offset, glm::vec2(-0.2f, -0.1f));
+    EXPECT_NEAR(byName["All"].areaScale(), 2.25f, 1e-5f);
+    for (const char* plain : {"Correct", "NotSupported", "Error"})
+        EXPECT_TRUE(byName[plain].identity()) << plain;
+    EXPECT_FALSE(hasWarning(r, "KHR_texture_transform"));
 }
 
 TEST_F(AssimpModels, TextureSourcesOfExternalEmbeddedAndBinaryFiles)
@@ -634,6 +697,19 @@ TEST_F(SharedScenes, CesiumMilkTruckAnimationAndInstancedWheels)
             wheelNodes.insert(uint32_t(n));
         }
     EXPECT_EQ(wheelUsers, 2u);
+
+    // KHR_lights_punctual: the head light (a child of the camera node) and the key light.
+    ASSERT_EQ(s.lights.size(), 2u);
+    for (const lfd::Light& l : s.lights) {
+        EXPECT_EQ(l.type, lfd::LightType::Directional);
+        EXPECT_EQ(l.color, glm::vec3(1.0f, float(0.9333333333333333), float(0.8666666666666667)));
+    }
+    EXPECT_EQ(s.lights[0].name, "headLight");
+    EXPECT_EQ(s.nodes[s.lights[0].node].name, "headLightNode");
+    EXPECT_EQ(s.lights[0].intensity, 0.25f);
+    EXPECT_EQ(s.lights[1].name, "keyLight");
+    EXPECT_EQ(s.nodes[s.lights[1].node].name, "keyLightNode");
+    EXPECT_FALSE(hasWarning(r, "KHR_lights_punctual"));
 
     ASSERT_EQ(s.animations.size(), 1u);
     ASSERT_EQ(s.animations[0].channels.size(), 2u);

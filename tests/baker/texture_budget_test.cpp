@@ -73,4 +73,47 @@ TEST(TextureBudget, TinyTrianglesCanReduceToOneTexel)
     EXPECT_EQ(resolvableTextureSize(s, 0, {256, 128}, 0.01, {1.0f}, 2.0), glm::uvec2(1, 1));
 }
 
+// KHR_texture_transform: the texture's texels per triangle are counted in its own uv
+// space, so a tiled texture needs fewer of them. Hand-worked on the unit quad: scale
+// (2, 2) puts 4x the texels on each triangle, so the fraction needed at detail 2 drops
+// from 0.0381 to 0.0095 -> 128^2 (0.0156), as detail 1 did without the transform.
+TEST(TextureBudget, TiledTextureNeedsFewerTexels)
+{
+    lfd::Scene s = texturedUnitQuad();
+    s.materials[0].textureTransforms[0] = lfd::TextureTransform::fromOffsetRotationScale({0.5f, 0.0f}, 0.0f, {2.0f, 2.0f});
+    EXPECT_EQ(resolvableTextureSize(s, 0, {1024, 1024}, 0.01, {1.0f}, 2.0), glm::uvec2(128, 128));
+}
+
+// The same as the uvs transformed by hand, for transforms that enlarge, shrink, rotate
+// and mirror.
+TEST(TextureBudget, TransformMatchesUvsTransformedByHand)
+{
+    for (const lfd::TextureTransform& transform :
+         {lfd::TextureTransform::fromOffsetRotationScale({0.25f, 0.5f}, 0.6f, {3.0f, 1.5f}),
+          lfd::TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, -1.0f, {0.3f, -0.4f}),
+          lfd::TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, 2.0f, {1.0f, 1.0f})}) {
+        lfd::Scene viaMaterial = texturedUnitQuad();
+        viaMaterial.materials[0].textureTransforms[0] = transform;
+        lfd::Scene byHand = texturedUnitQuad();
+        for (glm::vec2& uv : byHand.vertices.uvs)
+            uv = transform.apply(uv);
+        for (const double pixel : {0.01, 0.003, 0.0005})
+            EXPECT_EQ(resolvableTextureSize(viaMaterial, 0, {1024, 512}, pixel, {1.0f}, 2.0),
+                      resolvableTextureSize(byHand, 0, {1024, 512}, pixel, {1.0f}, 2.0))
+                << pixel;
+    }
+}
+
+// A texture sampled by two slots needs what the sparser use needs: the base colour tiled
+// 4x in area, the occlusion slot untransformed -> the untransformed size (256^2).
+TEST(TextureBudget, TextureInTwoSlotsFollowsTheSlotWithFewestTexels)
+{
+    lfd::Scene s = texturedUnitQuad();
+    s.materials[0].occlusionTexture = 0;
+    s.materials[0].textureTransforms[0] = lfd::TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, 0.0f, {2.0f, 2.0f});
+    EXPECT_EQ(resolvableTextureSize(s, 0, {1024, 1024}, 0.01, {1.0f}, 2.0), glm::uvec2(256, 256));
+    s.materials[0].textureTransforms[3] = lfd::TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, 0.0f, {4.0f, 1.0f});
+    EXPECT_EQ(resolvableTextureSize(s, 0, {1024, 1024}, 0.01, {1.0f}, 2.0), glm::uvec2(128, 128));
+}
+
 } // namespace

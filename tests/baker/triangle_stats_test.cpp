@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 namespace lfd::bake {
 namespace {
@@ -17,7 +18,7 @@ TEST(TriangleStats, RightTriangleTwoTextures)
     // n_tex = max(0.125 * 256 * 256, 0.125 * 1024 * 512) = max(8192, 65536) = 65536
     // size_uv = 1 / 65536, A_ts / A_ws = 0.125
     const TriangleStats s = triangleStats({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {0, 0}, {0.5f, 0},
-                                          {0, 0.5f}, {{256, 256}, {1024, 512}});
+                                          {0, 0.5f}, {{{256, 256}}, {{1024, 512}}});
     EXPECT_FLOAT_EQ(s.areaWorld, 1.0f);
     EXPECT_FLOAT_EQ(s.areaTexture, 0.125f);
     EXPECT_FLOAT_EQ(s.texelCount, 65536.0f);
@@ -29,7 +30,7 @@ TEST(TriangleStats, RightTriangleTwoTextures)
 TEST(TriangleStats, TextureOrderDoesNotMatter)
 {
     const TriangleStats a = triangleStats({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {0, 0}, {0.5f, 0},
-                                          {0, 0.5f}, {{1024, 512}, {256, 256}});
+                                          {0, 0.5f}, {{{1024, 512}}, {{256, 256}}});
     EXPECT_FLOAT_EQ(a.texelCount, 65536.0f);
 }
 
@@ -50,7 +51,7 @@ TEST(TriangleStats, DegenerateTriangleHasZeroStats)
 {
     // Collinear corners: A_ws = 0. The uv triangle still has A_ts = 0.5, n_tex = 0.5 * 16 * 16.
     const TriangleStats s =
-        triangleStats({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {0, 0}, {1, 0}, {0, 1}, {{16, 16}});
+        triangleStats({0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {0, 0}, {1, 0}, {0, 1}, {{{16, 16}}});
     EXPECT_EQ(s.flags, uint32_t(kTriangleTextured | kTriangleDegenerate));
     EXPECT_EQ(s.areaWorld, 0.0f);
     EXPECT_EQ(s.sizeUv, 0.0f);
@@ -71,7 +72,7 @@ TEST(TriangleStats, UvDegenerateTriangleIsOneTexel)
     // All uvs equal: A_ts = 0, n_tex = 0; the triangle shows one texel's colour, so it is
     // treated as one texel: size_uv = A_ws / 1 = 0.5 * |(1,0,0) x (0,1,0)| = 0.5.
     const TriangleStats s = triangleStats({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.3f, 0.7f},
-                                          {0.3f, 0.7f}, {0.3f, 0.7f}, {{512, 512}});
+                                          {0.3f, 0.7f}, {0.3f, 0.7f}, {{{512, 512}}});
     EXPECT_EQ(s.flags, uint32_t(kTriangleTextured));
     EXPECT_FLOAT_EQ(s.areaWorld, 0.5f);
     EXPECT_EQ(s.areaTexture, 0.0f);
@@ -85,7 +86,7 @@ TEST(TriangleStats, SubTexelTriangleClampsToOneTexel)
     // A_ts = 0.5 * (1/512)^2 = 1/524288; n_tex = 65536 / 524288 = 0.125 < 1 -> size_uv = A_ws.
     const float d = 1.0f / 512.0f;
     const TriangleStats s =
-        triangleStats({0, 0, 0}, {0, 0, 2}, {0, 2, 0}, {0, 0}, {d, 0}, {0, d}, {{256, 256}});
+        triangleStats({0, 0, 0}, {0, 0, 2}, {0, 2, 0}, {0, 0}, {d, 0}, {0, d}, {{{256, 256}}});
     EXPECT_FLOAT_EQ(s.texelCount, 0.125f);
     EXPECT_FLOAT_EQ(s.areaWorld, 2.0f);
     EXPECT_FLOAT_EQ(s.sizeUv, 2.0f);
@@ -98,7 +99,7 @@ TEST(TriangleStats, TiltedTriangleIn3D)
     // A_ws = 0.5 * sqrt(3) = 0.8660254. A_ts = 0.5 (unit right triangle in uv).
     // n_tex = 0.5 * 64 * 32 = 1024; size_uv = 0.8660254 / 1024; A_ts / A_ws = 0.5773503.
     const TriangleStats s =
-        triangleStats({1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0}, {1, 0}, {0, 1}, {{64, 32}});
+        triangleStats({1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, 0}, {1, 0}, {0, 1}, {{{64, 32}}});
     EXPECT_NEAR(s.areaWorld, 0.8660254f, 1e-6f);
     EXPECT_FLOAT_EQ(s.areaTexture, 0.5f);
     EXPECT_FLOAT_EQ(s.texelCount, 1024.0f);
@@ -106,7 +107,7 @@ TEST(TriangleStats, TiltedTriangleIn3D)
     EXPECT_NEAR(s.texPerWorld, 0.5773503f, 1e-6f);
     // Winding and uv orientation do not change areas.
     const TriangleStats r =
-        triangleStats({1, 0, 0}, {0, 0, 1}, {0, 1, 0}, {0, 0}, {0, 1}, {1, 0}, {{64, 32}});
+        triangleStats({1, 0, 0}, {0, 0, 1}, {0, 1, 0}, {0, 0}, {0, 1}, {1, 0}, {{{64, 32}}});
     EXPECT_FLOAT_EQ(r.areaWorld, s.areaWorld);
     EXPECT_FLOAT_EQ(r.areaTexture, s.areaTexture);
 }
@@ -191,6 +192,132 @@ TEST(TriangleStats, BadSceneThrowsBakeError)
     Scene badRange = statsScene();
     badRange.primitives[1].indexCount = 9;
     EXPECT_THROW(computeTriangleStats(badRange), BakeError);
+}
+
+// KHR_texture_transform: A_ts of a texture is measured in its own uv space, TEXCOORD_0's
+// area times the slot's area scale; areaTexture and texPerWorld stay in TEXCOORD_0's.
+TEST(TriangleStats, SlotAreaScaleMultipliesTheTexelCount)
+{
+    // A_ts (TEXCOORD_0) = 0.125, A_ws = 1. Base colour 256^2 tiled with area scale 6:
+    // 0.125 * 6 * 65536 = 49152; normal map 1024x512 scaled to a quarter of the area:
+    // 0.125 * 0.25 * 524288 = 16384. n_tex = 49152.
+    const TriangleStats s = triangleStats({0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {0, 0}, {0.5f, 0}, {0, 0.5f},
+                                          {{{256, 256}, 6.0}, {{1024, 512}, 0.25}});
+    EXPECT_FLOAT_EQ(s.texelCount, 49152.0f);
+    EXPECT_FLOAT_EQ(s.sizeUv, 1.0f / 49152.0f);
+    EXPECT_FLOAT_EQ(s.areaTexture, 0.125f);
+    EXPECT_FLOAT_EQ(s.texPerWorld, 0.125f);
+}
+
+// Triangles of assorted shapes and uvs, one primitive of material 0 whose base colour
+// (256x128) and normal map (64x512) may carry texture transforms.
+Scene transformScene()
+{
+    Scene scene;
+    scene.vertices.positions = {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 2, 0.5f}, {-1, 0.5f, 2}, {3, -1, 1}};
+    scene.vertices.uvs = {{0, 0}, {0.5f, 0.1f}, {0.2f, 0.7f}, {0.9f, 0.4f}, {-0.3f, 1.2f}, {0.3f, -0.4f}};
+    scene.indices = {0, 1, 2, 1, 3, 2, 2, 3, 4, 0, 5, 1, 4, 5, 3};
+    scene.textures.resize(2);
+    scene.textures[0].width = 256;
+    scene.textures[0].height = 128;
+    scene.textures[1].width = 64;
+    scene.textures[1].height = 512;
+    Material material;
+    material.baseColorTexture = 0;
+    scene.materials.push_back(material);
+    scene.primitives.push_back({0, uint32_t(scene.indices.size()), 0});
+    scene.meshes.push_back({"m", 0, 1});
+    return scene;
+}
+
+void expectSameDensity(const Scene& a, const Scene& b)
+{
+    ASSERT_EQ(a.triangleStats.size(), b.triangleStats.size());
+    for (size_t t = 0; t < a.triangleStats.size(); ++t) {
+        SCOPED_TRACE("triangle " + std::to_string(t));
+        const TriangleStats& x = a.triangleStats[t];
+        const TriangleStats& y = b.triangleStats[t];
+        // Agreement to the precision of float uvs (the hand-transformed ones are rounded).
+        EXPECT_NEAR(x.texelCount, y.texelCount, 1e-5f * y.texelCount);
+        EXPECT_NEAR(x.sizeUv, y.sizeUv, 1e-5f * y.sizeUv);
+        EXPECT_EQ(x.areaWorld, y.areaWorld);
+        EXPECT_EQ(x.flags, y.flags);
+    }
+}
+
+// A material transform gives the statistics the same uvs transformed by hand give.
+TEST(TriangleStats, TransformedSlotMatchesUvsTransformedByHand)
+{
+    const Scene plain = [] {
+        Scene s = transformScene();
+        computeTriangleStats(s);
+        return s;
+    }();
+    for (const TextureTransform& transform :
+         {TextureTransform::fromOffsetRotationScale({0.3f, -0.2f}, 0.7f, {3.0f, 2.0f}),
+          TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, -2.5f, {0.25f, -0.5f}),
+          TextureTransform::fromOffsetRotationScale({5.0f, 1.0f}, 0.0f, {1.0f, 1.0f})}) {
+        Scene viaMaterial = transformScene();
+        viaMaterial.materials[0].textureTransforms[uint32_t(TextureSlot::BaseColor)] = transform;
+        computeTriangleStats(viaMaterial);
+        Scene byHand = transformScene();
+        for (glm::vec2& uv : byHand.vertices.uvs)
+            uv = transform.apply(uv);
+        computeTriangleStats(byHand);
+        expectSameDensity(viaMaterial, byHand);
+        // areaTexture and texPerWorld stay those of TEXCOORD_0.
+        for (size_t t = 0; t < plain.triangleStats.size(); ++t) {
+            EXPECT_EQ(viaMaterial.triangleStats[t].areaTexture, plain.triangleStats[t].areaTexture);
+            EXPECT_EQ(viaMaterial.triangleStats[t].texPerWorld, plain.triangleStats[t].texPerWorld);
+        }
+    }
+}
+
+// Identity maps, and maps that keep areas (a pure offset, a rotation), change nothing.
+TEST(TriangleStats, AreaPreservingTransformsKeepTheStatistics)
+{
+    Scene plain = transformScene();
+    computeTriangleStats(plain);
+    Scene identity = transformScene();
+    identity.materials[0].textureTransforms[uint32_t(TextureSlot::BaseColor)] = TextureTransform{};
+    computeTriangleStats(identity);
+    for (size_t t = 0; t < plain.triangleStats.size(); ++t)
+        EXPECT_EQ(std::memcmp(&plain.triangleStats[t], &identity.triangleStats[t], sizeof(TriangleStats)), 0) << t;
+    Scene offset = transformScene();
+    offset.materials[0].textureTransforms[uint32_t(TextureSlot::BaseColor)].offset = {0.5f, -3.0f};
+    computeTriangleStats(offset);
+    for (size_t t = 0; t < plain.triangleStats.size(); ++t)
+        EXPECT_EQ(std::memcmp(&plain.triangleStats[t], &offset.triangleStats[t], sizeof(TriangleStats)), 0) << t;
+    Scene rotated = transformScene();
+    rotated.materials[0].textureTransforms[uint32_t(TextureSlot::BaseColor)] =
+        TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, 1.1f, {1.0f, 1.0f});
+    computeTriangleStats(rotated);
+    expectSameDensity(rotated, plain);
+}
+
+// n_tex is the largest over the material's textures, each in its own slot's uv space: a
+// texture in two slots counts with each slot's scale.
+TEST(TriangleStats, LargestTexelCountOverSlotsAndTheirTransforms)
+{
+    Scene scene = transformScene();
+    Material& m = scene.materials[0];
+    m.normalTexture = 1;
+    m.occlusionTexture = 0;
+    m.textureTransforms[uint32_t(TextureSlot::BaseColor)] =
+        TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, 0.0f, {0.5f, 0.5f}); // 256x128 at 1/4
+    m.textureTransforms[uint32_t(TextureSlot::Occlusion)] =
+        TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, 0.0f, {3.0f, 1.0f}); // 256x128 at 3
+    m.textureTransforms[uint32_t(TextureSlot::Normal)] =
+        TextureTransform::fromOffsetRotationScale({0.0f, 0.0f}, 0.0f, {2.0f, 1.0f}); // 64x512 at 2
+    computeTriangleStats(scene);
+    Scene plain = transformScene();
+    computeTriangleStats(plain);
+    // Texels per TEXCOORD_0 area: 32768 * 0.25, 32768 * 3 = 98304, 32768 * 2: the occlusion
+    // slot's 98304 wins, three times the untransformed base colour's.
+    for (size_t t = 0; t < plain.triangleStats.size(); ++t)
+        EXPECT_NEAR(scene.triangleStats[t].texelCount, 3.0f * plain.triangleStats[t].texelCount,
+                    1e-6f * scene.triangleStats[t].texelCount)
+            << t;
 }
 
 } // namespace

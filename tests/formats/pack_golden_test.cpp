@@ -1,10 +1,11 @@
 // Format stability: tests/data/golden_v<N>.lfdpack were written from goldenScene() (v1)
-// and goldenSceneV2() (v2) below. The reader must keep reading both, and today's writer
-// must reproduce the current version's file byte for byte. An intentional format change
-// is a new format version (golden_v3), not a regenerated v2; v1 is frozen (no writer of
-// it is left).
+// and goldenSceneV2() (v2) below, golden_v2_materials_lights.lfdpack from
+// goldenSceneV2MaterialsLights() (v2 with the optional MEXT and LGHT sections). The reader
+// must keep reading them, and today's writer must reproduce the current version's files
+// byte for byte. An intentional format change is a new format version (golden_v3), not a
+// regenerated v2; v1 is frozen (no writer of it is left).
 //
-// Regenerate v2 (only when goldenSceneV2() itself changes):
+// Regenerate the v2 files (only when their scenes themselves change):
 //   LFD_REGENERATE_GOLDEN=1 ./lfd_formats_tests --gtest_filter='PackGolden.*'
 #include "pack_test_scenes.h"
 
@@ -23,6 +24,7 @@ namespace fs = std::filesystem;
 
 const fs::path kGoldenV1Path = fs::path(LFD_TEST_DATA) / "golden_v1.lfdpack";
 const fs::path kGoldenV2Path = fs::path(LFD_TEST_DATA) / "golden_v2.lfdpack";
+const fs::path kGoldenV2MaterialsLightsPath = fs::path(LFD_TEST_DATA) / "golden_v2_materials_lights.lfdpack";
 
 // Fixed forever: every section of version 1, tiny textures so the file stays small.
 Scene goldenScene()
@@ -110,6 +112,28 @@ Scene goldenSceneV2()
     return s;
 }
 
+// Fixed forever: version 2's scene plus the optional sections added within version 2 -
+// material extensions (an unlit material, texture transforms) and one light of each type.
+// Also a fuzzing seed (scripts/fuzz.sh) that reaches the MEXT and LGHT decoders.
+Scene goldenSceneV2MaterialsLights()
+{
+    Scene s = goldenSceneV2();
+    Material& m = s.materials[0];
+    m.textureTransforms[uint32_t(TextureSlot::BaseColor)] =
+        TextureTransform::fromOffsetRotationScale({0.5f, 0.25f}, 0.5f, {4.0f, 2.0f});
+    m.textureTransforms[uint32_t(TextureSlot::Occlusion)].offset = {0.0f, -0.5f};
+    Material unlit;
+    unlit.name = "unlit";
+    unlit.unlit = true;
+    unlit.baseColorTexture = 2;
+    s.materials.push_back(unlit);
+    s.primitives[1].material = 1;
+    s.lights = {Light{"sun", LightType::Directional, 0, {1.0f, 0.5f, 0.25f}, 2.0f, 0.0f, 0.0f, 0.78539816f},
+                Light{"lamp", LightType::Point, 1, {0.5f, 1.0f, 1.0f}, 40.0f, 5.0f, 0.0f, 0.78539816f},
+                Light{"spot", LightType::Spot, 1, {1.0f, 1.0f, 1.0f}, 800.0f, 0.0f, 0.25f, 0.5f}};
+    return s;
+}
+
 std::vector<uint8_t> goldenBytes(const fs::path& path)
 {
     std::ifstream in(path, std::ios::binary);
@@ -129,8 +153,10 @@ protected:
     static void SetUpTestSuite()
     {
         const char* regenerate = std::getenv("LFD_REGENERATE_GOLDEN");
-        if (regenerate && std::string(regenerate) == "1")
+        if (regenerate && std::string(regenerate) == "1") {
             writePack(kGoldenV2Path, goldenSceneV2());
+            writePack(kGoldenV2MaterialsLightsPath, goldenSceneV2MaterialsLights());
+        }
     }
 };
 
@@ -167,13 +193,43 @@ TEST_F(PackGolden, CommittedV2FileUsesEveryEncoding)
     EXPECT_FALSE(mapped.levelsZstd(1)); // pseudo-random blocks stay raw
 }
 
-TEST_F(PackGolden, WriterReproducesTheCommittedBytes)
+void expectWriterReproduces(const fs::path& path, const Scene& scene)
 {
-    const std::vector<uint8_t> committed = goldenBytes(kGoldenV2Path);
-    const std::vector<uint8_t> today = writePackToMemory(goldenSceneV2());
+    SCOPED_TRACE(path.string());
+    const std::vector<uint8_t> committed = goldenBytes(path);
+    const std::vector<uint8_t> today = writePackToMemory(scene);
     ASSERT_EQ(today.size(), committed.size());
     for (size_t i = 0; i < today.size(); ++i)
         ASSERT_EQ(today[i], committed[i]) << "first difference at byte " << i;
+}
+
+TEST_F(PackGolden, WriterReproducesTheCommittedBytes)
+{
+    expectWriterReproduces(kGoldenV2Path, goldenSceneV2());
+    expectWriterReproduces(kGoldenV2MaterialsLightsPath, goldenSceneV2MaterialsLights());
+}
+
+// The materials-and-lights file is read back as its scene and holds golden_v2's sections
+// plus exactly the two optional ones.
+TEST_F(PackGolden, MaterialsLightsFileIsTheV2FilePlusTwoSections)
+{
+    ASSERT_TRUE(fs::exists(kGoldenV2MaterialsLightsPath))
+        << kGoldenV2MaterialsLightsPath << " is missing (LFD_REGENERATE_GOLDEN=1 writes it)";
+    EXPECT_LT(fs::file_size(kGoldenV2MaterialsLightsPath), 16u * 1024u);
+    expectSameScene(goldenSceneV2MaterialsLights(), readPack(kGoldenV2MaterialsLightsPath));
+    PackInfo v2, extended;
+    readPack(kGoldenV2Path, &v2);
+    readPack(kGoldenV2MaterialsLightsPath, &extended);
+    std::vector<std::string> added;
+    for (const PackSectionInfo& s : extended.sections) {
+        bool old = false;
+        for (const PackSectionInfo& o : v2.sections)
+            old = old || o.tag == s.tag;
+        if (!old)
+            added.push_back(s.tag);
+    }
+    EXPECT_EQ(added, (std::vector<std::string>{"MEXT", "LGHT"}));
+    EXPECT_EQ(extended.sections.size(), v2.sections.size() + 2);
 }
 
 // The header fields at the offsets formats/README.md documents, read without pack_layout.h

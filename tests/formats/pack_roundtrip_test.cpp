@@ -162,8 +162,8 @@ TEST(PackRoundTrip, VerifyPackReportsTheSectionTable)
     EXPECT_EQ(info.formatVersion, pack::kFormatVersion);
     EXPECT_EQ(info.fileSize, fs::file_size(path));
 
-    const std::vector<std::string> expectedTags = {"BAKE", "BNDS", "STRS", "VPOS", "VNRM", "VTAN", "VTUV",
-                                                   "INDX", "TSTA", "PRIM", "MESH", "MATL", "NODE", "ANIM",
+    const std::vector<std::string> expectedTags = {"BAKE", "BNDS", "STRS", "VPOS", "VNRM", "VTAN", "VTUV", "INDX",
+                                                   "TSTA", "PRIM", "MESH", "MATL", "MEXT", "NODE", "LGHT", "ANIM",
                                                    "ACHN", "AKTM", "AKVL", "TEXL", "TEXD", "MIPS"};
     ASSERT_EQ(info.sections.size(), expectedTags.size());
     uint64_t previousEnd = 0;
@@ -179,7 +179,9 @@ TEST(PackRoundTrip, VerifyPackReportsTheSectionTable)
     EXPECT_EQ(info.sections[3].count, scene.vertices.size());
     EXPECT_EQ(info.sections[7].count, scene.indices.size());
     EXPECT_EQ(info.sections[8].size, scene.triangleStats.size() * 24);
-    EXPECT_EQ(info.sections[17].size, scene.textures[0].texels.size() + scene.textures[1].texels.size());
+    EXPECT_EQ(info.sections[12].count, scene.materials.size());
+    EXPECT_EQ(info.sections[14].count, scene.lights.size());
+    EXPECT_EQ(info.sections[19].size, scene.textures[0].texels.size() + scene.textures[1].texels.size());
 
     // readPack hands out the same table from its one read (lfd-bake --inspect uses it).
     PackInfo fromRead;

@@ -47,7 +47,8 @@ inline Texture makeTexture(const std::string& name, uint32_t width, uint32_t hei
     return t;
 }
 
-// Every field, every section, optional streams present, unicode names.
+// Every field, every section (deformation aside: pack_deformation_test.cpp), optional
+// streams, material extensions and lights present, unicode names.
 inline Scene makeFullScene()
 {
     Scene s;
@@ -85,10 +86,17 @@ inline Scene makeFullScene()
     textured.normalTexture = 1;
     textured.occlusionTexture = 1;
     textured.emissiveTexture = 0;
+    // KHR_texture_transform on three slots (every matrix entry distinct, a mirror included).
+    textured.textureTransforms[uint32_t(TextureSlot::BaseColor)] =
+        TextureTransform::fromOffsetRotationScale({0.25f, -0.5f}, 0.3f, {2.0f, 3.0f});
+    textured.textureTransforms[uint32_t(TextureSlot::Normal)] =
+        TextureTransform::fromOffsetRotationScale({0.0f, 1.0f}, -1.25f, {-1.0f, 0.5f});
+    textured.textureTransforms[uint32_t(TextureSlot::Emissive)].offset = {0.125f, 0.0f};
     Material blend;
     blend.name = "";
     blend.alphaMode = AlphaMode::Blend;
     blend.baseColorFactor = {0.0f, 1.0f, 0.0f, 0.5f};
+    blend.unlit = true; // KHR_materials_unlit
     s.materials = {textured, blend};
 
     s.textures.push_back(makeTexture("albedo (sRGB) ✓", 5, 3, true, 1));
@@ -113,6 +121,28 @@ inline Scene makeFullScene()
     other.name = "second root";
     other.mesh = 1;
     s.nodes = {root, child, grandchild, other};
+
+    // KHR_lights_punctual: one of each type, two on the same node.
+    Light sun;
+    sun.name = "Sonne ☀";
+    sun.node = 0;
+    sun.color = {1.0f, 0.9f, 0.75f};
+    sun.intensity = 3.5f;
+    Light bulb;
+    bulb.name = "bulb";
+    bulb.type = LightType::Point;
+    bulb.node = 3;
+    bulb.color = {0.25f, 0.5f, 1.0f};
+    bulb.intensity = 120.0f;
+    bulb.range = 7.5f;
+    Light spot;
+    spot.name = "";
+    spot.type = LightType::Spot;
+    spot.node = 3;
+    spot.intensity = 0.0f;
+    spot.innerConeAngle = 0.125f;
+    spot.outerConeAngle = pack::kMaxSpotConeAngle;
+    s.lights = {sun, bulb, spot};
 
     AnimationChannel translate{1, AnimationPath::Translation, Interpolation::Linear,
                                {0.0f, 0.5f, 1.25f},
@@ -223,6 +253,11 @@ inline void expectSameScene(const Scene& a, const Scene& b)
         EXPECT_EQ(x.normalTexture, y.normalTexture);
         EXPECT_EQ(x.occlusionTexture, y.occlusionTexture);
         EXPECT_EQ(x.emissiveTexture, y.emissiveTexture);
+        EXPECT_EQ(x.unlit, y.unlit);
+        for (uint32_t slot = 0; slot < kTextureSlotCount; ++slot) {
+            EXPECT_EQ(x.textureTransforms[slot].linear, y.textureTransforms[slot].linear) << "slot " << slot;
+            EXPECT_EQ(x.textureTransforms[slot].offset, y.textureTransforms[slot].offset) << "slot " << slot;
+        }
     }
     ASSERT_EQ(a.textures.size(), b.textures.size());
     for (size_t t = 0; t < a.textures.size(); ++t)
@@ -256,6 +291,20 @@ inline void expectSameScene(const Scene& a, const Scene& b)
             EXPECT_EQ(x.times, y.times);
             EXPECT_EQ(x.values, y.values);
         }
+    }
+    ASSERT_EQ(a.lights.size(), b.lights.size());
+    for (size_t i = 0; i < a.lights.size(); ++i) {
+        const Light& x = a.lights[i];
+        const Light& y = b.lights[i];
+        SCOPED_TRACE("light " + std::to_string(i));
+        EXPECT_EQ(x.name, y.name);
+        EXPECT_EQ(x.type, y.type);
+        EXPECT_EQ(x.node, y.node);
+        EXPECT_EQ(x.color, y.color);
+        EXPECT_EQ(x.intensity, y.intensity);
+        EXPECT_EQ(x.range, y.range);
+        EXPECT_EQ(x.innerConeAngle, y.innerConeAngle);
+        EXPECT_EQ(x.outerConeAngle, y.outerConeAngle);
     }
     EXPECT_EQ(a.bounds.min, b.bounds.min);
     EXPECT_EQ(a.bounds.max, b.bounds.max);

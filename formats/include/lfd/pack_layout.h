@@ -72,6 +72,9 @@ inline constexpr uint32_t kTagSkins = makeTag("SKIN");
 inline constexpr uint32_t kTagSkinJoints = makeTag("SKJT");
 inline constexpr uint32_t kTagDeformers = makeTag("DFRM");
 inline constexpr uint32_t kTagDeformerWeights = makeTag("DFWT"); // f32 per deformer and target
+// Materials and lights (glTF extensions), optional: written only when used.
+inline constexpr uint32_t kTagMaterialExtensions = makeTag("MEXT"); // one per MATL record
+inline constexpr uint32_t kTagLights = makeTag("LGHT");             // KHR_lights_punctual instances
 // ACHN is written as section version 2 when it holds a Weights channel (path 3, the
 // reserved word becomes weightOffset); version-1 readers refuse such packs by name.
 inline constexpr uint32_t kChannelsWeightsVersion = 2;
@@ -164,6 +167,41 @@ struct MaterialRecord { // MATL, 96 bytes, std430-compatible (vec4s at 16-byte o
 };
 static_assert(sizeof(MaterialRecord) == 96 && offsetof(MaterialRecord, alphaMode) == 48 &&
               offsetof(MaterialRecord, name) == 80);
+
+// MEXT: material i's KHR_materials_unlit flag and KHR_texture_transform maps, present
+// when some material has either (lfd::Material::hasExtensions), then one record per MATL
+// record. Each slot's map is uv' = linear * uv + offset applied to TEXCOORD_0.
+inline constexpr uint32_t kMaterialUnlit = 1u << 0;
+
+struct UvTransformRecord { // 32 bytes, std430 { mat2 linear; vec2 offset; vec2 reserved; }
+    float linear[4]; // column-major: column 0 (x, y), column 1 (x, y)
+    float offset[2];
+    uint32_t reserved[2];
+};
+static_assert(sizeof(UvTransformRecord) == 32);
+
+struct MaterialExtensionRecord { // MEXT, 176 bytes, std430-compatible
+    uint32_t flags; // kMaterialUnlit
+    uint32_t reserved[3];
+    UvTransformRecord uvTransforms[5]; // lfd::TextureSlot order (MATL's texture fields)
+};
+static_assert(sizeof(MaterialExtensionRecord) == 176 && offsetof(MaterialExtensionRecord, uvTransforms) == 16);
+
+// LGHT: one KHR_lights_punctual light per node instance.
+struct LightRecord { // LGHT, 48 bytes
+    uint32_t type; // lfd::LightType
+    uint32_t node; // NODE index
+    float color[3];
+    float intensity;
+    float range;          // 0 = unlimited
+    float innerConeAngle; // spot: 0 <= inner < outer <= pi/2
+    float outerConeAngle;
+    uint32_t reserved;
+    StringRef name;
+};
+static_assert(sizeof(LightRecord) == 48 && offsetof(LightRecord, name) == 40);
+// A spot light's largest cone angle, pi/2 rounded to the nearest f32 (0x3FC90FDB).
+inline constexpr float kMaxSpotConeAngle = 1.57079637f;
 
 inline constexpr uint32_t kTextureSrgb = 1u << 0;
 // Format 2: every mip level is a zstd frame of its texels (RGBA8 texels or blocks); MIPS

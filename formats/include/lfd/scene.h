@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -146,6 +147,16 @@ struct TextureTransform {
     glm::mat2 linear{1.0f}; // glm column-major: linear[c][r]
     glm::vec2 offset{0.0f};
 
+    // The extension's offset, rotation (radians) and scale, as the map above.
+    static TextureTransform fromOffsetRotationScale(glm::vec2 offset, float rotation, glm::vec2 scale)
+    {
+        const float c = std::cos(rotation), s = std::sin(rotation);
+        TextureTransform t;
+        t.linear = glm::mat2(c * scale.x, -s * scale.x, s * scale.y, c * scale.y); // R * S, columns
+        t.offset = offset;
+        return t;
+    }
+
     glm::vec2 apply(glm::vec2 uv) const { return linear * uv + offset; }
     // |det linear|: how much the map scales texture-space areas (A_ts of this slot).
     float areaScale() const { float d = glm::determinant(linear); return d < 0.0f ? -d : d; }
@@ -260,12 +271,16 @@ enum TriangleFlags : uint32_t {
     kTriangleDegenerate = 1u << 1, // zero world area (stats are zero)
 };
 
+// Texture transforms (Material::textureTransforms): A_ts of texture t is the triangle's
+// area in t's own uv space, areaTexture * areaScale() of the slot that samples t, so
+// texelCount and sizeUv follow the transforms. areaTexture and texPerWorld stay in
+// TEXCOORD_0's space: a consumer multiplies them by a slot's areaScale() itself.
 struct TriangleStats {
     float areaWorld = 0.0f;   // A_ws, object units^2
-    float areaTexture = 0.0f; // A_ts, uv units^2 (TEXCOORD_0)
-    float texelCount = 0.0f;  // n_tex = max_t A_ts * X_t * Y_t over the material's textures
+    float areaTexture = 0.0f; // A_ts of TEXCOORD_0, uv units^2 (untransformed)
+    float texelCount = 0.0f;  // n_tex = max_t areaTexture * areaScale(slot of t) * X_t * Y_t
     float sizeUv = 0.0f;      // size_uv = A_ws / n_tex  (0 when untextured)
-    float texPerWorld = 0.0f; // A_ts / A_ws, used for size_vpuv (0 when untextured/degenerate)
+    float texPerWorld = 0.0f; // areaTexture / A_ws (TEXCOORD_0), for size_vpuv (0 when untextured/degenerate)
     uint32_t flags = 0;       // TriangleFlags
 };
 static_assert(sizeof(TriangleStats) == 24, "TriangleStats is a GPU-visible layout");

@@ -333,6 +333,56 @@ def schema_error():
     g.write("schema_error.gltf")
 
 
+def materials_and_lights():
+    # KHR_texture_transform, KHR_materials_unlit and KHR_lights_punctual, all required: a
+    # unit quad (u along +x, v along +y) of two primitives on node 0.
+    # Primitive 0 (material "tiled"): base colour scaled (4, 2) - area scale 8 -, rotated
+    # 0.5 rad, offset (0.5, 0.25); normal map with texCoord 1, overridden to 0 by the
+    # extension (so usable), offset only. Primitive 1 (material "sticker"): unlit, its base
+    # colour untransformed. Lights: directional "sun" (lux 3) on node 1, a child of node 0;
+    # point "bulb" (range 4, unnamed in the scene: "light 1") on node 2; spot "cone"
+    # (inner 0.2, outer 0.6) on nodes 3 and 4 (two instances); node 5 carries the sun but
+    # is in no scene: dropped with a warning.
+    g = Gltf()
+    pts = [(0.0, 0.0, 0.0), (1.0, 0.0, 0.0), (1.0, 1.0, 0.0), (0.0, 1.0, 0.0)]
+    uvs = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    attrs = {"POSITION": g.positions(pts), "NORMAL": g.vec3([UP] * 4),
+             "TEXCOORD_0": g.accessor("ff", uvs, "VEC2", FLOAT, ARRAY_BUFFER)}
+    colour = g.image(png_1x1([200, 100, 50, 255]))
+    bumps = g.image(png_1x1([128, 128, 255, 255]))
+    g.doc["materials"] = [
+        {"name": "tiled",
+         "pbrMetallicRoughness": {"baseColorTexture": {"index": colour, "extensions": {"KHR_texture_transform": {
+             "offset": [0.5, 0.25], "rotation": 0.5, "scale": [4.0, 2.0]}}}},
+         "normalTexture": {"index": bumps, "texCoord": 1, "extensions": {"KHR_texture_transform": {
+             "offset": [0.0, 0.5], "texCoord": 0}}}},
+        {"name": "sticker", "pbrMetallicRoughness": {"baseColorTexture": {"index": colour}},
+         "extensions": {"KHR_materials_unlit": {}}}]
+    g.doc["meshes"] = [{"name": "quad", "primitives": [
+        {"attributes": attrs, "indices": g.indices([0, 1, 2]), "material": 0},
+        {"attributes": attrs, "indices": g.indices([0, 2, 3]), "material": 1}]}]
+    names = ["KHR_texture_transform", "KHR_materials_unlit", "KHR_lights_punctual"]
+    g.doc["extensionsUsed"] = names
+    g.doc["extensionsRequired"] = names
+    g.doc["extensions"] = {"KHR_lights_punctual": {"lights": [
+        {"name": "sun", "type": "directional", "color": [1.0, 0.95, 0.8], "intensity": 3.0},
+        {"type": "point", "color": [0.2, 0.4, 1.0], "intensity": 50.0, "range": 4.0},
+        {"name": "cone", "type": "spot", "intensity": 400.0,
+         "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.6}}]}}
+
+    def light(name, index, **trs):
+        return dict({"name": name, "extensions": {"KHR_lights_punctual": {"light": index}}}, **trs)
+    g.doc["nodes"] = [{"name": "quad", "mesh": 0, "children": [1]},
+                      light("sun node", 0, rotation=[-0.7071068, 0.0, 0.0, 0.7071068]),
+                      light("bulb node", 1, translation=[0.5, 0.5, 1.0]),
+                      light("spot left", 2, translation=[-1.0, 0.0, 2.0]),
+                      light("spot right", 2, translation=[2.0, 0.0, 2.0]),
+                      light("unused sun", 0)]
+    g.doc["scenes"] = [{"nodes": [0, 2, 3, 4]}]
+    g.doc["scene"] = 0
+    g.write("materials_and_lights.gltf")
+
+
 def malformed():
     with open("malformed.gltf", "w") as f:
         f.write('{"asset": {"version": "2.0"}, "meshes": [\n')
@@ -342,5 +392,5 @@ if __name__ == "__main__":
     for case in [strip, fan, no_normals, hierarchy, sheared, recursive, accessor_out_of_bounds,
                  index_out_of_range, draco_required, missing_bin, lines_and_triangles, cubic_spline,
                  bad_key_times, unused_streams, normal_map, interleaved_sparse, schema_warnings, schema_error,
-                 malformed]:
+                 materials_and_lights, malformed]:
         case()
