@@ -9,6 +9,7 @@
 #include "lfdpr_bindings.glsl"
 #include "lfdpr_math.glsl"
 #include "pbr_shading.glsl" // linearToSrgb
+#include "texture_transform.glsl"
 
 layout(location = 0) flat in uint g_record;
 layout(location = 1) flat in vec2 g_tileOrigin;
@@ -55,11 +56,13 @@ TexPair fetchPair(sampler2D t, MaterialGpu m, uint slot, vec2 uv, vec2 vpuv, boo
 
 // Tangent-space normal map value -> scene-space normal (glTF: B = cross(N, T) * w), as
 // mvr.frag does per pixel.
-vec3 perturb(vec3 n, vec3 t, float handedness, vec4 texel, float scale)
+vec3 perturb(vec3 n, vec3 t, float handedness, vec4 texel, MaterialGpu m)
 {
     vec3 tn = texel.xyz * 2.0 - 1.0;
-    tn.xy *= scale;
+    tn.xy *= m.params.z;
     vec3 b = cross(n, t) * handedness;
+    if ((m.flags & LFD_MATERIAL_UV_TRANSFORM) != 0u) // the frame turns with the texture's axes
+        lfdTransformTangentFrame(mat2(m.uvLinear[LFD_SLOT_NORMAL].xy, m.uvLinear[LFD_SLOT_NORMAL].zw), n, t, b);
     return normalize(mat3(t, b, n) * tn);
 }
 
@@ -89,8 +92,8 @@ void normalMapPair(LfdprPaperSamplingGpu s, MaterialGpu m, vec3 w, vec3 n, vec2 
     if (dot(t, t) > 1e-12) {
         t = normalize(t);
         TexPair nt = fetchPair(t_normal, m, LFD_SLOT_NORMAL, uv, vpuv, mipmapping);
-        normalLo = perturb(n, t, handedness, nt.lo, m.params.z);
-        normalHi = perturb(n, t, handedness, nt.hi, m.params.z);
+        normalLo = perturb(n, t, handedness, nt.lo, m);
+        normalHi = perturb(n, t, handedness, nt.hi, m);
     }
 }
 

@@ -6,6 +6,7 @@
 // textureGrad() with analytic gradients in compute, taken through the slot's
 // KHR_texture_transform (its linear part, uvFromTexcoord) to the texture's own uv space.
 // Needs scene_bindings.glsl and pbr_shading.glsl first.
+#include "texture_transform.glsl"
 
 // The textures a program can sample (LFD_MATERIAL_*_TEXTURE bits): a program compiled for
 // a known set (lfdpr_visibility_shade.comp, per shading group) contains no code for the others.
@@ -92,6 +93,9 @@ bool lfdShadeMaterial(MaterialGpu m, uint streams, LfdSurfacePoint p, vec3 eye, 
         if (dot(t, t) > 1e-12) {
             t = normalize(t);
             vec3 b = cross(n, t) * (p.tangent.w < 0.0 ? -1.0 : 1.0);
+            // The slot's KHR_texture_transform turns the frame with the texture's axes.
+            if ((m.flags & LFD_MATERIAL_UV_TRANSFORM) != 0u)
+                lfdTransformTangentFrame(lfdSlotLinear(m, LFD_SLOT_NORMAL), n, t, b);
             vec3 tn = LFD_SAMPLE_SLOT(t_normal, LFD_SLOT_NORMAL).xyz * 2.0 - 1.0;
             // A two-channel (BC5) normal map stores x and y of the unit normal.
             if ((m.flags & LFD_MATERIAL_NORMAL_TWO_CHANNEL) != 0u)
