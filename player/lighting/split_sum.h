@@ -14,16 +14,16 @@
 // the Monte Carlo reference on the neutral studio (ibl_accuracy_test's sphere, white
 // metal) the mean / worst error at roughness 1 falls from 13.6 / 45 levels (lookup at R)
 // to 1.1 / 9, at roughness 0.5 the worst from 57 to 30 (the mean 5.7 -> 6.3); near
-// roughness 0 the lookup is R. Directions are in the
-// environment's frame: with --environment-rotation, the caller turns n and v by
-// environmentFromScene first (environment.h).
+// roughness 0 the lookup is R. Directions are in the environment's frame: with
+// --environment-rotation, the caller turns n and v by environmentFromScene first
+// (environment.h).
 //
 // Filtering: the CPU reads the specular cube as GL's textureLod with
 // GL_LINEAR_MIPMAP_LINEAR and seamless cube filtering (sampleCubeTrilinear; the only
 // difference is at the cube's 8 corners, where GL leaves the fourth tap to the driver), the
 // irradiance cube as GL_LINEAR (seamless), and the table as GL_LINEAR with
 // GL_CLAMP_TO_EDGE, with exact float weights where a GPU may quantise them (commonly to 8
-// bits of fraction), a difference far below one 8-bit level.
+// bits of fraction; expected well below one 8-bit level, not measured here).
 #pragma once
 
 #include "brdf.h"
