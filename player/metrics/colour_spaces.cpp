@@ -1,6 +1,7 @@
 // Colour transforms for LDR FLIP; see colour_spaces.h.
 #include "colour_spaces.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lfd::metrics::detail {
@@ -56,6 +57,14 @@ double srgbToLinear(double encoded)
     if (encoded <= 0.04045)
         return encoded / 12.92;
     return std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+double linearToSrgb(double linear)
+{
+    const double c = linear > 0.0 ? std::min(linear, 1.0) : 0.0; // NaN fails the test: 0
+    if (c <= 0.0031308)
+        return c * 12.92;
+    return 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
 Vec3 linearRgbToXyz(const Vec3& rgb) { return multiply(kRgbToXyz, rgb); }

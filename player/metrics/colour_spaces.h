@@ -1,7 +1,8 @@
 // The colour transforms LDR FLIP needs (Andersson et al. 2020, the colour
 // pipeline): sRGB transfer function, linear sRGB <-> CIE XYZ (D65), XYZ <-> YCxCz (the
 // opponent space FLIP filters in), XYZ -> CIELAB, the Hunt adjustment and the HyAB distance.
-// Internal to lfd_image_metrics.
+// Internal to lfd_image_metrics, except the sRGB transfer pair, which lfd_lighting's
+// display levels use too (the C++ side of shaders/srgb.glsl).
 #pragma once
 
 #include <array>
@@ -12,6 +13,9 @@ using Vec3 = std::array<double, 3>;
 
 // IEC 61966-2-1 sRGB decoding of one channel in [0, 1].
 double srgbToLinear(double encoded);
+// IEC 61966-2-1 sRGB encoding of one channel, as shaders/srgb.glsl's linearToSrgb: the
+// input clamped to [0, 1] first (NaN gives 0).
+double linearToSrgb(double linear);
 
 // Linear sRGB (Rec. 709 primaries, D65 white) to CIE XYZ and back. The white point used
 // by the YCxCz and CIELAB conversions is linearRgbToXyz({1, 1, 1}), so sRGB white maps to

@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -71,6 +72,102 @@ void appendBytes(void* context, void* data, int size)
     out->insert(out->end(), bytes, bytes + size);
 }
 
+std::vector<uint8_t> readAllBytes(FILE* file, const fs::path& path)
+{
+    std::rewind(file);
+    std::vector<uint8_t> bytes;
+    uint8_t chunk[1 << 16];
+    size_t got = 0;
+    while ((got = std::fread(chunk, 1, sizeof chunk, file)) > 0)
+        bytes.insert(bytes.end(), chunk, chunk + got);
+    if (std::ferror(file))
+        fail(path, "read error");
+    return bytes;
+}
+
+// Where the pixel data of a Radiance .hdr file starts: after the header's lines up to the
+// first empty one, and the resolution line after it (the lines stb_image's parser reads).
+size_t hdrDataStart(std::span<const uint8_t> bytes)
+{
+    const auto begin = bytes.begin();
+    const uint8_t blankLine[] = {'\n', '\n'};
+    const auto blank = std::search(begin, bytes.end(), std::begin(blankLine), std::end(blankLine));
+    if (blank == bytes.end())
+        return bytes.size();
+    const auto resolutionEnd = std::find(blank + 2, bytes.end(), uint8_t('\n'));
+    return resolutionEnd == bytes.end() ? bytes.size() : size_t(resolutionEnd - begin) + 1;
+}
+
+// Whether the file holds every byte stb_image's .hdr decoder will read, walked the way it
+// reads them without decoding: flat RGBE pixels (width < 8 or >= 32768, or from the first
+// scanline without the RLE marker on, which stb then reads as the whole image flat), or
+// per scanline the marker (2, 2, width) and four channels of runs and dumps. Data stb
+// refuses itself (a wrong scanline width, a run past the row's end) counts as complete.
+// note: stb_image 2.27 reads zero bytes past the end of its input, and its RLE decoder takes
+// a zero as an empty dump that never advances: a truncated RLE file hangs it, and a
+// truncated flat one decodes zeros. Hence this walk before any decoding.
+bool hdrDataComplete(std::span<const uint8_t> bytes, size_t pos, int width, int height)
+{
+    const uint64_t flatBytes = uint64_t(width) * uint64_t(height) * 4;
+    if (width < 8 || width >= 32768)
+        return pos + flatBytes <= bytes.size();
+    for (int row = 0; row < height; ++row) {
+        if (pos + 4 > bytes.size())
+            return false;
+        if (bytes[pos] != 2 || bytes[pos + 1] != 2 || (bytes[pos + 2] & 0x80))
+            return pos + flatBytes <= bytes.size();
+        if (((int(bytes[pos + 2]) << 8) | bytes[pos + 3]) != width)
+            return true;
+        pos += 4;
+        for (int channel = 0; channel < 4; ++channel)
+            for (int x = 0; x < width;) {
+                if (pos >= bytes.size())
+                    return false;
+                const int code = bytes[pos++];
+                const int count = code > 128 ? code - 128 : code; // a run of one value, or a dump
+                if (count > width - x)
+                    return true;
+                pos += code > 128 ? 1 : size_t(count);
+                if (pos > bytes.size())
+                    return false;
+                x += count;
+            }
+    }
+    return true;
+}
+
+// Decodes a Radiance .hdr file's bytes: float RGB(E) samples (asFloat) or stb's 8-bit
+// conversion, `components` per pixel (0: as stored). Fails on truncation and corrupt data.
+DecodedImage decodeHdrBytes(const fs::path& path, std::span<const uint8_t> bytes, bool asFloat, int components)
+{
+    if (bytes.size() > size_t(std::numeric_limits<int>::max()))
+        fail(path, "larger than 2 GiB");
+    const int size = int(bytes.size());
+    int w = 0, h = 0, n = 0;
+    if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &n))
+        fail(path, std::string("cannot read the .hdr header: ") + stbi_failure_reason());
+    if (!hdrDataComplete(bytes, hdrDataStart(bytes), w, h))
+        fail(path, "truncated .hdr file: the pixel data ends early");
+    DecodedImage image;
+    const size_t values = size_t(w) * size_t(h) * size_t(components ? components : n);
+    if (asFloat) {
+        const std::unique_ptr<float, StbFree<float>> p(stbi_loadf_from_memory(bytes.data(), size, &w, &h, &n, components));
+        if (!p)
+            fail(path, std::string("cannot read pixels: ") + stbi_failure_reason());
+        image.f32.assign(p.get(), p.get() + values);
+        image.bitsPerChannel = 32;
+    } else {
+        const std::unique_ptr<stbi_uc, StbFree<stbi_uc>> p(stbi_load_from_memory(bytes.data(), size, &w, &h, &n, components));
+        if (!p)
+            fail(path, std::string("cannot read pixels: ") + stbi_failure_reason());
+        image.u8.assign(p.get(), p.get() + values);
+    }
+    image.width = w;
+    image.height = h;
+    image.channels = components ? components : n;
+    return image;
+}
+
 } // namespace
 
 DecodedImage decodeImageFile(const fs::path& path, bool keepDepth)
@@ -88,15 +185,10 @@ DecodedImage decodeImageFile(const fs::path& path, bool keepDepth)
     int w = 0, h = 0, n = 0;
     if (!stbi_info_from_file(file.get(), &w, &h, &n))
         fail(path, std::string("cannot read image: ") + stbi_failure_reason());
+    if (stbi_is_hdr_from_file(file.get())) // through the truncation guard, at either depth
+        return decodeHdrBytes(path, readAllBytes(file.get(), path), keepDepth, 0);
     const bool sixteen = keepDepth && stbi_is_16_bit_from_file(file.get());
-    const bool hdr = keepDepth && stbi_is_hdr_from_file(file.get());
-    if (hdr) {
-        const std::unique_ptr<float, StbFree<float>> p(stbi_loadf_from_file(file.get(), &w, &h, &n, 0));
-        if (!p)
-            fail(path, std::string("cannot read pixels: ") + stbi_failure_reason());
-        image.f32.assign(p.get(), p.get() + size_t(w) * size_t(h) * size_t(n));
-        image.bitsPerChannel = 32;
-    } else if (sixteen) {
+    if (sixteen) {
         const std::unique_ptr<stbi_us, StbFree<stbi_us>> p(stbi_load_from_file_16(file.get(), &w, &h, &n, 0));
         if (!p)
             fail(path, std::string("cannot read pixels: ") + stbi_failure_reason());
@@ -114,6 +206,28 @@ DecodedImage decodeImageFile(const fs::path& path, bool keepDepth)
     image.height = h;
     image.channels = n;
     return image;
+}
+
+HdrImage readHdrImage(const fs::path& path, uint64_t maxPixels)
+{
+    std::error_code ec;
+    if (!fs::exists(path, ec))
+        fail(path, "no such file");
+    if (fs::is_directory(path, ec))
+        fail(path, "is a directory, not a .hdr file");
+    const std::unique_ptr<FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file)
+        fail(path, "cannot open for reading");
+    if (!stbi_is_hdr_from_file(file.get()))
+        fail(path, "not a Radiance .hdr file (no #?RADIANCE or #?RGBE signature)");
+    int w = 0, h = 0, n = 0;
+    if (!stbi_info_from_file(file.get(), &w, &h, &n))
+        fail(path, std::string("cannot read the .hdr header: ") + stbi_failure_reason());
+    if (uint64_t(w) * uint64_t(h) > maxPixels)
+        fail(path, std::to_string(w) + "x" + std::to_string(h) + " pixels, more than the " +
+                       std::to_string(maxPixels) + " allowed");
+    DecodedImage decoded = decodeHdrBytes(path, readAllBytes(file.get(), path), true, 3);
+    return HdrImage{decoded.width, decoded.height, std::move(decoded.f32)};
 }
 
 void encodeImageFile(const fs::path& path, const uint8_t* pixels, int width, int height, int channels)

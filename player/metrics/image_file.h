@@ -8,6 +8,9 @@
 // PSD (composited), HDR and PNM. Write: PNG, JPEG (quality 95), BMP, TGA, by extension.
 // Every error is one line naming the file and the problem (ImageError); writes are
 // atomic (atomic_file.h), so a failed write leaves nothing at the target or beside it.
+// A truncated Radiance .hdr file is an error, not a hang (stb_image 2.27's RLE decoder
+// never advances on the zero bytes it reads past the end of its input, so the scanlines
+// are walked first; see image_file.cpp).
 #pragma once
 
 #include <cstdint>
@@ -31,6 +34,18 @@ struct DecodedImage {
 // rounded, HDR tone-mapped by stb's default gamma); true: 16-bit PNG as u16 and HDR as f32.
 // Alpha stays as stored (straight, never premultiplied).
 DecodedImage decodeImageFile(const std::filesystem::path& path, bool keepDepth = false);
+
+// A Radiance .hdr (RGBE) image as linear float RGB, row 0 = top.
+struct HdrImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> rgb; // width * height * 3 values, as stored (no scale, no clamp)
+};
+
+// Reads a Radiance .hdr file (the player's environment maps). Refuses any other format,
+// an image of more than maxPixels pixels (checked on the header, before decoding), a
+// truncated file and corrupt RLE data, each with one line (ImageError).
+HdrImage readHdrImage(const std::filesystem::path& path, uint64_t maxPixels);
 
 // Encodes 8-bit interleaved pixels (1..4 channels, row 0 = top) in the format the
 // extension names, atomically.

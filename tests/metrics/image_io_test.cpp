@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -85,6 +86,35 @@ TEST_F(ImageIo, ErrorsAreOneLineNamingTheFile)
     std::ofstream(dir_ / "text.png") << "not an image\n";
     expectError(dir_ / "text.png", "cannot read image");
     expectError(dir_, "is a directory");
+}
+
+TEST_F(ImageIo, HdrIsReadAsFloatAndATruncatedOneIsAnErrorNotAHang)
+{
+    // 16 wide: written with RLE scanlines, the layout stb_image 2.27 hangs on when cut short.
+    std::vector<float> pixels(16 * 2 * 3);
+    for (size_t i = 0; i < pixels.size(); ++i)
+        pixels[i] = float(i % 5) * 0.25f;
+    const fs::path path = write("sky.hdr", pixels, 16, 2, 3, OIIO::TypeDesc::FLOAT);
+    const RgbImage image = readRgbImage(path);
+    ASSERT_EQ(image.width, 16);
+    EXPECT_NEAR(image.rgb[7], 255.0f * 0.5f, 1e-3); // value 2 * 0.25, 1.0 = 255
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    ASSERT_GT(bytes.size(), 40u);
+    for (const size_t cut : {bytes.size() - 1, bytes.size() - 20, bytes.size() - 40}) {
+        std::ofstream(dir_ / "cut.hdr", std::ios::binary).write(bytes.data(), std::streamsize(cut));
+        for (const bool eightBit : {false, true}) {
+            try {
+                if (eightBit)
+                    readImage(dir_ / "cut.hdr");
+                else
+                    readRgbImage(dir_ / "cut.hdr");
+                ADD_FAILURE() << "no error for a file cut to " << cut << " bytes";
+            } catch (const ImageError& e) {
+                EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos) << e.what();
+            }
+        }
+    }
 }
 
 } // namespace
