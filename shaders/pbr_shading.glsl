@@ -22,6 +22,7 @@ struct SurfacePbr {
 #include "srgb.glsl" // linearToSrgb
 
 layout(binding = LFD_UNIT_ENVIRONMENT) uniform samplerCube t_environment;
+layout(binding = LFD_UNIT_IRRADIANCE) uniform samplerCube t_irradiance;
 layout(binding = LFD_UNIT_BRDF_TABLE) uniform sampler2D t_brdfTable;
 
 // The BRDF's inputs that do not depend on the light: alpha = roughness^2,
@@ -92,37 +93,33 @@ vec3 lfdLightIncidence(uint i, vec3 position, out vec3 l)
     return radiance * attenuation;
 }
 
-// E(n) / pi from the environment's SH9 coefficients (Ramamoorthi & Hanrahan 2001, the
-// clamped-cosine convolution folded into the coefficients on the CPU: lfd_lighting's
-// irradianceSh, which this mirrors term by term).
-vec3 lfdIrradianceSh(vec3 d)
-{
-    vec3 e = u_frame.irradianceSh[0].rgb;
-    e += u_frame.irradianceSh[1].rgb * d.y + u_frame.irradianceSh[2].rgb * d.z + u_frame.irradianceSh[3].rgb * d.x;
-    e += u_frame.irradianceSh[4].rgb * (d.x * d.y) + u_frame.irradianceSh[5].rgb * (d.y * d.z);
-    e += u_frame.irradianceSh[6].rgb * (3.0 * d.z * d.z - 1.0);
-    e += u_frame.irradianceSh[7].rgb * (d.x * d.z) + u_frame.irradianceSh[8].rgb * (d.x * d.x - d.y * d.y);
-    return max(e, vec3(0.0));
-}
-
 vec3 lfdEnvironmentDirection(vec3 sceneDirection)
 {
     return mat3(u_frame.environmentFromScene[0].xyz, u_frame.environmentFromScene[1].xyz,
                 u_frame.environmentFromScene[2].xyz) * sceneDirection;
 }
 
-// Image-based lighting by the split sum (Karis 2013): the prefiltered environment along the
-// reflection at the roughness's level times F0 * A + B, and the irradiance times the
-// diffuse colour weighted by (1 - F0)(1 - C), the mean of (1 - F) over a Lambert lobe. A, B,
-// C come from the BRDF table at (n.v, roughness) (docs/lighting.md).
+// Image-based lighting by the split sum (Karis 2013), as player/lighting/split_sum.h
+// evaluates it on the CPU (the tests' mirror): the prefiltered environment at the GGX
+// lobe's level, read along Frostbite's dominant direction (Lagarde & de Rousiers 2014,
+// 4.9.3: the lobe's peak leans from R towards n as alpha grows), times F0 A + B; the
+// irradiance (E / pi) times the diffuse colour weighted by (1 - F0)(1 - C), the mean of
+// (1 - F) over a Lambert lobe. A, B, C come from the BRDF table at (n.v, roughness);
+// level l >= 1 of the cube holds GGX alpha 2^(l + 1 - levels), level 0 the mirror
+// (lighting/prefilter.h levelOfRoughness). docs/lighting.md gives the measured accuracy.
 vec3 lfdEnvironmentLight(SurfacePbr s, LfdBrdf b, vec3 n, vec3 v, float NdotV)
 {
-    vec3 abc = textureLod(t_brdfTable, vec2(NdotV, s.roughness), 0.0).rgb;
-    vec3 r = reflect(-v, n);
-    vec3 prefiltered = textureLod(t_environment, lfdEnvironmentDirection(r),
-                                  s.roughness * u_frame.environmentMaxLevel).rgb;
+    const float size = float(LFD_BRDF_TABLE_SIZE);
+    vec2 tableUv = (vec2(NdotV, s.roughness) * (size - 1.0) + 0.5) / size;
+    vec3 abc = textureLod(t_brdfTable, tableUv, 0.0).rgb;
+    float alpha = max(s.roughness * s.roughness, 1e-3);
+    float alpha1 = exp2(1.0 - u_frame.environmentMaxLevel); // level 1's alpha: 2^(2 - levels)
+    float lod = alpha < alpha1 ? (alpha - 1e-3) / (alpha1 - 1e-3) : 1.0 + log2(alpha / alpha1);
+    vec3 dominant = mix(n, reflect(-v, n), (1.0 - alpha) * (sqrt(1.0 - alpha) + alpha));
+    vec3 prefiltered = textureLod(t_environment, lfdEnvironmentDirection(dominant), lod).rgb;
     vec3 specular = prefiltered * (b.f0 * abc.x + abc.y);
-    vec3 diffuse = b.diffuseColor * (vec3(1.0) - b.f0) * (1.0 - abc.z) * lfdIrradianceSh(lfdEnvironmentDirection(n));
+    vec3 irradiance = textureLod(t_irradiance, lfdEnvironmentDirection(n), 0.0).rgb;
+    vec3 diffuse = b.diffuseColor * (vec3(1.0) - b.f0) * (1.0 - abc.z) * irradiance;
     return (diffuse + specular) * s.occlusion;
 }
 

@@ -28,10 +28,14 @@
 #define LFD_UNIT_EMISSIVE 4
 
 // Texture units of the scene's lighting (frame_uniforms.h binds them every frame): the
-// environment's GGX-prefiltered specular cube (one roughness per mip level) and the
-// split-sum BRDF table (A, B, C; pbr_shading.glsl).
+// environment's GGX-prefiltered specular cube (one GGX alpha per mip level), its diffuse
+// irradiance cube (E / pi) and the split-sum BRDF table (A, B, C; pbr_shading.glsl,
+// player/lighting/).
 #define LFD_UNIT_ENVIRONMENT 6
 #define LFD_UNIT_BRDF_TABLE 7
+#define LFD_UNIT_IRRADIANCE 13
+// The BRDF table's texels per axis (n.v and roughness at texel centres i / (size - 1)).
+#define LFD_BRDF_TABLE_SIZE 32
 
 // Explicit uniform locations of the per-draw uniforms.
 #define LFD_LOC_NODE 0
@@ -150,12 +154,11 @@ layout(std140, binding = LFD_UBO_FRAME) uniform FrameBlock {
     uint lightingFlags;  // LFD_LIGHTING_*
     uint lightCount;     // punctual lights in the arrays below (<= LFD_MAX_LIGHTS)
     float exposure;      // 2^EV: the scene radiance's scale before tone mapping
-    float environmentMaxLevel; // the specular cube's last mip level (roughness 1)
+    float environmentMaxLevel; // the specular cube's last mip level (GGX alpha 1)
     // The environment's orientation: environment direction = mat3(columns 0..2) * scene
     // direction (a rotation: the environment is fixed to the display, turned by
     // --environment-rotation about the vertical).
     vec4 environmentFromScene[3];
-    vec4 irradianceSh[9]; // rgb: SH9 of the environment's irradiance / pi (pbr_shading.glsl)
     vec4 lightPosition[LFD_MAX_LIGHTS];  // xyz scene position; w range (0: unlimited)
     vec4 lightDirection[LFD_MAX_LIGHTS]; // xyz unit direction the light shines along; w type (LFD_LIGHT_*)
     vec4 lightRadiance[LFD_MAX_LIGHTS];  // rgb colour * intensity; w unused

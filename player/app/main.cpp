@@ -191,6 +191,8 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
     o.turntablePeriod = shared.turntablePeriod;
     o.glDebug = shared.glDebug;
     o.aniso = float(shared.aniso);
+    o.lighting = lfd::player::frameLightingFromFlags(shared);
+    o.environment = shared.environment;
     lfd::player::applySharedFlags(shared, o.rendererOptions);
     o.reconstruction = lfd::player::parseReconstructionFlag("--aa", f.aa);
     o.supersampling = lfd::player::parseSupersamplingFlag("--ss", f.ss);

@@ -1,5 +1,7 @@
 #include "player_session.h"
 
+#include "gpu_environment.h"
+
 #include "image.h"
 #include "quilt.h"
 #include "simulated_viewer.h"
@@ -83,6 +85,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
 void PlayerSession::applyRenderOptions(const PlayOptions& options)
 {
     reconstruction_ = options.reconstruction;
+    pipeline_->setLighting(options.lighting, loadGpuEnvironment(options.environment));
     pipeline_->setSupersampling(options.supersampling);
     pipeline_->setViewControls(options.controls);
     pipeline_->setPreviewShape(options.previewShape);

@@ -35,6 +35,11 @@ enum class FrameQuality { Full, Preview };
 
 struct PlayOptions {
     float aniso = 1.0f;                    // --aniso: the scene textures' max anisotropy
+    // Lighting (docs/lighting.md): exposure, tone mapping, the environment's rotation, and
+    // the environment itself (neutral | none | FILE.hdr). The defaults are the look before
+    // image-based lighting; lfd-play's flags choose the neutral studio and PBR Neutral.
+    FrameLighting lighting;
+    std::string environment = "none";
     std::filesystem::path pack;
     bool headless = false;
     std::string renderer = "mvr";          // any name of allRendererNames()

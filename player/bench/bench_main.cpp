@@ -152,6 +152,8 @@ void applyShared(const BenchFlags& flags, lfd::player::BenchOptions& options, Ma
     options.fps = shared.fps;
     options.turntablePeriod = shared.turntablePeriod;
     options.aniso = float(shared.aniso);
+    options.lighting = lfd::player::frameLightingFromFlags(shared);
+    options.environment = shared.environment;
     lfd::player::applySharedFlags(shared, options.rendererOptions);
     shape.size = shared.viewSize;
 }

@@ -4,6 +4,7 @@
 #include "gl_debug_output.h"
 
 #include "frame_pipeline.h"
+#include "gpu_environment.h"
 #include "frame_stages.h"
 #include "gstd_cache.h"
 #include "image_metrics.h"
@@ -181,7 +182,8 @@ void openGstdCache(BenchRun& run, const std::string& glDescription)
         if (!dir.empty()) {
             run.gstdCache.emplace(dir);
             run.gstdKey = gstdCacheKey(hashFileContents(options.pack), run.qualityTime, options.turntablePeriod,
-                                       run.profile, options.rendererOptions.gstd, glDescription);
+                                       run.profile, options.rendererOptions.gstd, glDescription) +
+                          " " + frameLightingKey(run.pipeline.lighting(), run.pipeline.environment());
         }
     }
 }
@@ -583,6 +585,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     GpuSceneOptions sceneOptions;
     sceneOptions.maxAnisotropy = options.aniso;
     FramePipeline pipeline(profile, scene, options.turntablePeriod, sceneOptions);
+    pipeline.setLighting(options.lighting, loadGpuEnvironment(options.environment));
     scene = Scene{}; // the GPU copy is all that is needed from here on
     report.sceneGpuBytes = pipeline.scene().gpuBytes();
     report.textureAnisotropy = pipeline.scene().maxAnisotropy();

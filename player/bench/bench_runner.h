@@ -47,6 +47,11 @@ struct BenchOptions {
     double fps = 60.0;              // frame k is at time k / fps
     double turntablePeriod = 10.0;  // seconds per revolution, 0 = still
     float aniso = 1.0f;             // --aniso: the scene textures' max anisotropy, every renderer
+    // Lighting for every renderer (docs/lighting.md): exposure, tone mapping, rotation, and
+    // the environment (neutral | none | FILE.hdr); the default is the look before
+    // image-based lighting, lfd-bench's flags choose the tools' default (neutral).
+    FrameLighting lighting;
+    std::string environment = "none";
     uint32_t qualityFrame = 0;      // frame whose views and EIA are compared
     uint32_t lensPositions = 9;     // --lens-positions: viewer positions of the through-the-lens sweep
     std::filesystem::path outDir;   // empty: nothing written

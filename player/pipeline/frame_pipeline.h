@@ -116,6 +116,7 @@ public:
     // image-based lighting; lfd-play and lfd-bench set their flags' choice.
     void setLighting(const FrameLighting& lighting, std::shared_ptr<const GpuEnvironment> environment);
     const FrameLighting& lighting() const { return lighting_; }
+    const GpuEnvironment* environment() const { return environment_.get(); }
 
     // The viewer's camera controls (frame.h), applied from the next frame on.
     void setViewControls(const ViewControls& controls) { controls_ = controls; }

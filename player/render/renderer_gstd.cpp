@@ -15,6 +15,7 @@
 #include "gstd_panel.h"
 #include "gl_context.h"
 #include "gl_handles.h"
+#include "gpu_environment.h"
 #include "gpu_timer.h"
 #include "raster_draw.h"
 #include "scene_bindings.h"
@@ -131,7 +132,8 @@ public:
         // batch of intervals before integrating them (fewer passes over the panel).
         const uint32_t batch = panel ? panelBatchViews(width, height, subViews, views) : 1;
         ensureTargets(width, height, batch * subViews);
-        const FrameSetup sub = subViewFrame(frame, options_.factor, subViews);
+        FrameSetup sub = subViewFrame(frame, options_.factor, subViews);
+        sub.lighting.environment = referenceEnvironment(frame.lighting.environment);
         if (panel) {
             if (!panel_)
                 panel_ = std::make_unique<GstdPanelAccumulator>();
@@ -174,6 +176,18 @@ public:
     uint64_t frameGpuBytes() const override { return panel_ ? panel_->bytes() : 0; }
 
 private:
+    // The gold standard's environment: the frame's source prefiltered with the reference
+    // preset (larger faces, more levels and samples; lighting::PrefilterSettings), made once
+    // per source and kept. Null without an environment.
+    const GpuEnvironment* referenceEnvironment(const GpuEnvironment* environment)
+    {
+        if (!environment)
+            return nullptr;
+        if (!reference_ || reference_->key() != environment->key() || reference_->source() != environment->source())
+            reference_ = withSettings(*environment, lighting::PrefilterSettings::reference());
+        return reference_.get();
+    }
+
     // Step 1: sub-view `index` (camera index of the sub-view frame) at high resolution into
     // layer `layer`, as mvr draws a view. beginFrame runs per sub-view because step 2
     // switches to the compute program (it re-uploads S N view matrices: negligible next to
@@ -289,6 +303,7 @@ private:
     uint32_t width_ = 0, height_ = 0, layers_ = 0;
     float anisotropy_ = 1.0f;
     std::unique_ptr<GstdPanelAccumulator> panel_; // the panel model's, made on first use
+    std::shared_ptr<const GpuEnvironment> reference_; // referenceEnvironment's
     bool panelReady_ = false;                     // the last render() filled it
 };
 

@@ -1,8 +1,11 @@
 #include "frame.h"
 
+#include "gpu_environment.h"
+
 #include <glm/ext/matrix_transform.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace lfd::player {
@@ -79,6 +82,15 @@ FrameSetup makeFrameSetup(const DisplayProfile& profile, const Framing& framing,
         frame.eyeScene.push_back(glm::vec3(sceneFromDisplay * glm::dvec4(camera.eye, 1.0)));
     }
     return frame;
+}
+
+std::string frameLightingKey(const FrameLighting& lighting, const GpuEnvironment* environment)
+{
+    // %a: exact (hexadecimal) doubles, so equal keys mean bit-equal settings.
+    char text[160];
+    std::snprintf(text, sizeof(text), "rotation=%a exposure=%a tonemap=%u", lighting.environmentRotationDeg,
+                  lighting.exposureEv, unsigned(lighting.toneMap));
+    return "environment=" + (environment ? environment->key() : std::string("none")) + " " + text;
 }
 
 } // namespace lfd::player

@@ -29,6 +29,10 @@ struct FrameLighting {
     std::vector<PunctualLight> lights;
 };
 
+// Everything in `lighting` (with `environment`, GpuEnvironment::key()) that changes pixels,
+// as text, for caches of rendered views (gstd's): the lights come from the pack.
+std::string frameLightingKey(const FrameLighting& lighting, const GpuEnvironment* environment);
+
 struct FrameSetup {
     DisplayProfile profile;  // views/view size already overridden from the command line
     Framing framing;

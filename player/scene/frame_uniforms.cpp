@@ -41,14 +41,12 @@ std::vector<PunctualLight> frameLights(const FrameSetup& frame)
 
 glm::mat3 environmentFromScene(const FrameSetup& frame)
 {
-    // displayFromScene's 3x3 is a rotation times the uniform mm-per-unit scale.
+    // displayFromScene's 3x3 is a rotation times the uniform mm-per-unit scale; the
+    // environment's axes are the display's (+y up, +z towards the viewer, as glTF's
+    // default camera sees a scene), turned by the rotation (lighting/environment.h).
     glm::dmat3 displayFromScene(frame.displayFromScene);
     displayFromScene /= glm::length(displayFromScene[0]);
-    const double a = glm::radians(frame.lighting.environmentRotationDeg);
-    // The environment turned by +a about +y: a direction d looks up R_y(-a) d.
-    const glm::dmat3 unrotate(glm::dvec3(std::cos(a), 0.0, std::sin(a)), glm::dvec3(0.0, 1.0, 0.0),
-                              glm::dvec3(-std::sin(a), 0.0, std::cos(a)));
-    return glm::mat3(unrotate * displayFromScene);
+    return lighting::environmentFromScene(float(frame.lighting.environmentRotationDeg)) * glm::mat3(displayFromScene);
 }
 
 FrameUniforms::FrameUniforms() : frame_(gl::createBuffer(sizeof(bindings::FrameGpu), GL_DYNAMIC_STORAGE_BIT)) {}
@@ -89,8 +87,6 @@ void FrameUniforms::upload(const FrameSetup& frame)
         const glm::mat3 envFromScene = environmentFromScene(frame);
         for (int c = 0; c < 3; ++c)
             block.environmentFromScene[c] = glm::vec4(envFromScene[c], 0.0f);
-        for (size_t k = 0; k < 9; ++k)
-            block.irradianceSh[k] = glm::vec4(lighting.environment->irradianceSh()[k], 0.0f);
         lighting.environment->bind();
     }
     glNamedBufferSubData(frame_, 0, sizeof(block), &block);

@@ -3,58 +3,113 @@
 #include "gl_context.h"
 #include "scene_bindings.h"
 
-#include <epoxy/gl.h>
+#include "environment_file.h"
+#include "neutral_environment.h"
 
+#include <epoxy/gl.h>
+#include <xxhash.h>
+
+#include <chrono>
+#include <cstdio>
 #include <string>
 
 namespace lfd::player {
 
-GpuEnvironment::GpuEnvironment(const EnvironmentMaps& maps) : sh_(maps.irradianceSh)
+namespace {
+
+// One cube map texture from `levels` (float RGB, GL's face order and rows), RGB16F: half
+// floats keep HDR radiance to 0.05%, the filtering is GL_LINEAR(_MIPMAP_LINEAR), seamless.
+gl::Texture createCube(const std::vector<lighting::CubeLevel>& levels, size_t& gpuBytes)
 {
-    const GLsizei levels = GLsizei(maps.levels.size());
-    if (levels == 0 || maps.faceSize == 0 || (maps.faceSize >> (levels - 1)) == 0)
-        throw gl::GlError("environment: " + std::to_string(levels) + " levels do not fit a " +
-                          std::to_string(maps.faceSize) + "-texel cube face");
-    if (maps.brdfSize == 0 || maps.brdfTable.size() != size_t(maps.brdfSize) * maps.brdfSize)
-        throw gl::GlError("environment: the BRDF table has " + std::to_string(maps.brdfTable.size()) +
-                          " texels, not " + std::to_string(maps.brdfSize) + "^2");
-
-    // Step 1: the specular cube, RGB16F (half floats keep HDR radiance to 0.05%), one
-    // roughness per level; seamless filtering across faces (GL 4.5 core, every driver).
-    cube_ = gl::createTexture(GL_TEXTURE_CUBE_MAP);
-    glTextureStorage2D(cube_, levels, GL_RGB16F, GLsizei(maps.faceSize), GLsizei(maps.faceSize));
-    for (GLsizei l = 0; l < levels; ++l) {
-        const uint32_t size = maps.faceSize >> l;
-        const std::vector<glm::vec3>& level = maps.levels[size_t(l)];
-        if (level.size() != size_t(6) * size * size)
-            throw gl::GlError("environment: cube level " + std::to_string(l) + " has " + std::to_string(level.size()) +
-                              " texels, not 6 x " + std::to_string(size) + "^2");
-        // Cube faces are layers 0..5 of a cube map's image (GL 4.5, 8.22: glTextureSubImage3D).
-        glTextureSubImage3D(cube_, l, 0, 0, 0, GLsizei(size), GLsizei(size), 6, GL_RGB, GL_FLOAT, level.data());
-        gpuBytes_ += size_t(6) * size * size * 6;
+    gl::Texture cube = gl::createTexture(GL_TEXTURE_CUBE_MAP);
+    const GLsizei count = GLsizei(levels.size());
+    glTextureStorage2D(cube, count, GL_RGB16F, GLsizei(levels[0].size), GLsizei(levels[0].size));
+    for (GLsizei l = 0; l < count; ++l) {
+        const lighting::CubeLevel& level = levels[size_t(l)];
+        // Cube faces are layers 0..5 of the texture's image (GL 4.5, 8.22).
+        glTextureSubImage3D(cube, l, 0, 0, 0, GLsizei(level.size), GLsizei(level.size), GLsizei(lighting::kCubeFaces),
+                            GL_RGB, GL_FLOAT, level.rgb.data());
+        gpuBytes += size_t(lighting::kCubeFaces) * level.size * level.size * 6;
     }
-    glTextureParameteri(cube_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    glTextureParameteri(cube_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(cube_, GL_TEXTURE_MAX_LEVEL, levels - 1);
-    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
-    maxLevel_ = float(levels - 1);
+    glTextureParameteri(cube, GL_TEXTURE_MIN_FILTER, count > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    glTextureParameteri(cube, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(cube, GL_TEXTURE_MAX_LEVEL, count - 1);
+    return cube;
+}
 
-    // Step 2: the BRDF table, read with bilinear filtering at (n.v, roughness).
+} // namespace
+
+GpuEnvironment::GpuEnvironment(std::shared_ptr<const lighting::Environment> source, std::string key,
+                               const lighting::PrefilterSettings& settings, const lighting::BrdfTable& table)
+    : source_(std::move(source)), key_(std::move(key)), settings_(settings)
+{
+    if (table.size != uint32_t(bindings::kBrdfTableSize))
+        throw gl::GlError("environment: the BRDF table is " + std::to_string(table.size) + "^2, the shaders read " +
+                          std::to_string(bindings::kBrdfTableSize) + "^2");
+    // Step 1: the prefilter (CPU, every core).
+    const auto start = std::chrono::steady_clock::now();
+    const lighting::PrefilteredEnvironment prefiltered = lighting::prefilterEnvironment(*source_, settings_);
+    prefilterSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    // Step 2: the cubes; seamless filtering across faces (GL 4.5 core, every driver), as
+    // lighting::sampleCubeBilinear mirrors it.
+    specular_ = createCube(prefiltered.specular.levels, gpuBytes_);
+    irradiance_ = createCube({prefiltered.irradianceCube}, gpuBytes_);
+    glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    maxLevel_ = float(prefiltered.specular.levels.size() - 1);
+
+    // Step 3: the table, read with bilinear filtering at lighting::brdfTableCoordinate.
     brdf_ = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(brdf_, 1, GL_RGB16F, GLsizei(maps.brdfSize), GLsizei(maps.brdfSize));
-    glTextureSubImage2D(brdf_, 0, 0, 0, GLsizei(maps.brdfSize), GLsizei(maps.brdfSize), GL_RGB, GL_FLOAT,
-                        maps.brdfTable.data());
+    glTextureStorage2D(brdf_, 1, GL_RGB16F, GLsizei(table.size), GLsizei(table.size));
+    glTextureSubImage2D(brdf_, 0, 0, 0, GLsizei(table.size), GLsizei(table.size), GL_RGB, GL_FLOAT, table.abc.data());
     glTextureParameteri(brdf_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTextureParameteri(brdf_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTextureParameteri(brdf_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(brdf_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    gpuBytes_ += size_t(maps.brdfSize) * maps.brdfSize * 6;
+    gpuBytes_ += size_t(table.size) * table.size * 6;
 }
 
 void GpuEnvironment::bind() const
 {
-    glBindTextureUnit(bindings::kUnitEnvironment, cube_);
+    glBindTextureUnit(bindings::kUnitEnvironment, specular_);
+    glBindTextureUnit(bindings::kUnitIrradiance, irradiance_);
     glBindTextureUnit(bindings::kUnitBrdfTable, brdf_);
+}
+
+const lighting::BrdfTable& shaderBrdfTable()
+{
+    static const lighting::BrdfTable table = lighting::splitSumBrdfTable(uint32_t(bindings::kBrdfTableSize), 2048);
+    return table;
+}
+
+std::shared_ptr<const GpuEnvironment> loadGpuEnvironment(const std::string& choice)
+{
+    if (choice == "none")
+        return nullptr;
+    std::shared_ptr<const lighting::Environment> source;
+    std::string key;
+    if (choice == "neutral") {
+        source = std::make_shared<const lighting::Environment>(lighting::neutralEnvironment());
+        key = "neutral";
+    } else {
+        source = std::make_shared<const lighting::Environment>(lighting::loadEnvironment(choice));
+        // The content, not the path, names a file's environment (caches survive a rename
+        // and see an edit).
+        const XXH64_hash_t hash = XXH3_64bits(source->rgb.data(), source->rgb.size() * sizeof(float));
+        char text[64];
+        std::snprintf(text, sizeof(text), "file:%016llx:%ux%u", static_cast<unsigned long long>(hash), source->width,
+                      source->height);
+        key = text;
+    }
+    return std::make_shared<const GpuEnvironment>(std::move(source), std::move(key),
+                                                  lighting::PrefilterSettings::player(), shaderBrdfTable());
+}
+
+std::shared_ptr<const GpuEnvironment> withSettings(const GpuEnvironment& environment,
+                                                   const lighting::PrefilterSettings& settings)
+{
+    return std::make_shared<const GpuEnvironment>(environment.source(), environment.key(), settings,
+                                                  shaderBrdfTable());
 }
 
 } // namespace lfd::player

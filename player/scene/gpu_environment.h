@@ -1,49 +1,61 @@
 // The scene's environment on the GPU, for image-based lighting (pbr_shading.glsl): the
-// GGX-prefiltered specular cube (mip level l holds roughness l / (levels - 1)), the
-// split-sum BRDF table and the irradiance's SH9 coefficients. The CPU side that makes them
-// is player/lighting/ (environment_prefilter.h); this class only uploads and binds.
+// GGX-prefiltered specular cube (level l holds GGX alpha 2^(l + 1 - levels), level 0 the
+// mirror; lighting/prefilter.h), the diffuse irradiance cube (E / pi) and the split-sum
+// BRDF table (A, B, C; lighting/brdf_table.h). The CPU side that makes them is
+// player/lighting/; this class prefilters through it once, uploads and binds.
 #pragma once
 
 #include "gl_handles.h"
 
-#include <glm/glm.hpp>
+#include "brdf_table.h"
+#include "environment.h"
+#include "prefilter.h"
 
-#include <array>
 #include <cstdint>
-#include <vector>
+#include <memory>
+#include <string>
 
 namespace lfd::player {
 
-// What GpuEnvironment uploads, as lfd_lighting produces it.
-struct EnvironmentMaps {
-    // Specular cube: levels[l] holds 6 faces of (faceSize >> l)^2 texels each, faces in GL
-    // order (+X, -X, +Y, -Y, +Z, -Z), rows from t = 0, linear radiance.
-    uint32_t faceSize = 0;
-    std::vector<std::vector<glm::vec3>> levels;
-    // E(n) / pi as SH9 (pbr_shading.glsl's lfdIrradianceSh evaluates them).
-    std::array<glm::vec3, 9> irradianceSh{};
-    // The BRDF table: brdfSize^2 texels (A, B, C), x = n.v and y = roughness at texel
-    // centres, row 0 at roughness 0.
-    uint32_t brdfSize = 0;
-    std::vector<glm::vec3> brdfTable;
-};
-
 class GpuEnvironment {
 public:
-    // Needs a current GL context; throws gl::GlError on inconsistent maps.
-    explicit GpuEnvironment(const EnvironmentMaps& maps);
+    // Prefilters `source` with `settings` (lfd_lighting, on every core) and uploads the
+    // cubes and `table`. `key` names the source for caches (e.g. "neutral",
+    // "file:<content hash>"). Needs a current GL context.
+    GpuEnvironment(std::shared_ptr<const lighting::Environment> source, std::string key,
+                   const lighting::PrefilterSettings& settings, const lighting::BrdfTable& table);
 
-    // Binds the cube and the table to LFD_UNIT_ENVIRONMENT / LFD_UNIT_BRDF_TABLE.
+    // Binds the cubes and the table to LFD_UNIT_ENVIRONMENT, LFD_UNIT_IRRADIANCE and
+    // LFD_UNIT_BRDF_TABLE.
     void bind() const;
-    const std::array<glm::vec3, 9>& irradianceSh() const { return sh_; }
-    float maxLevel() const { return maxLevel_; } // the cube's last level (roughness 1)
+    float maxLevel() const { return maxLevel_; } // the specular cube's last level (alpha 1)
+    const std::string& key() const { return key_; }
+    const lighting::PrefilterSettings& settings() const { return settings_; }
+    const std::shared_ptr<const lighting::Environment>& source() const { return source_; }
     size_t gpuBytes() const { return gpuBytes_; }
+    double prefilterSeconds() const { return prefilterSeconds_; }
 
 private:
-    gl::Texture cube_, brdf_;
-    std::array<glm::vec3, 9> sh_{};
+    std::shared_ptr<const lighting::Environment> source_;
+    std::string key_;
+    lighting::PrefilterSettings settings_;
+    gl::Texture specular_, irradiance_, brdf_;
     float maxLevel_ = 0.0f;
     size_t gpuBytes_ = 0;
+    double prefilterSeconds_ = 0.0;
 };
+
+// The split-sum table the shaders read (LFD_BRDF_TABLE_SIZE^2 at 2048 samples per texel:
+// within 2e-4 of the exact terms, lighting/brdf_table.h), computed once per process.
+const lighting::BrdfTable& shaderBrdfTable();
+
+// `--environment`: "none" (null: the constant ambient term), "neutral" (the built-in
+// studio) or a Radiance .hdr file, prefiltered with the player's settings. Throws
+// lighting::EnvironmentError naming the file.
+std::shared_ptr<const GpuEnvironment> loadGpuEnvironment(const std::string& choice);
+
+// The same source prefiltered with other settings (gstd's reference preset).
+std::shared_ptr<const GpuEnvironment> withSettings(const GpuEnvironment& environment,
+                                                   const lighting::PrefilterSettings& settings);
 
 } // namespace lfd::player
