@@ -31,7 +31,8 @@ const json& arrayOf(const json& document, const char* key)
 size_t sizeOf(const json& o, const char* key, size_t fallback = 0)
 {
     const auto it = o.find(key);
-    return it != o.end() && it->is_number() && it->get<double>() >= 0 ? size_t(it->get<double>()) : fallback;
+    const double d = it != o.end() && it->is_number() ? it->get<double>() : -1.0;
+    return d >= 0 && d < 9.0e15 ? size_t(d) : fallback;
 }
 
 // Components of one element of an accessor `type` (0 for matrices, which Draco does not fill).

@@ -4,20 +4,24 @@
 #include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 namespace lfd::bake::gltf {
 namespace {
 
 using json = nlohmann::json;
 
+// A non-negative integer member ("count": 4.0 is one, as the schema check accepts it), or
+// `fallback` when absent.
 std::optional<size_t> size(const json& o, const char* key, size_t fallback)
 {
     const auto it = o.find(key);
     if (it == o.end())
         return fallback;
-    if (!it->is_number_unsigned() && !it->is_number_integer())
+    const double d = it->is_number() ? it->get<double>() : -1.0;
+    if (!(d >= 0 && d < 9.0e15) || d != std::floor(d))
         return std::nullopt;
-    const int64_t v = it->get<int64_t>();
-    return v < 0 ? std::nullopt : std::optional<size_t>(size_t(v));
+    return size_t(d);
 }
 
 // Appendix A: the first byte of each stream is 0xa0 | version (attributes), 0xe0 |

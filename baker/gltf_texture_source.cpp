@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace lfd::bake::gltf {
@@ -16,9 +17,12 @@ std::optional<size_t> index(const json& o, const char* key)
     if (!o.is_object())
         return std::nullopt;
     const auto it = o.find(key);
-    if (it == o.end() || !it->is_number() || it->get<double>() < 0 || it->get<double>() != double(size_t(it->get<double>())))
+    if (it == o.end() || !it->is_number())
         return std::nullopt;
-    return size_t(it->get<double>());
+    const double d = it->get<double>();
+    if (!(d >= 0 && d < 9.0e15) || d != std::floor(d)) // the schema check reported it
+        return std::nullopt;
+    return size_t(d);
 }
 
 bool uses(const json& document, const char* extension)

@@ -179,6 +179,20 @@ TEST_F(GltfCompression, KhrMeshoptCompressionReadsAsTheExtPrefix)
     expectSameScene(reference(), import(khr), kGridTolerance);
 }
 
+TEST_F(GltfCompression, MeshoptIntegersWrittenAsFloatsAreIntegers)
+{
+    // JSON has one number type: "count": 4.0 is the integer 4 (the schema check's rule too).
+    const fs::path floats = patched("gallery-meshopt.glb", [](json& doc, std::vector<uint8_t>&) {
+        for (json& view : doc["bufferViews"])
+            if (view.contains("extensions"))
+                for (const char* key : {"byteStride", "count", "byteLength", "byteOffset"}) {
+                    json& ext = view["extensions"]["EXT_meshopt_compression"];
+                    ext[key] = ext.value(key, 0.0) * 1.0;
+                }
+    });
+    expectSameScene(reference(), import(floats), kGridTolerance);
+}
+
 TEST_F(GltfCompression, DecodedSceneDoesNotDependOnTheThreadCount)
 {
     for (const char* name : {"gallery-draco.glb", "gallery-meshopt.glb"}) {
