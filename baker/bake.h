@@ -66,11 +66,13 @@ struct ImportedScene {
 // matrices) and morph targets (POSITION, NORMAL, TANGENT deltas): each node instance of a
 // skinned or morphed mesh becomes a Deformer with a mesh of its own; KHR_texture_transform
 // (Material::textureTransforms, texCoord overrides), KHR_materials_unlit and
-// KHR_lights_punctual (a Light per node instance). Drops streams nothing uses. Errors (throw BakeError): unreadable/malformed file, Draco, required
-// unsupported extensions, out-of-range accessors. Warnings name what is not supported:
-// a skinned node whose mesh has no influences, morph attributes other than the three,
-// more than four influences, non-triangle primitives, optional extensions.
-ImportedScene importGltf(const std::filesystem::path& path, const Log& log);
+// KHR_lights_punctual (a Light per node instance). Drops streams nothing uses. Draco- and
+// meshopt-compressed geometry is decoded on up to `threads` threads (0: one per hardware
+// thread). Errors (throw BakeError): unreadable/malformed file, streams that do not
+// decode, required unsupported extensions, out-of-range accessors. Warnings name what is
+// not supported: a skinned node whose mesh has no influences, morph attributes other than
+// the three, more than four influences, non-triangle primitives, optional extensions.
+ImportedScene importGltf(const std::filesystem::path& path, const Log& log, unsigned threads = 0);
 
 // ---- deformers.cpp ----------------------------------------------------------------
 // Gives every deformer's node a mesh no other node instances (copies of the mesh's

@@ -13,7 +13,9 @@
 #include "gltf_load.h"
 #include "gltf_material_extensions.h"
 #include "gltf_resources.h"
+#include "gltf_texture_source.h"
 #include "gltf_validation.h"
+#include "texture_webp.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
@@ -105,8 +107,8 @@ void checkExtensions(const tinygltf::Model& model, Warnings& warnings)
             continue;
         if (name == "KHR_materials_pbrSpecularGlossiness")
             warnings.add("ignores optional extension " + name + " (uses the metallic-roughness data)");
-        else if (name == "KHR_draco_mesh_compression")
-            warnings.add("ignores optional extension " + name + " (uses the uncompressed accessors)");
+        else if (name == "KHR_texture_basisu")
+            warnings.add("ignores optional extension " + name + " (uses the textures' PNG or JPEG sources)");
         else
             warnings.add("ignores optional extension " + name);
     }
@@ -286,17 +288,21 @@ std::string mimeFromExtension(const fs::path& file, const std::string& fallback)
         return "image/png";
     if (ext == ".jpg" || ext == ".jpeg")
         return "image/jpeg";
+    if (ext == ".webp")
+        return "image/webp";
     return fallback;
 }
 
 // A data URI's image without "mimeType": named by its signature (validation has checked
-// that the URI's media type is image/png or image/jpeg).
+// that the URI's media type is one the file may use: gltf_texture_source.h).
 std::string mimeFromSignature(std::span<const uint8_t> bytes)
 {
     if (bytes.size() >= 8 && bytes[0] == 0x89 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G')
         return "image/png";
     if (bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff)
         return "image/jpeg";
+    if (isWebp(bytes))
+        return "image/webp";
     return {};
 }
 
@@ -322,10 +328,11 @@ public:
                           " (only TEXCOORD_0 is supported): treated as untextured");
             return kNone;
         }
-        const int image = model_.textures[size_t(textureIndex)].source;
+        // The EXT_texture_webp image where there is one, else the core source.
+        const int image = gltf::textureImage(model_.textures[size_t(textureIndex)]);
         if (image < 0) {
             warnings_.add(slot + " texture " + std::to_string(textureIndex) +
-                          " has no core image source: treated as untextured");
+                          " has no core or WebP image source: treated as untextured");
             return kNone;
         }
         if (size_t(image) >= model_.images.size())
@@ -1208,13 +1215,13 @@ void logImportSummary(const Scene& scene, const Log& log)
 }
 
 // Steps 1-8 of the import into result (warnings held in `warnings`).
-void importInto(const std::filesystem::path& path, const std::string& file, const Log& log, Warnings& warnings,
-                ImportedScene& result)
+void importInto(const std::filesystem::path& path, const std::string& file, const Log& log, unsigned threads,
+                Warnings& warnings, ImportedScene& result)
 {
     Scene& scene = result.scene;
     // Step 1: load and check the whole document (no image decoding); its warnings first.
     std::vector<gltf::SchemaIssue> issues;
-    const gltf::LoadedGltf loaded = gltf::loadGltf(path, file, issues);
+    const gltf::LoadedGltf loaded = gltf::loadGltf(path, file, issues, threads);
     result.filesRead.push_back(path);
     result.filesRead.insert(result.filesRead.end(), loaded.bufferFiles.begin(), loaded.bufferFiles.end());
     for (const gltf::SchemaIssue& issue : issues)
@@ -1249,7 +1256,7 @@ void importInto(const std::filesystem::path& path, const std::string& file, cons
 
 } // namespace
 
-ImportedScene importGltf(const std::filesystem::path& path, const Log& log)
+ImportedScene importGltf(const std::filesystem::path& path, const Log& log, unsigned threads)
 {
     const std::string file = path.string();
     ImportedScene result;
@@ -1257,7 +1264,7 @@ ImportedScene importGltf(const std::filesystem::path& path, const Log& log)
     Warnings warnings(log, result.warnings);
 
     try {
-        importInto(path, file, log, warnings, result);
+        importInto(path, file, log, threads, warnings, result);
     } catch (const BakeError&) {
         // The warnings found before the error are reported with it - after it under
         // --strict, where reporting a warning refuses the input, so the error stays the

@@ -4,6 +4,7 @@
 
 #include "gltf_accessors.h" // fail, firstLine
 #include "gltf_container.h"
+#include "gltf_decompress.h"
 #include "gltf_resources.h"
 #include "gltf_semantics.h"
 
@@ -98,8 +99,22 @@ bool captureImage(tinygltf::Image* image, const int, std::string*, std::string*,
     return true;
 }
 
-// The extensionsRequired the baker cannot honour (e.g. Draco), as "extensionsRequired[i]:
-// requires unsupported extension NAME".
+// Why the baker refuses a required extension it knows of (README "glTF extensions");
+// "" for the rest, which it does not implement.
+std::string refusalReason(const std::string& name)
+{
+    static const std::map<std::string, std::string> reasons = {
+        {"KHR_texture_basisu", "KTX2 / Basis Universal textures: Debian 12 packages no KTX2 decoder"},
+        {"EXT_mesh_gpu_instancing", "instanced nodes are not read"},
+        {"KHR_materials_pbrSpecularGlossiness", "archived; the baker reads metallic-roughness materials"},
+        {"KHR_techniques_webgl", "archived; shaders are not read"},
+    };
+    const auto it = reasons.find(name);
+    return it == reasons.end() ? std::string() : " (" + it->second + ")";
+}
+
+// The extensionsRequired the baker cannot honour (e.g. KHR_texture_basisu), as
+// "extensionsRequired[i]: requires unsupported extension NAME (why)".
 std::vector<std::string> unsupportedRequired(const json& document)
 {
     std::vector<std::string> found;
@@ -108,7 +123,7 @@ std::vector<std::string> unsupportedRequired(const json& document)
             const json& name = document["extensionsRequired"][i];
             if (name.is_string() && !supportedExtensions().count(name.get<std::string>()))
                 found.push_back("extensionsRequired[" + std::to_string(i) + "]: requires unsupported extension " +
-                                name.get<std::string>());
+                                name.get<std::string>() + refusalReason(name.get<std::string>()));
         }
     return found;
 }
@@ -329,13 +344,15 @@ std::vector<SkinJson> readSkins(const json& document, size_t nodeCount)
 
 const std::set<std::string>& supportedExtensions()
 {
-    static const std::set<std::string> names = {"KHR_mesh_quantization", "KHR_materials_emissive_strength",
-                                                "KHR_texture_transform", "KHR_materials_unlit",
-                                                "KHR_lights_punctual"};
+    static const std::set<std::string> names = {"KHR_mesh_quantization",      "KHR_materials_emissive_strength",
+                                                "KHR_texture_transform",      "KHR_materials_unlit",
+                                                "KHR_lights_punctual",        "KHR_draco_mesh_compression",
+                                                "EXT_meshopt_compression",    "KHR_meshopt_compression",
+                                                "EXT_texture_webp"};
     return names;
 }
 
-LoadedGltf loadGltf(const fs::path& path, const std::string& file, std::vector<SchemaIssue>& warnings)
+LoadedGltf loadGltf(const fs::path& path, const std::string& file, std::vector<SchemaIssue>& warnings, unsigned threads)
 {
     std::error_code ec;
     if (!fs::exists(path, ec))
@@ -370,7 +387,12 @@ LoadedGltf loadGltf(const fs::path& path, const std::string& file, std::vector<S
     std::vector<SchemaIssue> resourceIssues;
     ResolvedResources resources = resolveResources(document, container, path.parent_path(), resourceIssues);
 
-    // Step 3: tinygltf parses the checked document, the bytes from memory.
+    // Step 3: compressed geometry decoded into buffers of its own, the document rewritten
+    // to read them (gltf_decompress.h); a stream that does not decode refuses the file.
+    decodeCompressedGeometry(document, resources.buffers, resources.withoutData, threads, issues);
+    failOnErrors(issues, file, warnings);
+
+    // Step 4: tinygltf parses the checked document, the bytes from memory.
     Memory memory{std::move(resources.buffers), resources.dataImages};
     const json forTinygltf = documentForTinygltf(document, memory, file);
     LoadedGltf out;
@@ -386,7 +408,7 @@ LoadedGltf loadGltf(const fs::path& path, const std::string& file, std::vector<S
                 out.accessorsWithoutData.insert(a);
         }
 
-    // Step 4: the semantics and the data (links between objects, accessor contents; no data
+    // Step 5: the semantics and the data (links between objects, accessor contents; no data
     // check on bytes the file does not hold), then the resources' problems.
     validateGltfSemantics(out.model, document, resources.withoutData, issues);
     for (SchemaIssue& issue : resourceIssues)

@@ -4,7 +4,9 @@
 // (gltf_validation.h), the buffers and images the URIs name (gltf_resources.h), then the
 // document's semantics and data (gltf_semantics.h). tinygltf only parses JSON that has
 // passed, with every buffer's bytes handed to it from memory, so its own messages never
-// reach the user. Every finding names the file and a JSON path (README "Validation").
+// reach the user. Compressed geometry (Draco, meshopt) is decoded between the resources and
+// the semantics (gltf_decompress.h), so the semantic checks see plain accessors. Every
+// finding names the file and a JSON path (README "Validation").
 #pragma once
 
 #include "gltf_validation.h"
@@ -48,12 +50,16 @@ struct LoadedGltf {
 // The extensions the baker honours when a file requires them: KHR_mesh_quantization
 // (wider accessor component types, which the accessor reader handles),
 // KHR_materials_emissive_strength (folded into emissiveFactor), KHR_texture_transform and
-// KHR_materials_unlit (gltf_material_extensions.h) and KHR_lights_punctual (gltf_lights.h).
+// KHR_materials_unlit (gltf_material_extensions.h), KHR_lights_punctual (gltf_lights.h),
+// KHR_draco_mesh_compression and EXT_/KHR_meshopt_compression (decoded at load:
+// gltf_decompress.h) and EXT_texture_webp (WebP images, decoded by the texture stage).
 const std::set<std::string>& supportedExtensions();
 
 // Loads `path`. When any check finds an error, throws BakeError naming `file` and the first
 // error in check order (with the number of others); otherwise returns the model and appends
-// every warning found to `warnings`.
-LoadedGltf loadGltf(const std::filesystem::path& path, const std::string& file, std::vector<SchemaIssue>& warnings);
+// every warning found to `warnings`. Compressed geometry is decoded on up to `threads`
+// threads (0: one per hardware thread).
+LoadedGltf loadGltf(const std::filesystem::path& path, const std::string& file, std::vector<SchemaIssue>& warnings,
+                    unsigned threads = 0);
 
 } // namespace lfd::bake::gltf

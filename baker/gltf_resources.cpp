@@ -1,6 +1,8 @@
 // Buffers and images of a glTF document, resolved by the baker (see gltf_resources.h).
 #include "gltf_resources.h"
 
+#include "gltf_texture_source.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -81,12 +83,25 @@ const json& arrayOf(const json& document, const char* key)
     return it != document.end() && it->is_array() ? *it : empty;
 }
 
-// Which buffers some buffer view of an accessor (base or sparse) or of an image reads, with
-// one such view per buffer for messages.
+// The buffer views a KHR_draco_mesh_compression primitive decodes.
+void dracoViews(const json& document, std::set<size_t>& viewsRead)
+{
+    for (const json& mesh : arrayOf(document, "meshes"))
+        if (mesh.is_object() && mesh.contains("primitives") && mesh["primitives"].is_array())
+            for (const json& p : mesh["primitives"])
+                if (p.is_object() && p.contains("extensions") && p["extensions"].is_object())
+                    if (auto v = indexOf(p["extensions"].value("KHR_draco_mesh_compression", json()), "bufferView"))
+                        viewsRead.insert(*v);
+}
+
+// Which buffers some buffer view of an accessor (base or sparse), of an image or of a Draco
+// primitive reads, or a meshopt-compressed view decodes, with one such view per buffer for
+// messages.
 std::map<size_t, size_t> buffersRead(const json& document)
 {
     const json& views = arrayOf(document, "bufferViews");
     std::set<size_t> viewsRead;
+    dracoViews(document, viewsRead);
     for (const json& a : arrayOf(document, "accessors")) {
         if (auto v = indexOf(a, "bufferView"))
             viewsRead.insert(*v);
@@ -104,17 +119,24 @@ std::map<size_t, size_t> buffersRead(const json& document)
         if (v < views.size())
             if (auto b = indexOf(views[v], "buffer"))
                 read.emplace(*b, v);
+    // EXT_/KHR_meshopt_compression: the extension names the buffer of the compressed bytes.
+    for (size_t v = 0; v < views.size(); ++v)
+        if (views[v].is_object() && views[v].contains("extensions") && views[v]["extensions"].is_object())
+            for (const char* name : {"EXT_meshopt_compression", "KHR_meshopt_compression"})
+                if (auto b = indexOf(views[v]["extensions"].value(name, json()), "buffer"))
+                    read.emplace(*b, v);
     return read;
 }
 
-// Which images a material's texture uses.
+// Which images a material's texture uses: the texture's EXT_texture_webp source when it
+// has one (the baker prefers it), its core source otherwise (gltf_texture_source.h).
 std::set<size_t> imagesUsed(const json& document)
 {
     const json& textures = arrayOf(document, "textures");
     std::set<size_t> used;
     auto texture = [&](const json& info) {
         if (auto t = indexOf(info, "index"); t && *t < textures.size())
-            if (auto i = indexOf(textures[*t], "source"))
+            if (auto i = textureImage(textures[*t]))
                 used.insert(*i);
     };
     for (const json& m : arrayOf(document, "materials")) {
@@ -304,10 +326,11 @@ private:
         if (data->empty())
             report(s, path, "empty data URI");
         // Section 3.8.4.4: core glTF images are PNG or JPEG, named by their media type
-        // (the data URI's, and mimeType when given, must agree).
+        // (the data URI's, and mimeType when given, must agree); EXT_texture_webp adds
+        // image/webp, KHR_texture_basisu image/ktx2, in files that use them.
         const std::string media = lower(uri.mediaType);
-        if (media != "image/png" && media != "image/jpeg")
-            report(s, path, "data URI media type '" + uri.mediaType + "' is not image/png or image/jpeg");
+        if (!knownMediaType(document_, media))
+            report(s, path, "data URI media type '" + uri.mediaType + "' is not one of " + describeMediaTypes(document_));
         else if (im.contains("mimeType") && im["mimeType"].is_string() && lower(im["mimeType"].get<std::string>()) != media)
             // The baker decodes by content, so a disagreement it can work around is a warning.
             report(SchemaIssue::Severity::Warning, at(at("images", i), "mimeType"),

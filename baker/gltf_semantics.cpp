@@ -542,7 +542,8 @@ private:
     // attribute table states this without a MUST, and the baker repairs it (renormalises;
     // replaces zero-length normals by the smooth normal of the adjacent triangles), so it is
     // a warning. The tolerance allows float rounding of a unit vector written in single
-    // precision. Non-finite values are left to finite(), which refuses them.
+    // precision, and for normalized integers (KHR_mesh_quantization) the quantisation error
+    // (unitTolerance). Non-finite values are left to finite(), which refuses them.
     void unitVectors(int a, int type, const std::string& path)
     {
         if (!checkedUnit_.insert(a).second)
@@ -551,12 +552,13 @@ private:
         if (!v)
             return;
         const size_t c = size_t(v->components);
+        const double tolerance = unitTolerance(m_.accessors[size_t(a)]);
         for (size_t e = 0; e < v->count; ++e) {
             const float* x = &v->values[e * c];
             const double length = std::sqrt(double(x[0]) * x[0] + double(x[1]) * x[1] + double(x[2]) * x[2]);
             if (!std::isfinite(length))
                 return;
-            if (!(std::abs(length - 1.0) <= 5e-4)) {
+            if (!(std::abs(length - 1.0) <= tolerance)) {
                 report(kWarn, accessorPath(a), "element " + std::to_string(e) + " has length " + json(length).dump() +
                                                     ", not 1 (" + path + " holds unit vectors): renormalised" +
                                                     (c == 3 ? ", zero-length ones replaced by smooth normals" : ""));
@@ -568,6 +570,20 @@ private:
                 return;
             }
         }
+    }
+
+    // How far from 1 the length of a stored unit vector may be without a warning. FLOAT:
+    // single-precision rounding. Normalized BYTE or SHORT (KHR_mesh_quantization): each
+    // component is rounded to the grid of the encoder's precision, so the length is off by
+    // up to half a grid step times sqrt(3) - and encoders quantise to fewer bits than the
+    // component holds (gltf-transform's `quantize` writes 10-bit normals into SHORT, the
+    // extension's "Implementation Note" says quantized normals "are typically not exactly
+    // unit length"). The bound is one step of the coarsest grid the extension stores, BYTE's
+    // 1/127, which covers any encoder using 8 bits or more in either type; a length further
+    // off is a wrong vector, not a rounded one.
+    static double unitTolerance(const tinygltf::Accessor& acc)
+    {
+        return acc.componentType == kFloat || !acc.normalized ? 5e-4 : 1.0 / 127.0;
     }
 
     void finite(int a, int type, const std::string& path)

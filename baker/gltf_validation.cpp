@@ -3,6 +3,8 @@
 // Reference"); section numbers are cited where a rule is not a plain JSON-schema type.
 #include "gltf_validation.h"
 
+#include "gltf_texture_source.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -497,6 +499,29 @@ private:
                     index(value, at(tp, name), "accessors", kWarn);
             }
         common(p, path);
+        if (const json* ext = member(p, "extensions"); ext != nullptr && ext->is_object())
+            if (const json* draco = object(*ext, "KHR_draco_mesh_compression", at(path, "extensions"), kError))
+                dracoExtension(*draco, at(at(path, "extensions"), "KHR_draco_mesh_compression"), p);
+    }
+
+    // KHR_draco_mesh_compression (its README, "glTF Schema Updates"): the view holding the
+    // stream, and the stream's id of each attribute, "a subset of the attributes of the
+    // primitive". The baker decodes it whether or not the file also has the uncompressed data.
+    void dracoExtension(const json& d, const std::string& path, const json& primitive)
+    {
+        indexMember(d, "bufferView", path, "bufferViews", kError, true);
+        const json* attributes = object(d, "attributes", path, kError, true);
+        if (attributes == nullptr)
+            return;
+        const json* own = member(primitive, "attributes");
+        for (const auto& [name, id] : attributes->items()) {
+            const std::string ap = at(at(path, "attributes"), name);
+            if (!isInteger(id) || id.get<double>() < 0 || id.get<double>() > double(INT32_MAX))
+                report(kError, ap, "expected a Draco attribute id (an integer >= 0), got " + describe(id));
+            else if (own == nullptr || !own->is_object() || !own->contains(name))
+                report(kError, ap, "names an attribute the primitive does not have (the extension's attributes are a "
+                                   "subset of the primitive's)");
+        }
     }
 
     void accessor(const json& a, const std::string& path)
@@ -567,6 +592,67 @@ private:
         if (enumInteger(v, "target", path, {34962, 34963}, kWarn) == 34963 && member(v, "byteStride") != nullptr)
             report(kError, at(path, "byteStride"), "defined for a buffer view of index data (target 34963)");
         common(v, path);
+        if (const json* ext = member(v, "extensions"); ext != nullptr && ext->is_object()) {
+            // KHR_meshopt_compression, "Exclusions": not on a view that has the EXT one.
+            if (ext->contains("EXT_meshopt_compression") && ext->contains("KHR_meshopt_compression"))
+                report(kError, at(path, "extensions"), "has both EXT_meshopt_compression and KHR_meshopt_compression");
+            for (const char* name : {"EXT_meshopt_compression", "KHR_meshopt_compression"})
+                if (const json* m = object(*ext, name, at(path, "extensions"), kError))
+                    meshoptExtension(*m, at(at(path, "extensions"), name), v,
+                                     std::strcmp(name, "KHR_meshopt_compression") == 0);
+        }
+    }
+
+    // EXT_meshopt_compression / KHR_meshopt_compression, "JSON schema updates": the
+    // compressed range and the decoded layout, with the rules "for the extension object to
+    // be valid".
+    void meshoptExtension(const json& m, const std::string& path, const json& view, bool khr)
+    {
+        indexMember(m, "buffer", path, "buffers", kError, true);
+        integer(m, "byteOffset", path, kError, false, 0);
+        integer(m, "byteLength", path, kError, true, 1);
+        const std::optional<int64_t> stride = integer(m, "byteStride", path, kError, true, 1, 256);
+        const std::optional<int64_t> count = integer(m, "count", path, kError, true, 1);
+        const std::optional<std::string> mode =
+            enumString(m, "mode", path, {"ATTRIBUTES", "TRIANGLES", "INDICES"}, kError, true, "");
+        // KHR_meshopt_compression adds the COLOR filter.
+        const std::optional<std::string> filter =
+            khr ? enumString(m, "filter", path, {"NONE", "OCTAHEDRAL", "QUATERNION", "EXPONENTIAL", "COLOR"}, kError,
+                             false, "")
+                : enumString(m, "filter", path, {"NONE", "OCTAHEDRAL", "QUATERNION", "EXPONENTIAL"}, kError, false, "");
+        common(m, path);
+        if (!stride || !count)
+            return;
+        auto rule = [&](bool holds, const std::string& what) {
+            if (!holds)
+                report(kError, path, what);
+        };
+        const json* viewStride = member(view, "byteStride");
+        rule(viewStride == nullptr || !viewStride->is_number() || viewStride->get<double>() == double(*stride),
+             "byteStride " + std::to_string(*stride) + " differs from the buffer view's");
+        const json* length = member(view, "byteLength");
+        rule(length == nullptr || !length->is_number() || length->get<double>() == double(*stride) * double(*count),
+             "byteStride " + std::to_string(*stride) + " x count " + std::to_string(*count) +
+                 " differs from the buffer view's byteLength");
+        const std::string f = filter.value_or("NONE");
+        if (mode == "ATTRIBUTES")
+            rule(*stride % 4 == 0,
+                 "byteStride " + std::to_string(*stride) + " is not a multiple of 4 (mode ATTRIBUTES)");
+        if (mode == "TRIANGLES")
+            rule(*count % 3 == 0, "count " + std::to_string(*count) + " is not a multiple of 3 (mode TRIANGLES)");
+        if (mode == "TRIANGLES" || mode == "INDICES") {
+            rule(*stride == 2 || *stride == 4,
+                 "byteStride " + std::to_string(*stride) + " is not 2 or 4 (mode " + *mode + ")");
+            rule(f == "NONE", "filter " + f + " on index data (mode " + *mode + ")");
+        }
+        if (f == "OCTAHEDRAL" || f == "COLOR")
+            rule(*stride == 4 || *stride == 8,
+                 "byteStride " + std::to_string(*stride) + " is not 4 or 8 (filter " + f + ")");
+        if (f == "QUATERNION")
+            rule(*stride == 8, "byteStride " + std::to_string(*stride) + " is not 8 (filter QUATERNION)");
+        if (f == "EXPONENTIAL")
+            rule(*stride % 4 == 0,
+                 "byteStride " + std::to_string(*stride) + " is not a multiple of 4 (filter EXPONENTIAL)");
     }
 
     void buffer(const json& b, const std::string& path)
@@ -715,6 +801,13 @@ private:
         indexMember(t, "sampler", path, "samplers", kWarn);
         indexMember(t, "source", path, "images", kError);
         common(t, path);
+        // EXT_texture_webp's image is read (an error), KHR_texture_basisu's never is (a warning).
+        if (const json* ext = member(t, "extensions"); ext != nullptr && ext->is_object())
+            for (const auto& [name, severity] : {std::pair{kWebp, kError}, std::pair{kBasisu, kWarn}})
+                if (const json* e = object(*ext, name, at(path, "extensions"), severity)) {
+                    indexMember(*e, "source", at(at(path, "extensions"), name), "images", severity, true);
+                    common(*e, at(at(path, "extensions"), name));
+                }
     }
 
     // Samplers are not stored in the pack (the player samples with its own filters).
@@ -731,8 +824,12 @@ private:
     {
         const json* uri = string(i, "uri", path, kError);
         const bool hasView = indexMember(i, "bufferView", path, "bufferViews", kError).has_value();
-        enumString(i, "mimeType", path, {"image/jpeg", "image/png"}, kWarn, false,
-                   ": decoded by content");
+        // Section 5.18.2 "image.mimeType": image/jpeg or image/png, and the types the
+        // image-format extensions the file uses add (gltf_texture_source.h).
+        if (const json* mime = string(i, "mimeType", path, kError);
+            mime != nullptr && !knownMediaType(root_, mime->get<std::string>()))
+            report(kWarn, at(path, "mimeType"), "expected one of " + describeMediaTypes(root_) + ", got " +
+                                                    describe(*mime) + ": decoded by content");
         // Section 5.17 "image": uri or bufferView (then with mimeType), exactly one.
         if (uri != nullptr && member(i, "bufferView") != nullptr)
             report(kError, path, "has both uri and bufferView");

@@ -236,7 +236,7 @@ int bakeScene(const Options& o)
     };
 
     ImportedScene imported;
-    timed("import", [&] { imported = o.rgbd.empty() ? importGltf(o.input, log) : importRgbd(o.rgbdOptions, log); });
+    timed("import", [&] { imported = o.rgbd.empty() ? importGltf(o.input, log, o.threads) : importRgbd(o.rgbdOptions, log); });
     Scene& scene = imported.scene;
     double viewPixelWorld = 0.0;
     timed("bounds", [&] {
@@ -290,8 +290,8 @@ void addBakeFlags(CLI::App& app, Options& o)
     app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
     app.add_flag("--strict", o.strict, "treat every warning (e.g. a glTF schema violation the baker can work around) as an error");
     app.add_option("--threads", o.threads,
-                   "threads for tessellation, triangle statistics and mip chains (default 0: one per hardware "
-                   "thread; 1: serial); the pack is the same bytes for any count")
+                   "threads for Draco/meshopt decoding, tessellation, triangle statistics and mip chains (default 0: "
+                   "one per hardware thread; 1: serial); the pack is the same bytes for any count")
         ->check(CLI::Range(0u, 1024u));
     app.add_flag("--bench", o.bench,
                  "measure tessellation, triangle statistics, mip chains and BC1 compression with 1 and 2 threads (and --threads N "

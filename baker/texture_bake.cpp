@@ -15,12 +15,16 @@
 // used because they would hold (float) copies of the whole image.
 #include "bake.h"
 #include "mip_chain.h"
+#include "texture_webp.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <new>
 
@@ -81,19 +85,65 @@ std::string embeddedExtension(const TextureSource& source)
 }
 
 // An opened image. The proxy (embedded bytes) must outlive the input: members are
-// destroyed in reverse order, input first.
+// destroyed in reverse order, input first. A WebP image has no input: its bytes are
+// decoded by libwebp (texture_webp.h), whole, when its rows are read.
 struct OpenImage {
     std::unique_ptr<OIIO::Filesystem::IOMemReader> proxy;
     std::unique_ptr<OIIO::ImageInput> input;
+    std::vector<uint8_t> webpFile;   // an image file's bytes, read whole when it is WebP
+    std::span<const uint8_t> webp;   // the WebP bytes (embedded or webpFile); empty: not WebP
     int width = 0;
     int height = 0;
     int channels = 0; // channels read: min(nchannels, 4)
 };
 
+// Whether the file starts with the WebP signature.
+bool isWebpFile(const std::filesystem::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    std::array<uint8_t, 12> head{};
+    in.read(reinterpret_cast<char*>(head.data()), std::streamsize(head.size()));
+    return in.gcount() == std::streamsize(head.size()) && isWebp(head);
+}
+
+// The image's size, checked against what the baker can hold.
+void checkSize(const TextureSource& source, int width, int height)
+{
+    if (width <= 0 || height <= 0)
+        fail(source, "cannot decode: image has zero size (" + std::to_string(width) + "x" + std::to_string(height) + ")");
+    if (width > kMaxSourceDimension || height > kMaxSourceDimension)
+        fail(source, "cannot decode: image too large (" + std::to_string(width) + "x" + std::to_string(height) + ")");
+}
+
+// A WebP source (embedded, or a file with the WebP signature whatever its name) opened
+// for libwebp; false when the source is not WebP.
+bool openWebp(const TextureSource& source, OpenImage& image)
+{
+    if (!source.encoded.empty() && isWebp(source.encoded)) {
+        image.webp = source.encoded;
+    } else if (source.encoded.empty() && !source.file.empty() && isWebpFile(source.file)) {
+        std::ifstream in(source.file, std::ios::binary);
+        image.webpFile.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        image.webp = image.webpFile;
+    } else {
+        return false;
+    }
+    const std::optional<WebpSize> size = webpSize(image.webp);
+    if (!size)
+        fail(source, "cannot decode: not a valid WebP header");
+    checkSize(source, size->width, size->height);
+    image.width = size->width;
+    image.height = size->height;
+    image.channels = 4;
+    return true;
+}
+
 // Opens the source and reads its header only; validates what the header says.
 OpenImage openImage(const TextureSource& source)
 {
     OpenImage image;
+    if (openWebp(source, image))
+        return image;
     OIIO::ImageSpec config;
     // note: PNG alpha is associated (premultiplied) by OIIO by default; glTF textures
     // carry straight alpha, so ask for the stored values.
@@ -127,12 +177,7 @@ OpenImage openImage(const TextureSource& source)
     image.input->threads(1);
 
     const OIIO::ImageSpec& spec = image.input->spec();
-    if (spec.width <= 0 || spec.height <= 0)
-        fail(source, "cannot decode: image has zero size (" + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height) + ")");
-    if (spec.width > kMaxSourceDimension || spec.height > kMaxSourceDimension)
-        fail(source, "cannot decode: image too large (" + std::to_string(spec.width) + "x" +
-                         std::to_string(spec.height) + ")");
+    checkSize(source, spec.width, spec.height);
     if (spec.nchannels <= 0)
         fail(source, "cannot decode: image has no channels");
     image.width = spec.width;
@@ -181,11 +226,26 @@ void toRgba8(const T* in, int channels, uint32_t width, uint8_t* out)
     }
 }
 
+// Decodes a WebP image's RGBA8 rows `stride` bytes apart into `out`.
+void decodeWebpInto(const OpenImage& image, const TextureSource& source, uint8_t* out, size_t stride)
+{
+    if (const std::string why = decodeWebp(image.webp, {image.width, image.height}, out, stride); !why.empty())
+        fail(source, "cannot decode: " + why);
+}
+
 // Reads the image top to bottom in strips and hands each row, converted to RGBA8, to
-// `sink(row, y)`.
+// `sink(row, y)`. (A WebP image is decoded whole first: libwebp has no row-by-row output.)
 template <typename Sink>
 void readRows(OpenImage& image, const TextureSource& source, Sink&& sink)
 {
+    if (!image.webp.empty()) {
+        const size_t stride = size_t(image.width) * 4;
+        std::vector<uint8_t> rgba(stride * size_t(image.height));
+        decodeWebpInto(image, source, rgba.data(), stride);
+        for (uint32_t y = 0; y < uint32_t(image.height); ++y)
+            sink(rgba.data() + y * stride, y);
+        return;
+    }
     const OIIO::ImageSpec& spec = image.input->spec();
     const bool bytes = spec.format == OIIO::TypeDesc::UINT8 && spec.channelformats.empty();
     const OIIO::TypeDesc format = bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
@@ -259,7 +319,9 @@ Texture bakeTexture(const TextureSource& source, const TextureBakeOptions& optio
         for (glm::uvec2 s = sourceSize; s != storedSize; s = glm::max(s / 2u, glm::uvec2(1)))
             stages.emplace_back(s.x, s.y);
 
-        if (stages.empty()) {
+        if (stages.empty() && !image.webp.empty()) {
+            decodeWebpInto(image, source, level0, storedStride); // straight into level 0, no copy
+        } else if (stages.empty()) {
             readRows(image, source, [&](const uint8_t* row, uint32_t y) {
                 std::memcpy(level0 + y * storedStride, row, storedStride);
             });
@@ -277,7 +339,8 @@ Texture bakeTexture(const TextureSource& source, const TextureBakeOptions& optio
                                level0 + stages.back().lastOutputRow() * storedStride);
             });
         }
-        image.input->close();
+        if (image.input)
+            image.input->close();
 
         if (options.pool)
             mip::buildChain(texture.texels.data(), texture.mips, texture.srgb, *options.pool);

@@ -3,7 +3,8 @@
 # ./build-fuzz and runs each for a bounded time:
 #   lfd_pack_fuzz  the pack reader (tests/fuzz/pack_fuzz.cpp)
 #   lfd_gltf_fuzz  glTF ingestion: import -> bounds -> tessellation -> triangle statistics
-# Seeds: the project's samples (as self-contained .gltf and as baked packs), tests/data and
+# Seeds: the project's samples (as self-contained .gltf and as baked packs), tests/data (with
+# the Draco, meshopt, WebP and quantized GLBs of tests/data/gltf_compressed) and
 # the broken-file corpus of Debian's assimp-testmodels. Fails on any finding (crash,
 # sanitizer report, leak, timeout, out-of-memory); the input is kept in
 # build-fuzz/findings/ - commit it under tests/data/fuzz/ as a regression test.
@@ -49,6 +50,8 @@ done
 # The golden packs: every section of each format version, MEXT and LGHT included.
 cp tests/data/golden_*.lfdpack "$seeds/pack/"
 cp tests/data/gltf/*.gltf "$seeds/gltf/"
+# Compressed geometry and textures: Draco, meshopt, WebP and quantized GLBs (tests/data/gltf_compressed).
+cp tests/data/gltf_compressed/*.glb "$seeds/gltf/"
 [ -d tests/data/fuzz/gltf ] && cp tests/data/fuzz/gltf/* "$seeds/gltf/"
 [ -d tests/data/fuzz/pack ] && cp tests/data/fuzz/pack/* "$seeds/pack/"
 assimp=/usr/share/assimp/models/glTF2

@@ -19,6 +19,11 @@ namespace {
 
 using lfd::test::append;
 using lfd::test::base64;
+using lfd::test::Chunk;
+using lfd::test::glb;
+using lfd::test::jsonChunk;
+using lfd::test::kBin;
+using lfd::test::kJson;
 
 // The unit triangle's bytes: POSITION (0, 36 bytes), NORMAL (36, 36), indices (72, 6 + 2
 // padding), key times (80, 8), translations (88, 24).
@@ -67,38 +72,6 @@ json triangleScene(const std::vector<uint8_t>& bin = triangleBytes(), bool anima
                               {"channels", {{{"sampler", 0}, {"target", {{"node", 0}, {"path", "translation"}}}}}}}};
     }
     return doc;
-}
-
-// A GLB: the header, then `chunks` as given (type, payload padded with `pad`).
-struct Chunk {
-    uint32_t type;
-    std::vector<uint8_t> payload;
-    uint8_t pad;
-};
-constexpr uint32_t kJson = 0x4E4F534Au, kBin = 0x004E4942u;
-
-Chunk jsonChunk(const json& doc)
-{
-    std::string text = doc.dump();
-    while (text.size() % 4)
-        text += ' ';
-    return {kJson, std::vector<uint8_t>(text.begin(), text.end()), ' '};
-}
-
-std::vector<uint8_t> glb(const std::vector<Chunk>& chunks, bool alignChunks = true)
-{
-    std::vector<uint8_t> body;
-    for (const Chunk& c : chunks) {
-        std::vector<uint8_t> payload = c.payload;
-        while (alignChunks && payload.size() % 4)
-            payload.push_back(c.pad);
-        append<uint32_t>(body, {uint32_t(payload.size()), c.type});
-        body.insert(body.end(), payload.begin(), payload.end());
-    }
-    std::vector<uint8_t> out;
-    append<uint32_t>(out, {0x46546C67u, 2u, uint32_t(12 + body.size())});
-    out.insert(out.end(), body.begin(), body.end());
-    return out;
 }
 
 // The triangle scene as a GLB whose buffers[0] is the BIN chunk.

@@ -1,6 +1,7 @@
 // Writing glTF test files: little-endian values appended to a buffer, base64 for data
-// URIs, and a fixture that writes each case to a file of its own in a temporary folder.
-// Shared by the glTF validation and conformance tests.
+// URIs, GLB files (written, and read back into their JSON and BIN chunks), and a fixture
+// that writes each case to a file of its own in a temporary folder. Shared by the glTF
+// validation, conformance and compression tests.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,70 @@ void append(std::vector<uint8_t>& bin, std::initializer_list<T> values)
         std::memcpy(bytes, &v, sizeof(T));
         bin.insert(bin.end(), bytes, bytes + sizeof(T));
     }
+}
+
+// A GLB (glTF 2.0 section 4.4): the header, then `chunks` as given (type, payload padded
+// with `pad` unless `alignChunks` is false).
+struct Chunk {
+    uint32_t type;
+    std::vector<uint8_t> payload;
+    uint8_t pad;
+};
+inline constexpr uint32_t kJson = 0x4E4F534Au, kBin = 0x004E4942u;
+
+inline Chunk jsonChunk(const nlohmann::json& doc)
+{
+    std::string text = doc.dump();
+    while (text.size() % 4)
+        text += ' ';
+    return {kJson, std::vector<uint8_t>(text.begin(), text.end()), ' '};
+}
+
+inline std::vector<uint8_t> glb(const std::vector<Chunk>& chunks, bool alignChunks = true)
+{
+    std::vector<uint8_t> body;
+    for (const Chunk& c : chunks) {
+        std::vector<uint8_t> payload = c.payload;
+        while (alignChunks && payload.size() % 4)
+            payload.push_back(c.pad);
+        append<uint32_t>(body, {uint32_t(payload.size()), c.type});
+        body.insert(body.end(), payload.begin(), payload.end());
+    }
+    std::vector<uint8_t> out;
+    append<uint32_t>(out, {0x46546C67u, 2u, uint32_t(12 + body.size())});
+    out.insert(out.end(), body.begin(), body.end());
+    return out;
+}
+
+// A well-formed GLB file's JSON and BIN chunk (empty when it has none), for tests that
+// change a fixture in one place and write it back with glbOf().
+struct GlbParts {
+    nlohmann::json doc;
+    std::vector<uint8_t> bin;
+};
+
+inline GlbParts readGlb(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<uint8_t> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    GlbParts parts;
+    for (size_t at = 12; at + 8 <= file.size();) {
+        uint32_t length = 0, type = 0;
+        std::memcpy(&length, &file[at], 4);
+        std::memcpy(&type, &file[at + 4], 4);
+        const auto begin = file.begin() + std::ptrdiff_t(at + 8), end = begin + std::ptrdiff_t(length);
+        if (type == kJson)
+            parts.doc = nlohmann::json::parse(begin, end);
+        else if (type == kBin)
+            parts.bin.assign(begin, end);
+        at += 8 + length;
+    }
+    return parts;
+}
+
+inline std::vector<uint8_t> glbOf(const GlbParts& parts)
+{
+    return glb({jsonChunk(parts.doc), {kBin, parts.bin, 0}});
 }
 
 // A test whose cases are files: write() and writeBytes() give each its own name

@@ -187,13 +187,69 @@ def index_out_of_range():
     g.write("index_out_of_range.gltf")
 
 
-def draco_required():
-    g = Gltf()
-    g.doc["extensionsUsed"] = ["KHR_draco_mesh_compression"]
-    g.doc["extensionsRequired"] = ["KHR_draco_mesh_compression"]
-    g.doc["meshes"] = [{"primitives": [{"attributes": unit_triangle(g)}]}]
+# A 4x4 lossless WebP whose every pixel is (40, 200, 90, 128), straight alpha. Made with
+# Pillow 9.4: Image.new("RGBA", (4, 4), (40, 200, 90, 128)).save(f, "WEBP", lossless=True).
+WEBP_4X4 = base64.b64decode("UklGRh4AAABXRUJQVlA4TBEAAAAvA8AAEAdQ5KJUq4CBiOh/AAA=")
+# The KTX2 file identifier and nothing decodable: the baker never decodes KTX2.
+KTX2_STUB = b"\xabKTX 20\xbb\r\n\x1a\n" + bytes(68)
+
+
+def data_image(g, data, media):
+    g.doc.setdefault("images", []).append(
+        {"uri": "data:%s;base64,%s" % (media, base64.b64encode(data).decode()), "mimeType": media})
+    return len(g.doc["images"]) - 1
+
+
+def textured_triangle(g, texture):
+    """The unit triangle with uvs, its material's base colour from `texture`."""
+    attrs = unit_triangle(g)
+    attrs["TEXCOORD_0"] = g.accessor("ff", [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)], "VEC2", FLOAT, ARRAY_BUFFER)
+    g.doc["materials"] = [{"pbrMetallicRoughness": {"baseColorTexture": {"index": texture}}}]
+    g.doc["meshes"] = [{"primitives": [{"attributes": attrs, "material": 0}]}]
     g.single_node_scene()
-    g.write("draco_required.gltf")
+
+
+def webp_fallback():
+    # EXT_texture_webp used, not required: the texture's core source is a red PNG, its
+    # WebP source the WEBP_4X4 colour. The baker takes the WebP (the image the author
+    # intended), with its alpha straight: every texel (40, 200, 90, 128).
+    g = Gltf()
+    g.doc["extensionsUsed"] = ["EXT_texture_webp"]
+    png, webp = data_image(g, png_1x1([255, 0, 0, 255]), "image/png"), data_image(g, WEBP_4X4, "image/webp")
+    g.doc["textures"] = [{"source": png, "extensions": {"EXT_texture_webp": {"source": webp}}}]
+    textured_triangle(g, 0)
+    g.write("webp_fallback.gltf")
+
+
+def basisu(required):
+    # KHR_texture_basisu: its KTX2 image is never decoded. Used only: the core source (a
+    # red 1x1 PNG) is baked, with a warning. Required (no core source): refused.
+    g = Gltf()
+    g.doc["extensionsUsed"] = ["KHR_texture_basisu"]
+    ktx2 = data_image(g, KTX2_STUB, "image/ktx2")
+    texture = {"extensions": {"KHR_texture_basisu": {"source": ktx2}}}
+    if required:
+        g.doc["extensionsRequired"] = ["KHR_texture_basisu"]
+    else:
+        texture["source"] = data_image(g, png_1x1([255, 0, 0, 255]), "image/png")
+    g.doc["textures"] = [texture]
+    textured_triangle(g, 0)
+    g.write("basisu_required.gltf" if required else "basisu_fallback.gltf")
+
+
+def quantized_normals(bad):
+    # KHR_mesh_quantization: NORMAL as normalized BYTE (4-byte stride). Each unit normal is
+    # rounded to the 1/127 grid: (1,1,1)/sqrt(3) -> (73,73,73), length 0.99557 - off by
+    # more than float rounding, within one grid step: no warning. With `bad`, vertex 2's
+    # normal is (64,0,0), length 0.504: a wrong vector, which still warns.
+    g = Gltf()
+    g.doc["extensionsUsed"] = g.doc["extensionsRequired"] = ["KHR_mesh_quantization"]
+    normals = [(73, 73, 73, 0), (0, 0, 127, 0), (64, 0, 0, 0) if bad else (0, 90, 90, 0)]
+    n = g.accessor("bbbb", normals, "VEC3", 5120, ARRAY_BUFFER, normalized=True)
+    g.doc["bufferViews"][g.doc["accessors"][n]["bufferView"]]["byteStride"] = 4
+    g.doc["meshes"] = [{"primitives": [{"attributes": {"POSITION": g.positions(TRIANGLE), "NORMAL": n}}]}]
+    g.single_node_scene()
+    g.write("quantized_bad_normal.gltf" if bad else "quantized_normals.gltf")
 
 
 def missing_bin():
@@ -390,7 +446,8 @@ def malformed():
 
 if __name__ == "__main__":
     for case in [strip, fan, no_normals, hierarchy, sheared, recursive, accessor_out_of_bounds,
-                 index_out_of_range, draco_required, missing_bin, lines_and_triangles, cubic_spline,
+                 index_out_of_range, webp_fallback, lambda: basisu(False), lambda: basisu(True),
+                 lambda: quantized_normals(False), lambda: quantized_normals(True), missing_bin, lines_and_triangles, cubic_spline,
                  bad_key_times, unused_streams, normal_map, interleaved_sparse, schema_warnings, schema_error,
                  materials_and_lights, malformed]:
         case()
