@@ -40,6 +40,10 @@ SceneSummary writeCharacterScene(const std::filesystem::path& dir);
 // skeleton at its own phase of the loop, all sharing one mesh.
 SceneSummary writeCrowdScene(const std::filesystem::path& dir, int instances);
 
+// Two rows of six spheres, roughness 0 to 1: metal (pale gold) above, a red dielectric
+// below - the material grid for judging lighting (docs/lighting.md).
+SceneSummary writeSpheresScene(const std::filesystem::path& dir);
+
 // An RGB-D photo for `lfd-bake --rgbd`, not a glTF scene: photo.png, depth.png (white =
 // near) and photo_rgbd.png (the two side by side), 512 x 384 each.
 SceneSummary writeRgbdSample(const std::filesystem::path& dir);

@@ -99,7 +99,10 @@ RenderedFrame referenceFrame(const std::string& renderer, const fs::path& pack, 
                              uint32_t frame)
 {
     return renderFrame(renderer, readPack(pack), profile,
-                       {.time = double(frame) / kFps, .turntablePeriod = kTurntablePeriod, .eia = true});
+                       {.time = double(frame) / kFps,
+                        .turntablePeriod = kTurntablePeriod,
+                        .eia = true,
+                        .lighting = toolDefaultLighting()});
 }
 
 std::vector<std::vector<uint8_t>> pixelsOf(const std::vector<metrics::Image>& images)
@@ -386,7 +389,7 @@ TEST_F(CliTest, GstdRendererHeadlessWithFactor)
     const DisplayProfile profile =
         tenthPrototypeProfile("cli-small", 4, 96, 72);
     const RenderedFrame reference = renderFrame(*player::createGstdRenderer({.factor = 2}), readPack(pack_), profile,
-                                                {.turntablePeriod = kTurntablePeriod});
+                                                {.turntablePeriod = kTurntablePeriod, .lighting = toolDefaultLighting()});
     for (uint32_t v = 0; v < 4; ++v)
         EXPECT_EQ(imageMismatch(readView(out / "gstd_views", v), reference.views[v], 1), "") << "view " << v;
 
@@ -427,8 +430,9 @@ TEST_F(CliTest, GstdModelsFromTheCommandLine)
         options.factor = 2;
         options.subViews = 3;
         options.model = model;
-        const RenderedFrame reference = renderFrame(*player::createGstdRenderer(options), readPack(pack_), profile,
-                                                    {.turntablePeriod = kTurntablePeriod, .eia = true});
+        const RenderedFrame reference =
+            renderFrame(*player::createGstdRenderer(options), readPack(pack_), profile,
+                        {.turntablePeriod = kTurntablePeriod, .eia = true, .lighting = toolDefaultLighting()});
         EXPECT_EQ(imageMismatch(metrics::readImage(eia, 4), reference.eia, 1), "") << name;
     }
 }

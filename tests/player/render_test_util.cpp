@@ -2,6 +2,7 @@
 
 #include "eia_builder.h"
 #include "frame_uniforms.h"
+#include "gpu_environment.h"
 #include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "renderer_registry.h"
@@ -21,6 +22,15 @@
 #include <numbers>
 
 namespace lfd::test {
+
+player::FrameLighting toolDefaultLighting()
+{
+    static const std::shared_ptr<const player::GpuEnvironment> neutral = player::loadGpuEnvironment("neutral");
+    player::FrameLighting lighting;
+    lighting.environment = neutral.get();
+    lighting.toneMap = player::ToneMap::PbrNeutral;
+    return lighting;
+}
 
 RenderRequest atTurntableAngle(double angle)
 {

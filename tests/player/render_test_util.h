@@ -36,6 +36,10 @@ struct RenderedFrame {
     double seconds = 0.0;                  // wall time: upload, frames and read-back
 };
 
+// What lfd-play and lfd-bench light with by default (their flags' defaults): the neutral
+// studio (prefiltered once per process) and PBR Neutral at exposure 0.
+player::FrameLighting toolDefaultLighting();
+
 // A frame at turntable angle `angle` (radians): a period of 2 pi seconds makes the time the
 // angle.
 RenderRequest atTurntableAngle(double angle);

@@ -51,9 +51,10 @@ TEST(ShaderLibrary, EveryShaderFileIsEmbeddedVerbatim)
 TEST(ShaderLibrary, IncludesResolveOnceWithLineMarkers)
 {
     const gl::PreprocessedShader s = gl::preprocessShader("mvr.frag", {"LFD_TEST_DEFINE 7"});
-    // pbr_shading.glsl includes srgb.glsl, so it comes in between.
+    // pbr_shading.glsl includes srgb.glsl, so it comes in between; material_shading.glsl
+    // includes texture_transform.glsl.
     EXPECT_EQ(s.files, (std::vector<std::string>{"mvr.frag", "scene_bindings.glsl", "pbr_shading.glsl", "srgb.glsl",
-                                                 "material_shading.glsl"}));
+                                                 "material_shading.glsl", "texture_transform.glsl"}));
     EXPECT_EQ(s.text.find("#include"), std::string::npos);
     EXPECT_NE(s.text.find("struct MaterialGpu"), std::string::npos);
     EXPECT_EQ(s.text.find("struct MaterialGpu"), s.text.rfind("struct MaterialGpu")) << "included twice";
