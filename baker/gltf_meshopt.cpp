@@ -1,10 +1,10 @@
 // meshopt-compressed buffer views (see gltf_meshopt.h).
 #include "gltf_meshopt.h"
 
+#include "gltf_json.h"
+
 #include <meshoptimizer.h>
 #include <nlohmann/json.hpp>
-
-#include <cmath>
 
 namespace lfd::bake::gltf {
 namespace {
@@ -15,13 +15,7 @@ using json = nlohmann::json;
 // `fallback` when absent.
 std::optional<size_t> size(const json& o, const char* key, size_t fallback)
 {
-    const auto it = o.find(key);
-    if (it == o.end())
-        return fallback;
-    const double d = it->is_number() ? it->get<double>() : -1.0;
-    if (!(d >= 0 && d < 9.0e15) || d != std::floor(d))
-        return std::nullopt;
-    return size_t(d);
+    return o.contains(key) ? jsonIndex(o, key) : fallback;
 }
 
 // Appendix A: the first byte of each stream is 0xa0 | version (attributes), 0xe0 |

@@ -1,6 +1,7 @@
 // Buffers and images of a glTF document, resolved by the baker (see gltf_resources.h).
 #include "gltf_resources.h"
 
+#include "gltf_json.h"
 #include "gltf_texture_source.h"
 
 #include <nlohmann/json.hpp>
@@ -62,19 +63,6 @@ std::optional<std::vector<uint8_t>> decodeBase64(const std::string& text)
 std::string at(const std::string& path, const std::string& key) { return path + "." + key; }
 std::string at(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
 
-// Integer member of an object, or nullopt (the schema check reported a wrong one).
-std::optional<size_t> indexOf(const json& o, const char* key)
-{
-    if (!o.is_object())
-        return std::nullopt;
-    const auto it = o.find(key);
-    if (it == o.end() || !it->is_number())
-        return std::nullopt;
-    const double d = it->get<double>();
-    if (d < 0 || d != double(size_t(d)))
-        return std::nullopt;
-    return size_t(d);
-}
 
 const json& arrayOf(const json& document, const char* key)
 {
@@ -90,7 +78,7 @@ void dracoViews(const json& document, std::set<size_t>& viewsRead)
         if (mesh.is_object() && mesh.contains("primitives") && mesh["primitives"].is_array())
             for (const json& p : mesh["primitives"])
                 if (p.is_object() && p.contains("extensions") && p["extensions"].is_object())
-                    if (auto v = indexOf(p["extensions"].value("KHR_draco_mesh_compression", json()), "bufferView"))
+                    if (auto v = jsonIndex(p["extensions"].value("KHR_draco_mesh_compression", json()), "bufferView"))
                         viewsRead.insert(*v);
 }
 
@@ -103,27 +91,27 @@ std::map<size_t, size_t> buffersRead(const json& document)
     std::set<size_t> viewsRead;
     dracoViews(document, viewsRead);
     for (const json& a : arrayOf(document, "accessors")) {
-        if (auto v = indexOf(a, "bufferView"))
+        if (auto v = jsonIndex(a, "bufferView"))
             viewsRead.insert(*v);
         if (a.is_object() && a.contains("sparse") && a["sparse"].is_object())
             for (const char* part : {"indices", "values"})
                 if (a["sparse"].contains(part))
-                    if (auto v = indexOf(a["sparse"][part], "bufferView"))
+                    if (auto v = jsonIndex(a["sparse"][part], "bufferView"))
                         viewsRead.insert(*v);
     }
     for (const json& image : arrayOf(document, "images"))
-        if (auto v = indexOf(image, "bufferView"))
+        if (auto v = jsonIndex(image, "bufferView"))
             viewsRead.insert(*v);
     std::map<size_t, size_t> read;
     for (size_t v : viewsRead)
         if (v < views.size())
-            if (auto b = indexOf(views[v], "buffer"))
+            if (auto b = jsonIndex(views[v], "buffer"))
                 read.emplace(*b, v);
     // EXT_/KHR_meshopt_compression: the extension names the buffer of the compressed bytes.
     for (size_t v = 0; v < views.size(); ++v)
         if (views[v].is_object() && views[v].contains("extensions") && views[v]["extensions"].is_object())
             for (const char* name : {"EXT_meshopt_compression", "KHR_meshopt_compression"})
-                if (auto b = indexOf(views[v]["extensions"].value(name, json()), "buffer"))
+                if (auto b = jsonIndex(views[v]["extensions"].value(name, json()), "buffer"))
                     read.emplace(*b, v);
     return read;
 }
@@ -135,7 +123,7 @@ std::set<size_t> imagesUsed(const json& document)
     const json& textures = arrayOf(document, "textures");
     std::set<size_t> used;
     auto texture = [&](const json& info) {
-        if (auto t = indexOf(info, "index"); t && *t < textures.size())
+        if (auto t = jsonIndex(info, "index"); t && *t < textures.size())
             if (auto i = textureImage(textures[*t]))
                 used.insert(*i);
     };
@@ -211,7 +199,7 @@ private:
     std::vector<uint8_t> buffer(const json& b, size_t i, std::optional<size_t> readBy, bool& hasData)
     {
         const std::string path = at("buffers", i);
-        const std::optional<size_t> byteLength = indexOf(b, "byteLength");
+        const std::optional<size_t> byteLength = jsonIndex(b, "byteLength");
         // Exactly byteLength bytes: zeros where there is no data, the data cut or padded
         // with zeros otherwise (moved, not copied: buffers can be large).
         const size_t length = byteLength.value_or(0);

@@ -1,29 +1,17 @@
 // Which image a glTF texture shows (see gltf_texture_source.h).
 #include "gltf_texture_source.h"
 
+#include "gltf_json.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 namespace lfd::bake::gltf {
 namespace {
 
 using json = nlohmann::json;
-
-std::optional<size_t> index(const json& o, const char* key)
-{
-    if (!o.is_object())
-        return std::nullopt;
-    const auto it = o.find(key);
-    if (it == o.end() || !it->is_number())
-        return std::nullopt;
-    const double d = it->get<double>();
-    if (!(d >= 0 && d < 9.0e15) || d != std::floor(d)) // the schema check reported it
-        return std::nullopt;
-    return size_t(d);
-}
 
 bool uses(const json& document, const char* extension)
 {
@@ -36,9 +24,9 @@ bool uses(const json& document, const char* extension)
 std::optional<size_t> textureImage(const json& texture)
 {
     if (texture.is_object() && texture.contains("extensions") && texture["extensions"].is_object())
-        if (auto webp = index(texture["extensions"].value(kWebp, json()), "source"))
+        if (auto webp = jsonIndex(texture["extensions"].value(kWebp, json()), "source"))
             return webp;
-    return index(texture, "source");
+    return jsonIndex(texture, "source");
 }
 
 int textureImage(const tinygltf::Texture& texture)

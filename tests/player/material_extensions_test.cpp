@@ -23,28 +23,13 @@ namespace {
 
 using metrics::Image;
 
-// A square of `cells` x `cells` quads in the plane z = 0, [-h, h]^2, facing +z, uvs 0..1
-// (v down), normals and tangents; returns its triangle list.
-std::vector<uint32_t> addSquare(Scene& scene, float h, uint32_t cells)
+// The largest RMSE between corresponding views of two frames.
+double worstViewRmse(const RenderedFrame& a, const RenderedFrame& b)
 {
-    VertexStreams& v = scene.vertices;
-    const uint32_t base = uint32_t(v.positions.size());
-    for (uint32_t y = 0; y <= cells; ++y)
-        for (uint32_t x = 0; x <= cells; ++x) {
-            const float u = float(x) / float(cells), w = float(y) / float(cells);
-            v.positions.push_back({h * (2.0f * u - 1.0f), h * (2.0f * w - 1.0f), 0.0f});
-            v.normals.push_back({0.0f, 0.0f, 1.0f});
-            v.tangents.push_back({1.0f, 0.0f, 0.0f, 1.0f});
-            v.uvs.push_back({u, 1.0f - w});
-        }
-    std::vector<uint32_t> indices;
-    for (uint32_t y = 0; y < cells; ++y)
-        for (uint32_t x = 0; x < cells; ++x) {
-            const uint32_t a = base + y * (cells + 1) + x, b = a + cells + 1;
-            for (uint32_t k : {a, a + 1, b + 1, a, b + 1, b})
-                indices.push_back(k);
-        }
-    return indices;
+    double worst = 0.0;
+    for (size_t v = 0; v < a.views.size(); ++v)
+        worst = std::max(worst, metrics::rmse(a.views[v], b.views[v]));
+    return worst;
 }
 
 TextureTransform makeTransform(glm::vec2 offset, float rotation, glm::vec2 scale)
@@ -71,7 +56,7 @@ Scene texturedSquare()
     m.metallicFactor = 0.0f;
     m.roughnessFactor = 0.6f;
     scene.materials.push_back(m);
-    addNode(scene, addMesh(scene, addSquare(scene, 0.5f, 8), 0), glm::vec3(0.0f),
+    addNode(scene, addMesh(scene, addGrid(scene, 0.5f, 8, 1.0f), 0), glm::vec3(0.0f),
             glm::angleAxis(0.5f, glm::normalize(glm::vec3(1.0f, 0.4f, 0.0f))), glm::vec3(1.0f));
     return scene;
 }
@@ -106,13 +91,8 @@ TEST_F(MaterialExtensionsTest, TextureTransformMatchesUvsTransformedByHand)
     const DisplayProfile profile = smallProfile(4, 96, 72);
     for (const char* renderer : kRenderers) {
         const RenderedFrame a = renderFrame(renderer, transformed, profile);
-        const RenderedFrame b = renderFrame(renderer, byHand, profile);
-        const RenderedFrame plain = renderFrame(renderer, untransformed, profile);
-        double worst = 0.0, plainDiff = 0.0;
-        for (size_t v = 0; v < a.views.size(); ++v) {
-            worst = std::max(worst, metrics::rmse(a.views[v], b.views[v]));
-            plainDiff = std::max(plainDiff, metrics::rmse(a.views[v], plain.views[v]));
-        }
+        const double worst = worstViewRmse(a, renderFrame(renderer, byHand, profile));
+        const double plainDiff = worstViewRmse(a, renderFrame(renderer, untransformed, profile));
         std::printf("[ numbers  ] %s: transformed vs by hand RMSE %.3f (vs untransformed %.1f)\n", renderer, worst,
                     plainDiff);
         EXPECT_LT(worst, 1.0) << renderer << ": the slot transforms are not the hand-transformed uvs";
@@ -136,7 +116,7 @@ TEST_F(MaterialExtensionsTest, TextureTransformTurnsTheNormalMapsFrame)
         m.roughnessFactor = 0.5f;
         m.normalTexture = 0;
         scene.materials.push_back(m);
-        addNode(scene, addMesh(scene, addSquare(scene, 0.5f, 4), 0), glm::vec3(0.0f), glm::quat(1, 0, 0, 0),
+        addNode(scene, addMesh(scene, addGrid(scene, 0.5f, 4, 1.0f), 0), glm::vec3(0.0f), glm::quat(1, 0, 0, 0),
                 glm::vec3(1.0f));
         return scene;
     };
@@ -163,13 +143,8 @@ TEST_F(MaterialExtensionsTest, TextureTransformTurnsTheNormalMapsFrame)
     const DisplayProfile profile = smallProfile(3, 64, 48);
     for (const char* renderer : kRenderers) {
         const RenderedFrame a = renderFrame(renderer, transformed, profile);
-        const RenderedFrame b = renderFrame(renderer, byHand, profile);
-        const RenderedFrame plain = renderFrame(renderer, unturned, profile);
-        double worst = 0.0, plainDiff = 0.0;
-        for (size_t v = 0; v < a.views.size(); ++v) {
-            worst = std::max(worst, metrics::rmse(a.views[v], b.views[v]));
-            plainDiff = std::max(plainDiff, metrics::rmse(a.views[v], plain.views[v]));
-        }
+        const double worst = worstViewRmse(a, renderFrame(renderer, byHand, profile));
+        const double plainDiff = worstViewRmse(a, renderFrame(renderer, unturned, profile));
         std::printf("[ numbers  ] %s: turned normal map vs by hand RMSE %.3f (vs unturned frame %.1f)\n", renderer,
                     worst, plainDiff);
         EXPECT_LT(worst, 1.0) << renderer << ": the normal map's frame does not follow the transform";
@@ -217,7 +192,7 @@ TEST_F(MaterialExtensionsTest, UnlitShowsTheBaseColourWhateverTheLighting)
     m.baseColorFactor = glm::vec4(0.5f, 0.2f, 0.05f, 1.0f);
     m.unlit = true;
     scene.materials.push_back(m);
-    addNode(scene, addMesh(scene, addSquare(scene, 0.5f, 4), 0), glm::vec3(0.0f),
+    addNode(scene, addMesh(scene, addGrid(scene, 0.5f, 4, 1.0f), 0), glm::vec3(0.0f),
             glm::angleAxis(0.6f, glm::vec3(0.0f, 1.0f, 0.0f)), glm::vec3(1.0f));
     scene.nodes.push_back({.name = "light"});
     scene.lights.push_back({.type = LightType::Point, .node = 1, .intensity = 50.0f});
@@ -273,7 +248,7 @@ Scene litSquare(LightType type, float z)
     m.metallicFactor = 0.0f;
     m.roughnessFactor = 1.0f;
     scene.materials.push_back(m);
-    addNode(scene, addMesh(scene, addSquare(scene, 0.5f, 8), 0), glm::vec3(0.0f), glm::quat(1, 0, 0, 0),
+    addNode(scene, addMesh(scene, addGrid(scene, 0.5f, 8, 1.0f), 0), glm::vec3(0.0f), glm::quat(1, 0, 0, 0),
             glm::vec3(1.0f));
     scene.nodes.push_back({.name = "light"});
     scene.nodes.back().translation = glm::vec3(0.0f, 0.0f, z);

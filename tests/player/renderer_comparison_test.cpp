@@ -42,30 +42,6 @@ DisplayProfile comparisonProfile(uint32_t views, uint32_t width, uint32_t height
 
 // ---- Scenes (built here with the baker's per-triangle statistics) -------------------
 
-// A grid of cells x cells quads in the plane z = 0, [-h, h]^2, facing +z, uvs 0..uvScale.
-// Split into cells as the baker's tessellation bound would split a big quad.
-std::vector<uint32_t> addGrid(Scene& scene, float h, uint32_t cells, float uvScale)
-{
-    VertexStreams& v = scene.vertices;
-    const uint32_t base = uint32_t(v.positions.size());
-    for (uint32_t y = 0; y <= cells; ++y)
-        for (uint32_t x = 0; x <= cells; ++x) {
-            const float u = float(x) / float(cells), w = float(y) / float(cells);
-            v.positions.push_back({h * (2.0f * u - 1.0f), h * (2.0f * w - 1.0f), 0.0f});
-            v.normals.push_back({0.0f, 0.0f, 1.0f});
-            v.tangents.push_back({1.0f, 0.0f, 0.0f, 1.0f});
-            v.uvs.push_back({uvScale * u, uvScale * (1.0f - w)});
-        }
-    std::vector<uint32_t> indices;
-    for (uint32_t y = 0; y < cells; ++y)
-        for (uint32_t x = 0; x < cells; ++x) {
-            const uint32_t a = base + y * (cells + 1) + x, b = a + cells + 1;
-            for (uint32_t k : {a, a + 1, b + 1, a, b + 1, b})
-                indices.push_back(k);
-        }
-    return indices;
-}
-
 // Cube of half size 0.5, each face a 4 x 4 grid (uvs 0..1 per face), so no triangle
 // spans more than the baker's 100-pixel bound at these view sizes.
 std::vector<uint32_t> addCube(Scene& scene)

@@ -72,6 +72,28 @@ std::vector<uint32_t> addSphere(Scene& scene, float radius, uint32_t slices, uin
     return indices;
 }
 
+std::vector<uint32_t> addGrid(Scene& scene, float h, uint32_t cells, float uvScale)
+{
+    VertexStreams& v = scene.vertices;
+    const uint32_t base = uint32_t(v.positions.size());
+    for (uint32_t y = 0; y <= cells; ++y)
+        for (uint32_t x = 0; x <= cells; ++x) {
+            const float u = float(x) / float(cells), w = float(y) / float(cells);
+            v.positions.push_back({h * (2.0f * u - 1.0f), h * (2.0f * w - 1.0f), 0.0f});
+            v.normals.push_back({0.0f, 0.0f, 1.0f});
+            v.tangents.push_back({1.0f, 0.0f, 0.0f, 1.0f});
+            v.uvs.push_back({uvScale * u, uvScale * (1.0f - w)});
+        }
+    std::vector<uint32_t> indices;
+    for (uint32_t y = 0; y < cells; ++y)
+        for (uint32_t x = 0; x < cells; ++x) {
+            const uint32_t a = base + y * (cells + 1) + x, b = a + cells + 1;
+            for (uint32_t k : {a, a + 1, b + 1, a, b + 1, b})
+                indices.push_back(k);
+        }
+    return indices;
+}
+
 int32_t addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t material)
 {
     Primitive prim;

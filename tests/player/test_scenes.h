@@ -15,6 +15,10 @@ int32_t addMesh(Scene& scene, const std::vector<uint32_t>& indices, int32_t mate
 // A UV sphere of `radius` about the origin (normals, tangents, uvs 0..1), vertices
 // appended to scene.vertices; returns its triangle list (absolute indices).
 std::vector<uint32_t> addSphere(Scene& scene, float radius, uint32_t slices, uint32_t stacks);
+// A grid of cells x cells quads in the plane z = 0, [-h, h]^2, facing +z (normals,
+// tangents along +x), uvs 0..uvScale with v down; split into cells as the baker's
+// tessellation bound would split a big quad. Returns its triangle list.
+std::vector<uint32_t> addGrid(Scene& scene, float h, uint32_t cells, float uvScale);
 // Appends a node instancing `mesh` with local transform T * R * S.
 void addNode(Scene& scene, int32_t mesh, const glm::vec3& t, const glm::quat& r, const glm::vec3& s);
 // What the baker computes for a finished scene: per-triangle statistics (texture sizes
