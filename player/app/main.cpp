@@ -192,7 +192,7 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
     o.glDebug = shared.glDebug;
     o.aniso = float(shared.aniso);
     o.lighting = lfd::player::frameLightingFromFlags(shared);
-    o.environment = shared.environment;
+    o.environment = shared.environmentChoice;
     lfd::player::applySharedFlags(shared, o.rendererOptions);
     o.reconstruction = lfd::player::parseReconstructionFlag("--aa", f.aa);
     o.supersampling = lfd::player::parseSupersamplingFlag("--ss", f.ss);

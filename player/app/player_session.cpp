@@ -85,7 +85,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
 void PlayerSession::applyRenderOptions(const PlayOptions& options)
 {
     reconstruction_ = options.reconstruction;
-    pipeline_->setLighting(options.lighting, loadGpuEnvironment(options.environment));
+    pipeline_->setLighting(options.lighting, uploadEnvironment(options.environment));
     pipeline_->setSupersampling(options.supersampling);
     pipeline_->setViewControls(options.controls);
     pipeline_->setPreviewShape(options.previewShape);

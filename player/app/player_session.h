@@ -6,6 +6,7 @@
 // window both drive a PlayerSession.
 #pragma once
 
+#include "environment_choice.h"
 #include "frame_pipeline.h"
 #include "gpu_timer.h"
 #include "quilt.h"
@@ -39,7 +40,7 @@ struct PlayOptions {
     // the environment itself (neutral | none | FILE.hdr). The defaults are the look before
     // image-based lighting; lfd-play's flags choose the neutral studio and PBR Neutral.
     FrameLighting lighting;
-    std::string environment = "none";
+    lighting::EnvironmentChoice environment;
     std::filesystem::path pack;
     bool headless = false;
     std::string renderer = "mvr";          // any name of allRendererNames()

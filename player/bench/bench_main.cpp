@@ -153,7 +153,7 @@ void applyShared(const BenchFlags& flags, lfd::player::BenchOptions& options, Ma
     options.turntablePeriod = shared.turntablePeriod;
     options.aniso = float(shared.aniso);
     options.lighting = lfd::player::frameLightingFromFlags(shared);
-    options.environment = shared.environment;
+    options.environment = shared.environmentChoice;
     lfd::player::applySharedFlags(shared, options.rendererOptions);
     shape.size = shared.viewSize;
 }

@@ -585,7 +585,7 @@ BenchReport runBenchmark(const BenchOptions& options, const DisplayProfile& prof
     GpuSceneOptions sceneOptions;
     sceneOptions.maxAnisotropy = options.aniso;
     FramePipeline pipeline(profile, scene, options.turntablePeriod, sceneOptions);
-    pipeline.setLighting(options.lighting, loadGpuEnvironment(options.environment));
+    pipeline.setLighting(options.lighting, uploadEnvironment(options.environment));
     scene = Scene{}; // the GPU copy is all that is needed from here on
     report.sceneGpuBytes = pipeline.scene().gpuBytes();
     report.textureAnisotropy = pipeline.scene().maxAnisotropy();

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "eia_builder.h"    // Reconstruction
+#include "environment_choice.h"
 #include "frame_pipeline.h" // Supersampling
 #include "gpu_timer.h"
 #include "renderer_registry.h"
@@ -51,7 +52,7 @@ struct BenchOptions {
     // the environment (neutral | none | FILE.hdr); the default is the look before
     // image-based lighting, lfd-bench's flags choose the tools' default (neutral).
     FrameLighting lighting;
-    std::string environment = "none";
+    lighting::EnvironmentChoice environment;
     uint32_t qualityFrame = 0;      // frame whose views and EIA are compared
     uint32_t lensPositions = 9;     // --lens-positions: viewer positions of the through-the-lens sweep
     std::filesystem::path outDir;   // empty: nothing written

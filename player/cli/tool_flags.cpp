@@ -95,6 +95,11 @@ void finishSharedFlags(SharedFlags& flags)
     if (flags.environment.empty())
         throw UsageError("--environment: empty (neutral, none or a .hdr file)");
     try {
+        flags.environmentChoice = lighting::chooseEnvironment(flags.environment);
+    } catch (const std::exception& e) {
+        throw UsageError(std::string("--environment: ") + e.what());
+    }
+    try {
         flags.lfdprWork = parseLfdprWorkShape(flags.lfdprWorkText);
         flags.lfdprAniso = parseLfdprAnisoFilter(flags.lfdprAnisoText);
     } catch (const std::exception& e) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "eia_builder.h"
+#include "environment_choice.h"
 #include "frame_pipeline.h"
 #include "renderer_registry.h"
 
@@ -33,6 +34,7 @@ struct SharedFlags {
     // Lighting (docs/lighting.md): the environment ("neutral", "none" or a Radiance .hdr),
     // its rotation about the vertical, the exposure and the tone mapper.
     std::string environment = "neutral";                    // --environment
+    lighting::EnvironmentChoice environmentChoice;          // read by finishSharedFlags
     double environmentRotationDeg = 0.0;                    // --environment-rotation
     double exposureEv = 0.0;                                // --exposure
     std::string toneMapText = "pbr-neutral";                // --tone-map
@@ -45,8 +47,8 @@ struct SharedFlags {
 void addSharedFlags(CLI::App& app, SharedFlags& flags);
 // Checks and types the parsed flags; cli::UsageError naming the flag.
 void finishSharedFlags(SharedFlags& flags);
-// The frame lighting the flags ask for (its environment is loaded by the caller:
-// loadFlagEnvironment).
+// The frame lighting the flags ask for (its environment, environmentChoice, is uploaded by
+// the tool once it has a GL context: uploadEnvironment).
 FrameLighting frameLightingFromFlags(const SharedFlags& flags);
 // --gstd-* and --lfdpr-work / --lfdpr-aniso into the renderers' options.
 void applySharedFlags(const SharedFlags& flags, RendererOptions& options);

@@ -168,6 +168,16 @@ DecodedImage decodeHdrBytes(const fs::path& path, std::span<const uint8_t> bytes
     return image;
 }
 
+// An encoded file's bytes, written atomically (ImageError on failure).
+void writeEncoded(const fs::path& path, const std::vector<uint8_t>& bytes)
+{
+    try {
+        io::writeFileAtomically(path, bytes);
+    } catch (const io::AtomicWriteError& e) {
+        throw ImageError(e.what());
+    }
+}
+
 } // namespace
 
 DecodedImage decodeImageFile(const fs::path& path, bool keepDepth)
@@ -230,6 +240,17 @@ HdrImage readHdrImage(const fs::path& path, uint64_t maxPixels)
     return HdrImage{decoded.width, decoded.height, std::move(decoded.f32)};
 }
 
+void writeHdrImage(const fs::path& path, const HdrImage& image)
+{
+    if (image.width <= 0 || image.height <= 0 || image.rgb.size() != size_t(image.width) * size_t(image.height) * 3)
+        fail(path, "cannot write a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                       " HDR image from " + std::to_string(image.rgb.size()) + " values");
+    std::vector<uint8_t> bytes;
+    if (!stbi_write_hdr_to_func(appendBytes, &bytes, image.width, image.height, 3, image.rgb.data()))
+        fail(path, "encoding failed");
+    writeEncoded(path, bytes);
+}
+
 void encodeImageFile(const fs::path& path, const uint8_t* pixels, int width, int height, int channels)
 {
     if (width <= 0 || height <= 0)
@@ -253,11 +274,7 @@ void encodeImageFile(const fs::path& path, const uint8_t* pixels, int width, int
         fail(path, "cannot write this image format '" + ext + "' (write .png, .jpg, .bmp or .tga)");
     if (!ok)
         fail(path, "encoding failed");
-    try {
-        io::writeFileAtomically(path, bytes);
-    } catch (const io::AtomicWriteError& e) {
-        throw ImageError(e.what());
-    }
+    writeEncoded(path, bytes);
 }
 
 } // namespace lfd::metrics

@@ -47,6 +47,10 @@ struct HdrImage {
 // truncated file and corrupt RLE data, each with one line (ImageError).
 HdrImage readHdrImage(const std::filesystem::path& path, uint64_t maxPixels);
 
+// Writes `image` as a Radiance .hdr (RLE-compressed RGBE, as stb_image_write encodes it),
+// atomically: test environments for `--environment FILE.hdr`, and HDR outputs.
+void writeHdrImage(const std::filesystem::path& path, const HdrImage& image);
+
 // Encodes 8-bit interleaved pixels (1..4 channels, row 0 = top) in the format the
 // extension names, atomically.
 void encodeImageFile(const std::filesystem::path& path, const uint8_t* pixels, int width, int height,

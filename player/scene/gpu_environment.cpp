@@ -3,14 +3,9 @@
 #include "gl_context.h"
 #include "scene_bindings.h"
 
-#include "environment_file.h"
-#include "neutral_environment.h"
-
 #include <epoxy/gl.h>
-#include <xxhash.h>
 
 #include <chrono>
-#include <cstdio>
 #include <string>
 
 namespace lfd::player {
@@ -82,27 +77,12 @@ const lighting::BrdfTable& shaderBrdfTable()
     return table;
 }
 
-std::shared_ptr<const GpuEnvironment> loadGpuEnvironment(const std::string& choice)
+std::shared_ptr<const GpuEnvironment> uploadEnvironment(const lighting::EnvironmentChoice& choice)
 {
-    if (choice == "none")
+    if (!choice.environment)
         return nullptr;
-    std::shared_ptr<const lighting::Environment> source;
-    std::string key;
-    if (choice == "neutral") {
-        source = std::make_shared<const lighting::Environment>(lighting::neutralEnvironment());
-        key = "neutral";
-    } else {
-        source = std::make_shared<const lighting::Environment>(lighting::loadEnvironment(choice));
-        // The content, not the path, names a file's environment (caches survive a rename
-        // and see an edit).
-        const XXH64_hash_t hash = XXH3_64bits(source->rgb.data(), source->rgb.size() * sizeof(float));
-        char text[64];
-        std::snprintf(text, sizeof(text), "file:%016llx:%ux%u", static_cast<unsigned long long>(hash), source->width,
-                      source->height);
-        key = text;
-    }
-    return std::make_shared<const GpuEnvironment>(std::move(source), std::move(key),
-                                                  lighting::PrefilterSettings::player(), shaderBrdfTable());
+    return std::make_shared<const GpuEnvironment>(choice.environment, choice.key, lighting::PrefilterSettings::player(),
+                                                  shaderBrdfTable());
 }
 
 std::shared_ptr<const GpuEnvironment> withSettings(const GpuEnvironment& environment,

@@ -8,7 +8,7 @@
 #include "gl_handles.h"
 
 #include "brdf_table.h"
-#include "environment.h"
+#include "environment_choice.h"
 #include "prefilter.h"
 
 #include <cstdint>
@@ -49,10 +49,9 @@ private:
 // within 2e-4 of the exact terms, lighting/brdf_table.h), computed once per process.
 const lighting::BrdfTable& shaderBrdfTable();
 
-// `--environment`: "none" (null: the constant ambient term), "neutral" (the built-in
-// studio) or a Radiance .hdr file, prefiltered with the player's settings. Throws
-// lighting::EnvironmentError naming the file.
-std::shared_ptr<const GpuEnvironment> loadGpuEnvironment(const std::string& choice);
+// The environment a tool chose (lighting::chooseEnvironment) prefiltered with the player's
+// settings and uploaded; null for "none" (the constant ambient term).
+std::shared_ptr<const GpuEnvironment> uploadEnvironment(const lighting::EnvironmentChoice& choice);
 
 // The same source prefiltered with other settings (gstd's reference preset).
 std::shared_ptr<const GpuEnvironment> withSettings(const GpuEnvironment& environment,

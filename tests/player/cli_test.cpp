@@ -12,6 +12,8 @@
 
 #include "eia_builder.h"
 #include "frame_uniforms.h"
+#include "gpu_environment.h"
+#include "image_file.h"
 #include "image_metrics.h"
 #include "quilt.h"
 #include "renderer_gstd.h"
@@ -85,7 +87,7 @@ std::vector<std::string> outputsIn(const fs::path& dir)
     for (const auto& e : fs::recursive_directory_iterator(dir)) {
         const std::string name = e.path().filename().string();
         if (name != "scene.lfdpack" && name != "profile.json" && name != "corrupt.lfdpack" &&
-            name != "bad_profile.json")
+            name != "bad_profile.json" && name != "not_an_hdr.hdr")
             names.push_back(fs::relative(e.path(), dir).string());
     }
     return names;
@@ -285,6 +287,57 @@ TEST_F(CliTest, DefaultPrototypeProfileGivesAFullPanelEia)
 }
 
 // Each bad input: non-zero status, exactly one stderr line naming the culprit, no files.
+// `--environment FILE.hdr`: a Radiance panorama lights the scene, exactly as the same
+// file uploaded here does; its rotation and exposure flags change the views.
+TEST_F(CliTest, EnvironmentFileLightsTheScene)
+{
+    // A 64 x 32 sky: a bright warm disc at the horizon to the +X side, a blue gradient above.
+    metrics::HdrImage sky{64, 32, std::vector<float>(64 * 32 * 3)};
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 64; ++x) {
+            float* p = &sky.rgb[(size_t(y) * 64 + size_t(x)) * 3];
+            const float up = 1.0f - float(y) / 31.0f;
+            const bool sun = std::hypot(float(x) - 32.0f, float(y) - 16.0f) < 3.0f;
+            p[0] = sun ? 20.0f : 0.1f + 0.2f * up;
+            p[1] = sun ? 16.0f : 0.2f + 0.3f * up;
+            p[2] = sun ? 10.0f : 0.4f + 0.6f * up;
+        }
+    const fs::path file = dir_ / "sky.hdr";
+    metrics::writeHdrImage(file, sky);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 96x72";
+    auto render = [&](const std::string& flags, const std::string& name) {
+        const RunResult r = runPlay(dir_, common + " " + flags + " --views-out " + q(dir_ / name));
+        EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
+        return readView(dir_ / name, 1);
+    };
+    const metrics::Image fromFile = render("--environment " + q(file), "sky");
+    const metrics::Image neutral = render("", "neutral");
+    const metrics::Image turned = render("--environment " + q(file) + " --environment-rotation 120", "turned");
+    const metrics::Image brighter = render("--environment " + q(file) + " --exposure 1", "brighter");
+
+    player::FrameLighting lighting = toolDefaultLighting();
+    const std::shared_ptr<const player::GpuEnvironment> uploaded =
+        player::uploadEnvironment(lighting::chooseEnvironment(file.string()));
+    lighting.environment = uploaded.get();
+    const RenderedFrame reference =
+        renderFrame("mvr", readPack(pack_), tenthPrototypeProfile("cli-small", 4, 96, 72),
+                    {.turntablePeriod = kTurntablePeriod, .lighting = lighting});
+    EXPECT_EQ(imageMismatch(fromFile, reference.views[1], 1), "") << "lfd-play --environment against the upload here";
+    const double vsNeutral = metrics::rmse(fromFile, neutral), vsTurned = metrics::rmse(fromFile, turned);
+    double sumFile = 0.0, sumBright = 0.0;
+    for (size_t i = 0; i < fromFile.pixels.size(); i += 4)
+        for (int c = 0; c < 3; ++c) {
+            sumFile += fromFile.pixels[i + size_t(c)];
+            sumBright += brighter.pixels[i + size_t(c)];
+        }
+    std::printf("[ numbers  ] sky.hdr vs neutral RMSE %.1f, turned 120 deg RMSE %.1f, +1 EV: mean level %.1f -> %.1f\n",
+                vsNeutral, vsTurned, sumFile / double(fromFile.pixels.size() / 4 * 3),
+                sumBright / double(fromFile.pixels.size() / 4 * 3));
+    EXPECT_GT(vsNeutral, 3.0);
+    EXPECT_GT(vsTurned, 1.0);
+    EXPECT_GT(sumBright, sumFile * 1.05);
+}
+
 TEST_F(CliTest, BadInputFailsCleanly)
 {
     // A corrupt pack: a valid one with bytes flipped in the middle (checksums catch it).
@@ -293,6 +346,7 @@ TEST_F(CliTest, BadInputFailsCleanly)
         bytes[i] = char(~bytes[i]);
     std::ofstream(dir_ / "corrupt.lfdpack", std::ios::binary) << bytes;
     std::ofstream(dir_ / "bad_profile.json") << R"({"format": "lfd-display-profile/1", "panel_width": 0})";
+    std::ofstream(dir_ / "not_an_hdr.hdr") << "#?NOT RADIANCE\n";
 
     const std::string outputs = " --out " + q(dir_ / "eia.png") + " --quilt " + q(dir_ / "quilt.png") +
                                 " --views-out " + q(dir_ / "views") + " --stats " + q(dir_ / "stats.json");
@@ -307,6 +361,10 @@ TEST_F(CliTest, BadInputFailsCleanly)
         {"--headless " + q(pack_) + small + " --frames 0" + outputs, "--frames"},
         {"--headless " + q(pack_) + small + " --out " + q(dir_ / "no_such_dir" / "eia.png"), "no_such_dir"},
         {"--headless " + q(pack_) + small + " --bogus-flag", "--bogus-flag"},
+        {"--headless " + q(pack_) + small + " --environment " + q(dir_ / "no_sky.hdr") + outputs, "no_sky.hdr"},
+        {"--headless " + q(pack_) + small + " --environment " + q(dir_ / "not_an_hdr.hdr") + outputs, "not_an_hdr.hdr"},
+        {"--headless " + q(pack_) + small + " --tone-map aces" + outputs, "--tone-map"},
+        {"--headless " + q(pack_) + small + " --exposure inf" + outputs, "--exposure"},
         // Beyond GL limits (README "Faults"): refused before anything is allocated.
         {"--headless " + q(pack_) + " --display " + q(profile_) + " --views 100000 --view-size 64x48" + outputs,
          "--views"},

@@ -25,7 +25,8 @@ namespace lfd::test {
 
 player::FrameLighting toolDefaultLighting()
 {
-    static const std::shared_ptr<const player::GpuEnvironment> neutral = player::loadGpuEnvironment("neutral");
+    static const std::shared_ptr<const player::GpuEnvironment> neutral =
+        player::uploadEnvironment(lighting::chooseEnvironment("neutral"));
     player::FrameLighting lighting;
     lighting.environment = neutral.get();
     lighting.toneMap = player::ToneMap::PbrNeutral;
