@@ -4,6 +4,7 @@
 
 #include "brdf.h"
 #include "cube_convolution.h"
+#include "cube_least_squares.h"
 #include "cube_from_environment.h"
 #include "parallel_bands.h"
 #include "sampling.h"
@@ -62,7 +63,8 @@ void validateSettings(const PrefilterSettings& s)
     const auto fail = [](const std::string& what) { throw std::invalid_argument("prefilter settings: " + what); };
     if (s.faceSize == 0 || !std::has_single_bit(s.faceSize))
         fail("faceSize " + std::to_string(s.faceSize) + " is not a power of two");
-    const uint32_t maxLevels = uint32_t(std::bit_width(s.faceSize));
+    // The wide level after the GGX levels needs a face of at least one texel.
+    const uint32_t maxLevels = uint32_t(std::countr_zero(s.faceSize));
     if (s.levels < 2 || s.levels > maxLevels)
         fail("levels " + std::to_string(s.levels) + " outside 2.." + std::to_string(maxLevels));
     if (s.samplesPerTexel == 0 || s.maxSamplesPerTexel < s.samplesPerTexel)
@@ -117,11 +119,15 @@ float roughnessOfLevel(uint32_t level, uint32_t levels)
 
 float levelOfRoughness(float roughness, uint32_t levels)
 {
+    return std::min(levelOfAlpha(alphaFromRoughness(std::clamp(roughness, 0.0f, 1.0f)), levels), float(levels - 1));
+}
+
+float levelOfAlpha(float alpha, uint32_t levels)
+{
     // Level 0 stands for the BRDF's smallest alpha (1e-3, brdf.h), level 1 for alpha1.
-    const float alpha = alphaFromRoughness(std::clamp(roughness, 0.0f, 1.0f));
     const float alpha1 = std::exp2(2.0f - float(levels));
     const float lod = alpha < alpha1 ? (alpha - kMinAlpha) / (alpha1 - kMinAlpha) : 1.0f + std::log2(alpha / alpha1);
-    return std::min(lod, float(levels - 1));
+    return std::clamp(lod, 0.0f, float(levels));
 }
 
 CubeLevel prefilterGgxLevel(const CubeMap& source, float roughness, uint32_t size, uint32_t samples, float lodBias)
@@ -157,6 +163,20 @@ CubeLevel convolveGgxLevel(const CubeLevel& source, float roughness, uint32_t si
     });
 }
 
+CubeLevel convolveWideLevel(const CubeLevel& source, uint32_t size)
+{
+    // D is constant at alpha = 1: the lobe is Vis (n.l) at n.v = kWideLobeNDotV. A face of
+    // up to 8 texels (the player's is 4, gstd's 2) is summed exactly at 4 times its size and
+    // fitted for bilinear reads (cube_least_squares.h); a larger one holds the sums at its
+    // texel centres, as the GGX levels do.
+    const auto kernel = [](double nDotL) {
+        return double(smithVisibility(float(nDotL), kWideLobeNDotV, 1.0f)) * nDotL;
+    };
+    if (size > 8)
+        return convolveCube(source, size, kernel);
+    return leastSquaresCubeLevel(convolveCube(source, 4 * size, kernel), size);
+}
+
 PrefilteredEnvironment prefilterEnvironment(const Environment& environment, const PrefilterSettings& settings)
 {
     validateSettings(settings);
@@ -172,6 +192,8 @@ PrefilteredEnvironment prefilterEnvironment(const Environment& environment, cons
                                           : prefilterGgxLevel(source, roughness, size, settings.samplesOfLevel(l),
                                                               settings.lodBias));
     }
+    out.specular.levels.push_back(convolveWideLevel(source.levels[directSourceLevel(settings, settings.levels)],
+                                                    settings.faceSize >> settings.levels));
     const uint32_t irradianceLevel = uint32_t(std::countr_zero(settings.faceSize / settings.irradianceSourceSize));
     const CubeLevel& irradianceSource = source.levels[irradianceLevel];
     out.irradianceSh = shIrradianceFromCube(irradianceSource);

@@ -1,8 +1,10 @@
 // The CPU mirror of the shaders' split sum: exact for a constant environment (against the
-// Monte Carlo reference), a mirror reads the reflected direction, a rough surface reads
-// its lobe's dominant direction, and the irradiance forms it can use.
+// Monte Carlo reference, both specular lookups and both irradiance forms), a mirror reads
+// the reflected direction, a surface at roughness 1 reads along its normal (into the wide
+// level at grazing n.v with two lookups), and a rotated environment turns the lookups.
 #include "brdf_table.h"
 #include "ibl_test_scenes.h"
+#include "lobe_taps.h"
 #include "prefilter.h"
 #include "reference_ibl.h"
 #include "sampling.h"
@@ -10,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lfd::lighting {
@@ -39,11 +42,12 @@ TEST(SplitSum, ConstantEnvironmentMatchesTheReference)
             const glm::vec3 n = glm::normalize(glm::vec3(0.2f, 0.3f, 1.0f));
             const glm::vec3 v = worldFromTangent(n) * glm::vec3(std::sqrt(1.0f - nDotV * nDotV), 0.0f, nDotV);
             const glm::vec3 reference = referenceIbl(furnace, distribution, m, n, v, 2048, 3);
-            for (const IrradianceSource source : {IrradianceSource::Sh9, IrradianceSource::Cube}) {
-                const glm::vec3 split = splitSumIbl(p, table, m, n, v, source);
-                for (int c = 0; c < 3; ++c)
-                    EXPECT_NEAR(split[c], reference[c], 0.01f * reference[c]) << m.roughness << " " << nDotV;
-            }
+            for (const IrradianceSource source : {IrradianceSource::Sh9, IrradianceSource::Cube})
+                for (const SpecularLookup lookup : {SpecularLookup::LobeTaps, SpecularLookup::DominantDirection}) {
+                    const glm::vec3 split = splitSumIbl(p, table, m, n, v, source, lookup);
+                    for (int c = 0; c < 3; ++c)
+                        EXPECT_NEAR(split[c], reference[c], 0.01f * reference[c]) << m.roughness << " " << nDotV;
+                }
         }
 }
 
@@ -78,17 +82,28 @@ TEST(SplitSum, AMirrorReadsTheReflectedDirection)
 
 TEST(SplitSum, RoughnessOneReadsAlongTheNormal)
 {
-    // alpha = 1: the dominant direction's weight (1 - alpha)(...) is 0, so the lookup is n
-    // at the last level, times F0 A + B.
+    // alpha = 1: the lobe is symmetric about n. One lookup: the dominant direction's weight
+    // (1 - alpha)(...) is 0, so it reads n at the last GGX level. Two: the table's
+    // directions are n (k = 0) and their widths reach into the wide level at grazing n.v.
     const PrefilteredEnvironment p = prefilterEnvironment(sixColours(), smallSettings());
     const BrdfTable table = splitSumBrdfTable(32, 2048);
     const PbrMaterial rough{glm::vec3(1.0f), 1.0f, 1.0f};
     const glm::vec3 n = glm::normalize(glm::vec3(0.3f, 0.8f, 0.6f)), v(0, 0, 1);
     const glm::vec3 ab = sampleBrdfTable(table, glm::dot(n, v), 1.0f);
-    const glm::vec3 expected = sampleCubeTrilinear(p.specular, n, 4.0f) * (ab.x + ab.y);
-    const glm::vec3 split = splitSumIbl(p, table, rough, n, v, IrradianceSource::Cube);
-    for (int c = 0; c < 3; ++c)
-        EXPECT_NEAR(split[c], expected[c], 1e-6f);
+    const glm::vec3 one = sampleCubeTrilinear(p.specular, n, 4.0f) * (ab.x + ab.y);
+    const glm::vec3 splitOne = splitSumIbl(p, table, rough, n, v, IrradianceSource::Cube, SpecularLookup::DominantDirection);
+    const glm::vec4 taps = sampleLobeTapTable(lobeTapTable(), glm::dot(n, v), 1.0f);
+    EXPECT_NEAR(taps.x, 0.0f, 1e-3f);
+    EXPECT_NEAR(taps.z, 0.0f, 1e-3f);
+    EXPECT_GT(0.5f * (taps.y + taps.w), 0.1f); // n.v = 0.6: a quarter of the way to the wide level
+    const glm::vec3 two = 0.5f * (sampleCubeTrilinear(p.specular, n, levelOfAlpha(std::exp2(taps.y), 5)) +
+                                  sampleCubeTrilinear(p.specular, n, levelOfAlpha(std::exp2(taps.w), 5))) *
+                          (ab.x + ab.y);
+    const glm::vec3 splitTwo = splitSumIbl(p, table, rough, n, v, IrradianceSource::Cube, SpecularLookup::LobeTaps);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(splitOne[c], one[c], 1e-6f);
+        EXPECT_NEAR(splitTwo[c], two[c], 2e-3f * two[c]); // k is 0 to within 1e-3
+    }
 }
 
 TEST(SplitSum, RotatingTheEnvironmentRotatesTheLookup)
