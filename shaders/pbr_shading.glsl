@@ -24,6 +24,7 @@ struct SurfacePbr {
 layout(binding = LFD_UNIT_ENVIRONMENT) uniform samplerCube t_environment;
 layout(binding = LFD_UNIT_IRRADIANCE) uniform samplerCube t_irradiance;
 layout(binding = LFD_UNIT_BRDF_TABLE) uniform sampler2D t_brdfTable;
+layout(binding = LFD_UNIT_LOBE_TAPS) uniform sampler2D t_lobeTaps;
 
 // The BRDF's inputs that do not depend on the light: alpha = roughness^2,
 // F0 = mix(0.04, baseColor, metallic), the diffuse colour.
@@ -99,24 +100,36 @@ vec3 lfdEnvironmentDirection(vec3 sceneDirection)
                 u_frame.environmentFromScene[2].xyz) * sceneDirection;
 }
 
+// The cube's lod for a lobe of GGX alpha (lighting/prefilter.h levelOfAlpha): level 0 the
+// mirror, level l >= 1 alpha 2^(l + 1 - L) up to alpha 1 at level L - 1, and beyond it the
+// wide level L (alpha in (1, 2]); GL clamps the lod to the cube's last level.
+float lfdLodOfAlpha(float alpha, float alpha1)
+{
+    return alpha < alpha1 ? (alpha - 1e-3) / (alpha1 - 1e-3) : 1.0 + log2(alpha / alpha1);
+}
+
 // Image-based lighting by the split sum (Karis 2013), as player/lighting/split_sum.h
-// evaluates it on the CPU (the tests' mirror): the prefiltered environment at the GGX
-// lobe's level, read along Frostbite's dominant direction (Lagarde & de Rousiers 2014,
-// 4.9.3: the lobe's peak leans from R towards n as alpha grows), times F0 A + B; the
-// irradiance (E / pi) times the diffuse colour weighted by (1 - F0)(1 - C), the mean of
-// (1 - F) over a Lambert lobe. A, B, C come from the BRDF table at (n.v, roughness);
-// level l >= 1 of the cube holds GGX alpha 2^(l + 1 - levels), level 0 the mirror
-// (lighting/prefilter.h levelOfRoughness). docs/lighting.md gives the measured accuracy.
+// evaluates it on the CPU (the tests' mirror). The specular radiance is the mean of two
+// lookups of the prefiltered cube whose directions (mix(n, R, k)) and widths (alpha 2^d) the
+// lobe tap table gives per (n.v, roughness) (lighting/lobe_taps.h): a narrow core near R and
+// a wide halo towards n, fitted to the glTF lobe, which at n != v is a streak one isotropic
+// lookup cannot follow; times F0 A + B. The diffuse radiance is the irradiance (E / pi)
+// times the diffuse colour weighted by (1 - F0)(1 - C), the mean of (1 - F) over a Lambert
+// lobe. A, B, C come from the BRDF table at the same (n.v, roughness) coordinate.
+// docs/lighting.md gives the measured accuracy and cost.
 vec3 lfdEnvironmentLight(SurfacePbr s, LfdBrdf b, vec3 n, vec3 v, float NdotV)
 {
     const float size = float(LFD_BRDF_TABLE_SIZE);
     vec2 tableUv = (vec2(NdotV, s.roughness) * (size - 1.0) + 0.5) / size;
     vec3 abc = textureLod(t_brdfTable, tableUv, 0.0).rgb;
+    vec4 taps = textureLod(t_lobeTaps, tableUv, 0.0); // (k0, d0, k1, d1)
     float alpha = max(s.roughness * s.roughness, 1e-3);
-    float alpha1 = exp2(1.0 - u_frame.environmentMaxLevel); // level 1's alpha: 2^(2 - levels)
-    float lod = alpha < alpha1 ? (alpha - 1e-3) / (alpha1 - 1e-3) : 1.0 + log2(alpha / alpha1);
-    vec3 dominant = mix(n, reflect(-v, n), (1.0 - alpha) * (sqrt(1.0 - alpha) + alpha));
-    vec3 prefiltered = textureLod(t_environment, lfdEnvironmentDirection(dominant), lod).rgb;
+    float alpha1 = exp2(2.0 - u_frame.environmentMaxLevel); // level 1's alpha: 2^(2 - L)
+    vec3 r = reflect(-v, n);
+    vec3 core = mix(n, r, taps.x), halo = mix(n, r, taps.z); // a cube lookup needs no unit vector
+    vec3 prefiltered =
+        0.5 * (textureLod(t_environment, lfdEnvironmentDirection(core), lfdLodOfAlpha(alpha * exp2(taps.y), alpha1)).rgb +
+               textureLod(t_environment, lfdEnvironmentDirection(halo), lfdLodOfAlpha(alpha * exp2(taps.w), alpha1)).rgb);
     vec3 specular = prefiltered * (b.f0 * abc.x + abc.y);
     vec3 irradiance = textureLod(t_irradiance, lfdEnvironmentDirection(n), 0.0).rgb;
     vec3 diffuse = b.diffuseColor * (vec3(1.0) - b.f0) * (1.0 - abc.z) * irradiance;

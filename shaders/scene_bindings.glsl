@@ -34,7 +34,9 @@
 #define LFD_UNIT_ENVIRONMENT 6
 #define LFD_UNIT_BRDF_TABLE 7
 #define LFD_UNIT_IRRADIANCE 13
-// The BRDF table's texels per axis (n.v and roughness at texel centres i / (size - 1)).
+#define LFD_UNIT_LOBE_TAPS 20
+// The BRDF and lobe tap tables' texels per axis (n.v and roughness at texel centres
+// i / (size - 1)).
 #define LFD_BRDF_TABLE_SIZE 32
 
 // Explicit uniform locations of the per-draw uniforms.
@@ -154,7 +156,7 @@ layout(std140, binding = LFD_UBO_FRAME) uniform FrameBlock {
     uint lightingFlags;  // LFD_LIGHTING_*
     uint lightCount;     // punctual lights in the arrays below (<= LFD_MAX_LIGHTS)
     float exposure;      // 2^EV: the scene radiance's scale before tone mapping
-    float environmentMaxLevel; // the specular cube's last mip level (GGX alpha 1)
+    float environmentMaxLevel; // the specular cube's last mip level: the wide level after GGX alpha 1
     // The environment's orientation: environment direction = mat3(columns 0..2) * scene
     // direction (a rotation: the environment is fixed to the display, turned by
     // --environment-rotation about the vertical).

@@ -32,6 +32,21 @@ gl::Texture createCube(const std::vector<lighting::CubeLevel>& levels, size_t& g
     return cube;
 }
 
+// A size x size table of 3 or 4 float channels (row 0 first), half floats, GL_LINEAR and
+// GL_CLAMP_TO_EDGE: the texel centres hold the table's exact ends (lighting/brdf_table.h).
+gl::Texture createTable(uint32_t size, int channels, const float* texels, size_t& gpuBytes)
+{
+    gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+    glTextureStorage2D(t, 1, channels == 4 ? GL_RGBA16F : GL_RGB16F, GLsizei(size), GLsizei(size));
+    glTextureSubImage2D(t, 0, 0, 0, GLsizei(size), GLsizei(size), channels == 4 ? GL_RGBA : GL_RGB, GL_FLOAT, texels);
+    glTextureParameteri(t, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTextureParameteri(t, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gpuBytes += size_t(size) * size * size_t(channels) * 2;
+    return t;
+}
+
 } // namespace
 
 GpuEnvironment::GpuEnvironment(std::shared_ptr<const lighting::Environment> source, std::string key,
@@ -53,15 +68,13 @@ GpuEnvironment::GpuEnvironment(std::shared_ptr<const lighting::Environment> sour
     glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     maxLevel_ = float(prefiltered.specular.levels.size() - 1);
 
-    // Step 3: the table, read with bilinear filtering at lighting::brdfTableCoordinate.
-    brdf_ = gl::createTexture(GL_TEXTURE_2D);
-    glTextureStorage2D(brdf_, 1, GL_RGB16F, GLsizei(table.size), GLsizei(table.size));
-    glTextureSubImage2D(brdf_, 0, 0, 0, GLsizei(table.size), GLsizei(table.size), GL_RGB, GL_FLOAT, table.abc.data());
-    glTextureParameteri(brdf_, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTextureParameteri(brdf_, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTextureParameteri(brdf_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(brdf_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    gpuBytes_ += size_t(table.size) * table.size * 6;
+    // Step 3: the tables, read with bilinear filtering at lighting::brdfTableCoordinate.
+    brdf_ = createTable(table.size, 3, table.abc.data(), gpuBytes_);
+    const lighting::LobeTapTable& taps = lighting::lobeTapTable();
+    if (taps.size != table.size)
+        throw gl::GlError("environment: the lobe tap table is " + std::to_string(taps.size) + "^2, the BRDF table " +
+                          std::to_string(table.size) + "^2 (the shaders read both at one coordinate)");
+    lobeTaps_ = createTable(taps.size, 4, taps.taps.data(), gpuBytes_);
 }
 
 void GpuEnvironment::bind() const
@@ -69,6 +82,7 @@ void GpuEnvironment::bind() const
     glBindTextureUnit(bindings::kUnitEnvironment, specular_);
     glBindTextureUnit(bindings::kUnitIrradiance, irradiance_);
     glBindTextureUnit(bindings::kUnitBrdfTable, brdf_);
+    glBindTextureUnit(bindings::kUnitLobeTaps, lobeTaps_);
 }
 
 const lighting::BrdfTable& shaderBrdfTable()

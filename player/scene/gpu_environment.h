@@ -1,7 +1,8 @@
 // The scene's environment on the GPU, for image-based lighting (pbr_shading.glsl): the
-// GGX-prefiltered specular cube (level l holds GGX alpha 2^(l + 1 - levels), level 0 the
-// mirror; lighting/prefilter.h), the diffuse irradiance cube (E / pi) and the split-sum
-// BRDF table (A, B, C; lighting/brdf_table.h). The CPU side that makes them is
+// GGX-prefiltered specular cube (level 0 the mirror, level l holds GGX alpha
+// 2^(l + 1 - levels), then one wide level; lighting/prefilter.h), the diffuse irradiance
+// cube (E / pi), the split-sum BRDF table (A, B, C; lighting/brdf_table.h) and the lobe tap
+// table of the two specular lookups (lighting/lobe_taps.h). The CPU side that makes them is
 // player/lighting/; this class prefilters through it once, uploads and binds.
 #pragma once
 
@@ -9,6 +10,7 @@
 
 #include "brdf_table.h"
 #include "environment_choice.h"
+#include "lobe_taps.h"
 #include "prefilter.h"
 
 #include <cstdint>
@@ -25,10 +27,10 @@ public:
     GpuEnvironment(std::shared_ptr<const lighting::Environment> source, std::string key,
                    const lighting::PrefilterSettings& settings, const lighting::BrdfTable& table);
 
-    // Binds the cubes and the table to LFD_UNIT_ENVIRONMENT, LFD_UNIT_IRRADIANCE and
-    // LFD_UNIT_BRDF_TABLE.
+    // Binds the cubes and the tables to LFD_UNIT_ENVIRONMENT, LFD_UNIT_IRRADIANCE,
+    // LFD_UNIT_BRDF_TABLE and LFD_UNIT_LOBE_TAPS.
     void bind() const;
-    float maxLevel() const { return maxLevel_; } // the specular cube's last level (alpha 1)
+    float maxLevel() const { return maxLevel_; } // the specular cube's last level: the wide one
     const std::string& key() const { return key_; }
     const lighting::PrefilterSettings& settings() const { return settings_; }
     const std::shared_ptr<const lighting::Environment>& source() const { return source_; }
@@ -39,7 +41,7 @@ private:
     std::shared_ptr<const lighting::Environment> source_;
     std::string key_;
     lighting::PrefilterSettings settings_;
-    gl::Texture specular_, irradiance_, brdf_;
+    gl::Texture specular_, irradiance_, brdf_, lobeTaps_;
     float maxLevel_ = 0.0f;
     size_t gpuBytes_ = 0;
     double prefilterSeconds_ = 0.0;
