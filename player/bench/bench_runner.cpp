@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <iostream>
 #include <limits>
 #include <ostream>
 #include <stdexcept>
@@ -186,6 +187,29 @@ void openGstdCache(BenchRun& run, const std::string& glDescription)
                           " " + frameLightingKey(run.pipeline.lighting(), run.pipeline.environment());
         }
     }
+}
+
+// An untimed gstd reference's options: its progress on stderr (issue 42: minutes without
+// a line looked hung), the plan first with what the cost depends on and how to avoid it.
+// Timed gstd frames report nothing: the wait after each batch would be timed too.
+RendererOptions withReferenceProgress(const BenchRun& run)
+{
+    RendererOptions options = run.options.rendererOptions;
+    if (run.options.quiet)
+        return options;
+    std::string hint;
+    if (run.gstdCache)
+        hint = "stored in the gstd cache " + run.gstdCache->entryPath(run.gstdKey).string() + " for the next run";
+    else if (!run.options.gstdCacheEnabled)
+        hint = "not cached (--no-gstd-cache)";
+    hint += std::string(hint.empty() ? "" : "; ") +
+            "faster: --reference mvr (the raster baseline, not the gold standard) or a smaller --gstd-factor / "
+            "--gstd-sub-views; an estimate follows the first batches";
+    const std::string prefix = "lfd-bench: " + run.packName + " " + std::to_string(run.profile.viewCount) + "x" +
+                               std::to_string(run.profile.viewWidth) + "x" + std::to_string(run.profile.viewHeight) +
+                               " ";
+    options.gstd.progress = gstdProgressPrinter(std::cerr, prefix, hint);
+    return options;
 }
 
 // The start of every progress line: pack and view layout.
@@ -470,6 +494,8 @@ bool runConfig(BenchRun& run, size_t i)
         result.stages = std::move(timed->second.stages);
         result.extra = std::move(timed->second.extra);
         run.roundRobin.erase(timed);
+    } else if (!result.timed && config.renderer == "gstd") {
+        renderer = createRenderer(config.renderer, withReferenceProgress(run));
     } else {
         renderer = createRenderer(config.renderer, options.rendererOptions);
     }

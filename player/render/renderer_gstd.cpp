@@ -78,6 +78,14 @@ FrameSetup subViewFrame(const FrameSetup& frame, uint32_t factor, uint32_t subVi
     return sub;
 }
 
+// A value for an error message: "-1", "0.25", "nan".
+std::string numberText(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%g", value);
+    return text;
+}
+
 bool anisotropySupported()
 {
     return epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic") ||
@@ -141,6 +149,10 @@ public:
         }
         panelReady_ = panel;
 
+        GstdProgress progress{0, views * subViews, 0, (views + batch - 1) / batch, width * options_.factor,
+                              height * options_.factor, panel};
+        if (options_.progress)
+            options_.progress(progress); // the plan, before any drawing
         for (uint32_t first = 0; first < views; first += batch) {
             const uint32_t count = std::min(batch, views - first);
             for (uint32_t view = first; view < first + count; ++view)
@@ -152,6 +164,12 @@ public:
             // Step 3 (panel model): the batch's sub-views into every subpixel they reach.
             if (panel)
                 panel_->add(highRes_, width * options_.factor, height * options_.factor, first, count);
+            if (options_.progress) {
+                glFinish(); // the report says what the GPU has finished, not what is queued
+                progress.done += count * subViews;
+                ++progress.batchesDone;
+                options_.progress(progress);
+            }
         }
         glBindTextureUnit(gb::kUnitHighRes, 0);
         glBindImageTexture(gb::kImageAccum, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
@@ -279,8 +297,15 @@ private:
         highResFbo_ = gl::createFramebuffer();
         glNamedFramebufferTextureLayer(highResFbo_, GL_COLOR_ATTACHMENT0, highRes_, 0, 0);
         glNamedFramebufferTexture(highResFbo_, GL_DEPTH_ATTACHMENT, highResDepth_, 0);
-        if (glCheckNamedFramebufferStatus(highResFbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw gl::GlError("gstd: high-resolution framebuffer incomplete");
+        if (const GLenum status = glCheckNamedFramebufferStatus(highResFbo_, GL_FRAMEBUFFER);
+            status != GL_FRAMEBUFFER_COMPLETE) {
+            char hex[16];
+            std::snprintf(hex, sizeof(hex), "0x%04x", unsigned(status));
+            throw gl::GlError("gstd: the " + std::to_string(highW) + "x" + std::to_string(highH) + "x" +
+                              std::to_string(layers) + " sub-view framebuffer (factor " +
+                              std::to_string(options_.factor) + ") is incomplete: status " + hex +
+                              "; try a smaller --gstd-factor");
+        }
         accum_ = gl::createTexture(GL_TEXTURE_2D);
         glTextureStorage2D(accum_, 1, GL_RGBA32F, GLsizei(width), GLsizei(height));
     }
@@ -320,9 +345,11 @@ void validateGstdOptions(const GstdOptions& options)
         throw std::invalid_argument("gstd: sub-views per view must be 1..16 (0 = the model's default), got " +
                                     std::to_string(options.subViews));
     if (!(options.filterDiameter > 0.0) || !std::isfinite(options.filterDiameter))
-        throw std::invalid_argument("gstd: the filter diameter must be positive");
+        throw std::invalid_argument("gstd: the filter diameter must be positive, got " +
+                                    numberText(options.filterDiameter));
     if (!(options.maxAnisotropy >= 1.0f) || !std::isfinite(options.maxAnisotropy))
-        throw std::invalid_argument("gstd: the anisotropy must be at least 1");
+        throw std::invalid_argument("gstd: the anisotropy must be at least 1, got " +
+                                    numberText(options.maxAnisotropy));
 }
 
 std::vector<glm::vec2> gstdSampleOffsets(const GstdOptions& options)

@@ -16,6 +16,7 @@
 // each view interval's sub-views), so views are compared the same way.
 #pragma once
 
+#include "gstd_progress.h"
 #include "renderer.h"
 
 #include <glm/glm.hpp>
@@ -53,6 +54,12 @@ struct GstdOptions {
     // Largest anisotropy of the scene textures' filtering (clamped to the driver's; 1 =
     // trilinear only, for ablation and tests).
     float maxAnisotropy = 16.0f;
+    // Progress reports of each frame (gstd_progress.h): the plan before drawing, then one
+    // per finished batch of sub-views. Set, the renderer waits for the GPU after each batch
+    // (glFinish) so the reports say what is done, not what is queued; that wait is why it
+    // is off by default and lfd-bench sets it only for an untimed reference. Not part of
+    // the pixels (gstdSettingsKey ignores it).
+    GstdProgressCallback progress;
 };
 
 // Throws std::invalid_argument for factor 0, samples 0, sub-views above 16, a non-positive
