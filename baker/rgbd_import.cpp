@@ -4,6 +4,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -330,8 +331,11 @@ uint32_t gridSizeFor(const DepthMap& map)
 
 ImportedScene importRgbd(const RgbdOptions& o, const Log& log)
 {
-    if (!(o.depthHigh > o.depthLow))
-        throw BakeError("--rgbd-depth-range: the near value must exceed the far one");
+    if (!(o.depthHigh > o.depthLow)) {
+        char values[64];
+        std::snprintf(values, sizeof(values), "%g %g", o.depthLow, o.depthHigh);
+        throw BakeError(std::string("--rgbd-depth-range: the near value must exceed the far one, got ") + values);
+    }
     ImportedScene result;
     TextureSource photo;
     const DepthMap map = loadInputs(o, photo);

@@ -48,15 +48,12 @@ const char* kFooter =
 
 // Flag values parsed after CLI11 (sizes, pairs, names).
 struct RawFlags {
-    std::string pack, windowSize, orbit, pan, preview, atomics = "auto", pipeline = "visibility";
-    std::string aa = "none", ss = "1"; // --aa, --ss: typed into PlayOptions once
+    std::string pack, windowSize, orbit, pan, preview;
     std::string quiltLayout;           // --quilt-layout
-    lfd::player::SharedFlags shared;   // the flags lfd-bench takes too
-    uint32_t views = 0, frame = 0;
-    bool noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false, noTurntable = false;
-    bool noPixelCulling = false;
+    lfd::player::SharedFlags shared;   // the flags lfd-bench takes too (--views, --frames, --aa, ...)
+    uint32_t frame = 0;
     bool listMonitors = false;
-    CLI::Option *viewsOpt = nullptr, *framesOpt = nullptr, *frameOpt = nullptr;
+    CLI::Option* frameOpt = nullptr;
     CLI::Option *monitorOpt = nullptr, *windowSizeOpt = nullptr;
 };
 
@@ -72,35 +69,10 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
 {
     app.add_option("PACK", f.pack, "packed scene from lfd-bake (or --quilt-in instead)");
     app.add_flag("--headless", o.headless, "render without a window (EGL)");
+    f.shared.frames = o.frames;
     addSharedFlags(app, f.shared);
     app.add_option("--renderer", o.renderer, "renderer: " + rendererList())->capture_default_str();
-    app.add_flag("--no-lfd-sampling", f.noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
-    app.add_flag("--no-texture-splatting", f.noTextureSplatting, "lfdpr: no density reduction by texture");
-    app.add_flag("--no-mv-mipmapping", f.noMvMipmapping,
-                 "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
-    app.add_flag("--no-pixel-culling", f.noPixelCulling,
-                 "lfdpr: sample every triangle, also those that hold no view pixel centre");
-    app.add_option("--lfdpr-cell-scale", o.rendererOptions.lfdpr.cellScale,
-                   "lfdpr visibility pipeline: point cells of N x N sampling spacings (1 = the paper's density; "
-                   "the views are the same for every N)")
-        ->check(CLI::Range(1u, 8u))
-        ->capture_default_str();
-    app.add_option("--atomics", f.atomics, "lfdpr depth resolve: auto|64|32")->capture_default_str();
-    app.add_option("--lfdpr-pipeline", f.pipeline,
-                   "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
-        ->capture_default_str();
-    f.viewsOpt = app.add_option("--views", f.views, "number of views (overrides the profile)");
-    f.framesOpt = app.add_option("--frames", o.frames,
-                                 "frames to render (timing; windowed: exit after them; with --quilt: a sequence)")
-                      ->capture_default_str();
     f.frameOpt = app.add_option("--frame", f.frame, "frame whose outputs are written (default: the last)");
-    app.add_option("--aa,--reconstruction", f.aa,
-                   "EIA reconstruction: none|spatial|view|view-spatial (spatial: the paper's 2.25 view-pixel Gaussian; view: a tent over 2 view intervals; computed exactly)")
-        ->capture_default_str();
-    app.add_option("--ss", f.ss,
-                   "supersampling: 1 | 2s (views at twice the resolution) | 2v (twice the views, random "
-                   "angles in each view interval), averaged down")
-        ->capture_default_str();
 }
 
 void addOutputFlags(CLI::App& app, PlayOptions& o)
@@ -158,7 +130,6 @@ void addCameraFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
         ->capture_default_str();
     app.add_option("--depthiness", o.controls.depthiness, "view-cone scale (0 flat, 1 the profile's cone)")
         ->capture_default_str();
-    app.add_flag("--no-turntable", f.noTurntable, "no turntable rotation");
 }
 
 void addQuiltInputFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
@@ -177,13 +148,10 @@ void addQuiltInputFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
 // Step 1: flag values, before touching files or the GPU.
 void validateRenderFlags(PlayOptions& o, const RawFlags& f)
 {
-    if (*f.viewsOpt) {
-        if (f.views == 0 || f.views > 2048)
-            throw UsageError("--views: expected 1..2048, got " + std::to_string(f.views));
-        o.views = f.views;
-    }
     lfd::player::SharedFlags shared = f.shared;
     lfd::player::finishSharedFlags(shared);
+    if (!shared.viewCounts.empty())
+        o.views = shared.viewCounts.front();
     if (shared.viewSize)
         std::tie(o.viewWidth, o.viewHeight) = *shared.viewSize;
     o.displayProfile = shared.displayProfile;
@@ -194,24 +162,13 @@ void validateRenderFlags(PlayOptions& o, const RawFlags& f)
     o.lighting = lfd::player::frameLightingFromFlags(shared);
     o.environment = shared.environmentChoice;
     lfd::player::applySharedFlags(shared, o.rendererOptions);
-    o.reconstruction = lfd::player::parseReconstructionFlag("--aa", f.aa);
-    o.supersampling = lfd::player::parseSupersamplingFlag("--ss", f.ss);
-    if (o.frames == 0)
-        throw UsageError("--frames: must be at least 1");
-    o.framesGiven = bool(*f.framesOpt);
+    o.reconstruction = shared.aa.front(); // lfd-play takes one of each (finishSharedFlags)
+    o.supersampling = shared.ss.front();
+    o.frames = shared.frames;
+    o.framesGiven = bool(*f.shared.framesOpt);
+    o.controls.turntable = shared.turntable;
     if (*f.frameOpt)
         o.outputFrame = f.frame;
-    lfd::player::LfdprOptions& lfdpr = o.rendererOptions.lfdpr;
-    lfdpr.lfdBiasedSampling = !f.noLfdSampling;
-    lfdpr.textureSplatting = !f.noTextureSplatting;
-    lfdpr.multiviewMipmapping = !f.noMvMipmapping;
-    lfdpr.pixelCentreCulling = !f.noPixelCulling;
-    try {
-        lfdpr.atomics = lfd::player::parseLfdprAtomics(f.atomics);
-        lfdpr.pipeline = lfd::player::parseLfdprPipeline(f.pipeline);
-    } catch (const std::exception& e) {
-        throw UsageError(e.what());
-    }
     if (!lfd::player::isKnownRenderer(o.renderer))
         throw UsageError("--renderer: unknown renderer '" + o.renderer + "' (known: " + rendererList() + ")");
 }
@@ -235,10 +192,12 @@ void validateWindowFlags(PlayOptions& o, const RawFlags& f)
             throw UsageError(std::string("--preview: ") + e.what());
         }
     }
-    if (o.previewShape.viewStep == 0 || o.previewShape.sizeDivisor == 0)
-        throw UsageError("--preview-view-step and --preview-size-divisor: must be at least 1");
+    if (o.previewShape.viewStep == 0)
+        throw UsageError("--preview-view-step: must be at least 1, got 0");
+    if (o.previewShape.sizeDivisor == 0)
+        throw UsageError("--preview-size-divisor: must be at least 1, got 0");
     if (!std::isfinite(o.previewHoldSeconds) || o.previewHoldSeconds < 0.0)
-        throw UsageError("--preview-hold: must be >= 0");
+        throw UsageError("--preview-hold: must be >= 0 seconds, got " + lfd::cli::numberText(o.previewHoldSeconds));
 }
 
 void validateCameraFlags(PlayOptions& o, const RawFlags& f)
@@ -256,7 +215,6 @@ void validateCameraFlags(PlayOptions& o, const RawFlags& f)
     }
     if (!f.pan.empty())
         o.controls.panMm = pair("--pan", f.pan);
-    o.controls.turntable = !f.noTurntable;
 }
 
 void validateOutputFlags(PlayOptions& o)
@@ -302,11 +260,12 @@ void validateInputFlags(PlayOptions& o, const RawFlags& f)
     if (o.quiltFrame && (o.quiltIn.empty() || !o.headless))
         throw UsageError("--quilt-frame: needs --headless and a quilt video (--quilt-in)");
     if (!o.quiltIn.empty()) {
-        if (*f.viewsOpt || *f.shared.viewSizeOpt)
-            throw UsageError(std::string(*f.viewsOpt ? "--views" : "--view-size") +
+        if (*f.shared.viewsOpt || *f.shared.viewSizeOpt)
+            throw UsageError(std::string(*f.shared.viewsOpt ? "--views" : "--view-size") +
                              ": the quilt's layout gives the views with --quilt-in");
         if (!std::isfinite(o.slideSeconds) || o.slideSeconds <= 0.0)
-            throw UsageError("--slide-seconds: must be a positive number");
+            throw UsageError("--slide-seconds: must be a positive number, got " +
+                             lfd::cli::numberText(o.slideSeconds));
     }
 }
 
@@ -318,7 +277,8 @@ lfd::DisplayProfile loadProfile(const PlayOptions& o)
     profile = lfd::withViews(profile, o.views.value_or(profile.viewCount), o.viewWidth.value_or(profile.viewWidth),
                              o.viewHeight.value_or(profile.viewHeight));
     if (!o.viewerOut.empty() && o.viewerPosition >= double(profile.viewCount))
-        throw UsageError("--viewer-pos: must be in [0, " + std::to_string(profile.viewCount) + ")");
+        throw UsageError("--viewer-pos: must be in [0, " + std::to_string(profile.viewCount) + "), got " +
+                         lfd::cli::numberText(o.viewerPosition));
     try {
         lfd::player::validateViewControls(o.controls, profile.viewConeDeg);
     } catch (const std::exception& e) {

@@ -46,29 +46,15 @@ std::vector<std::string> parseRendererList(const std::string& text)
 std::atomic<bool> gStop{false};
 extern "C" void onSignal(int) { gStop = true; }
 
-// "none,view" -> the modes, typed once by `parse` (tool_flags.h's --aa / --ss parsers).
-template <class Parse>
-auto parseModeList(const std::string& flag, const std::string& text, Parse parse)
-{
-    const std::vector<std::string> names = lfd::cli::splitList(text);
-    if (names.empty())
-        throw UsageError(flag + ": empty list");
-    std::vector<decltype(parse(flag, text))> modes;
-    for (const std::string& n : names)
-        modes.push_back(parse(flag, n));
-    return modes;
-}
-
 // Raw flag values as CLI11 fills them (options bound straight into BenchOptions are not here).
 struct BenchFlags {
     std::vector<std::string> packs;
-    std::string renderers = "mvr,mvr-layered,lfdpr", views, aaList = "none", ssList = "1";
+    std::string renderers = "mvr,mvr-layered,lfdpr";
     bool variants = false;
     std::string gstdCache;
     bool noGstdCache = false;
     std::string outDir;
-    lfd::player::SharedFlags shared; // the flags lfd-play takes too
-    CLI::Option* viewsOpt = nullptr;
+    lfd::player::SharedFlags shared; // the flags lfd-play takes too (--views, --aa, --ss as lists)
 };
 
 // What the validated flags add to BenchOptions: the view counts and an optional view size.
@@ -82,13 +68,9 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
 {
     app.add_option("PACK", flags.packs, "packed scenes from lfd-bake (one matrix run per pack and view count)")
         ->required();
-    app.add_option("--aa", flags.aaList,
-                   "comma-separated EIA reconstructions to run every renderer with: none|spatial|view|view-spatial")
+    // --renderer: lfd-play's name for it (a list of one is a list).
+    app.add_option("--renderers,--renderer", flags.renderers, "comma-separated renderers to time")
         ->capture_default_str();
-    app.add_option("--ss", flags.ssList,
-                   "comma-separated supersampling modes to run every renderer with: 1|2s|2v")
-        ->capture_default_str();
-    app.add_option("--renderers", flags.renderers, "comma-separated renderers to time")->capture_default_str();
     app.add_flag("--lfdpr-variants", flags.variants,
                  "also time the paper's pipeline (lfdpr-paper) and lfdpr with each innovation "
                  "disabled (lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting, lfdpr-no-pixel-culling, "
@@ -96,10 +78,9 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
     flags.shared.fps = options.fps;
     flags.shared.turntablePeriod = options.turntablePeriod;
     flags.shared.gstdFactor = options.rendererOptions.gstd.factor;
+    flags.shared.frames = options.frames;
+    flags.shared.lists = true;
     addSharedFlags(app, flags.shared);
-    flags.viewsOpt = app.add_option("--views", flags.views, "number of views (overrides the profile); a "
-                                                            "comma-separated list runs the matrix once per view count");
-    app.add_option("--frames", options.frames, "timed frames per renderer")->capture_default_str();
     app.add_option("--warmup", options.warmup, "untimed frames before them")->capture_default_str();
     app.add_flag("!--sequential", options.interleave,
                  "time each renderer's frames in one block, one renderer after the other (default: the "
@@ -131,8 +112,6 @@ void validateRendererFlags(const BenchFlags& flags, lfd::player::BenchOptions& o
 {
     using namespace lfd::player;
     options.renderers = parseRendererList(flags.renderers);
-    options.aa = parseModeList("--aa", flags.aaList, lfd::player::parseReconstructionFlag);
-    options.ss = parseModeList("--ss", flags.ssList, lfd::player::parseSupersamplingFlag);
     if (flags.variants)
         for (const std::string& v : lfdprVariantNames())
             if (std::find(options.renderers.begin(), options.renderers.end(), v) == options.renderers.end())
@@ -150,30 +129,17 @@ void applyShared(const BenchFlags& flags, lfd::player::BenchOptions& options, Ma
     lfd::player::SharedFlags shared = flags.shared;
     lfd::player::finishSharedFlags(shared);
     options.fps = shared.fps;
-    options.turntablePeriod = shared.turntablePeriod;
+    // --no-turntable: a still scene, as --turntable-period 0 (also in the gstd cache key).
+    options.turntablePeriod = shared.turntable ? shared.turntablePeriod : 0.0;
+    options.frames = shared.frames;
+    options.aa = shared.aa;
+    options.ss = shared.ss;
     options.aniso = float(shared.aniso);
     options.lighting = lfd::player::frameLightingFromFlags(shared);
     options.environment = shared.environmentChoice;
     lfd::player::applySharedFlags(shared, options.rendererOptions);
     shape.size = shared.viewSize;
-}
-
-// --views "24,48" -> {24, 48}; empty when the flag is not given (the profile's count is used).
-std::vector<uint32_t> parseViewCounts(const BenchFlags& flags)
-{
-    std::vector<uint32_t> viewCounts;
-    if (*flags.viewsOpt) {
-        for (const std::string& item : lfd::cli::splitList(flags.views)) {
-            char* end = nullptr;
-            const unsigned long n = std::strtoul(item.c_str(), &end, 10);
-            if (item.empty() || *end != '\0' || n == 0 || n > 2048)
-                throw UsageError("--views: expected 1..2048, got '" + item + "'");
-            viewCounts.push_back(uint32_t(n));
-        }
-        if (viewCounts.empty())
-            throw UsageError("--views: empty list");
-    }
-    return viewCounts;
+    shape.viewCounts = shared.viewCounts; // empty: the profile's count
 }
 
 // --out: not a file, and created now.
@@ -198,9 +164,6 @@ MatrixShape validateFlags(const BenchFlags& flags, lfd::player::BenchOptions& op
     MatrixShape shape;
     applyShared(flags, options, shape);
     validateRendererFlags(flags, options);
-    if (options.frames == 0)
-        throw UsageError("--frames: must be at least 1");
-    shape.viewCounts = parseViewCounts(flags);
     prepareOutDir(flags, options);
     return shape;
 }

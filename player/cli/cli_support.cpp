@@ -28,6 +28,13 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const 
     return std::nullopt;
 }
 
+std::string numberText(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof(text), "%g", value);
+    return text;
+}
+
 int runReportingErrors(const char* tool, const std::function<int()>& body)
 {
     try {

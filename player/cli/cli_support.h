@@ -33,6 +33,10 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv, const 
 // printed as "<tool>: <message>" on one line.
 int runReportingErrors(const char* tool, const std::function<int()>& body);
 
+// A flag's number as the user would type it, for "got ..." in an error: "-1", "0.25",
+// "inf", "nan" (%g: the shortest form that still tells the value).
+std::string numberText(double value);
+
 // "480x360" -> (480, 360), both 1..999999; UsageError naming `flag` otherwise.
 std::pair<uint32_t, uint32_t> parseSize(const std::string& flag, const std::string& text);
 

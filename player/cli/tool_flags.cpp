@@ -2,11 +2,112 @@
 
 #include "cli_support.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace lfd::player {
 
 using cli::UsageError;
+
+namespace {
+
+// --views, --frames, --aa / --reconstruction, --ss: one value in lfd-play, lists in lfd-bench.
+void addFrameFlags(CLI::App& app, SharedFlags& flags)
+{
+    const std::string list = flags.lists ? "; a comma-separated list runs the matrix once per value" : "";
+    flags.viewsOpt = app.add_option("--views", flags.viewsText, "number of views, 1..2048 (overrides the profile)" + list);
+    flags.framesOpt = app.add_option("--frames", flags.frames,
+                                     flags.lists ? "timed frames per renderer"
+                                                 : "frames to render (timing; windowed: exit after them; with "
+                                                   "--quilt: a sequence)")
+                          ->capture_default_str();
+    app.add_option("--aa,--reconstruction", flags.aaText,
+                   "EIA reconstruction: none|spatial|view|view-spatial (spatial: the paper's 2.25 view-pixel "
+                   "Gaussian; view: a tent over 2 view intervals; computed exactly)" + list)
+        ->capture_default_str();
+    app.add_option("--ss", flags.ssText,
+                   "supersampling: 1 | 2s (views at twice the resolution) | 2v (twice the views, random angles in "
+                   "each view interval), averaged down" + list)
+        ->capture_default_str();
+}
+
+// lfdpr's switches; in lfd-bench they apply to lfdpr and every lfdpr-* variant.
+void addLfdprFlags(CLI::App& app, SharedFlags& flags)
+{
+    app.add_flag("--no-lfd-sampling", flags.noLfdSampling, "lfdpr: isotropic sampling at the finer density (iVIR)");
+    app.add_flag("--no-texture-splatting", flags.noTextureSplatting, "lfdpr: no density reduction by texture");
+    app.add_flag("--no-mv-mipmapping", flags.noMvMipmapping,
+                 "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
+    app.add_flag("--no-pixel-culling", flags.noPixelCulling,
+                 "lfdpr: sample every triangle, also those that hold no view pixel centre");
+    app.add_option("--lfdpr-cell-scale", flags.lfdprCellScale,
+                   "lfdpr visibility pipeline: point cells of N x N sampling spacings (1 = the paper's density; "
+                   "the views are the same for every N)")
+        ->check(CLI::Range(1u, 8u))
+        ->capture_default_str();
+    app.add_option("--atomics", flags.atomicsText, "lfdpr depth resolve: auto|64|32")->capture_default_str();
+    app.add_option("--lfdpr-pipeline", flags.pipelineText,
+                   "lfdpr: visibility (compute points, per-pixel shading) | paper (the paper's pipeline)")
+        ->capture_default_str();
+}
+
+// "24,48" -> {24, 48}: each 1..2048; lfd-play (lists false) takes exactly one.
+std::vector<uint32_t> parseViewCounts(const SharedFlags& flags)
+{
+    std::vector<uint32_t> counts;
+    for (const std::string& item : cli::splitList(flags.viewsText)) {
+        char* end = nullptr;
+        const unsigned long n = std::strtoul(item.c_str(), &end, 10);
+        if (item.empty() || *end != '\0' || item[0] == '-' || n == 0 || n > 2048)
+            throw UsageError("--views: expected 1..2048, got '" + item + "'");
+        counts.push_back(uint32_t(n));
+    }
+    if (counts.empty())
+        throw UsageError("--views: empty list");
+    if (!flags.lists && counts.size() > 1)
+        throw UsageError("--views: one view count, got '" + flags.viewsText + "' (lfd-bench takes a list)");
+    return counts;
+}
+
+// "none,view" -> the modes, each typed by `parse`; one value unless the tool takes lists.
+template <class Parse>
+auto parseModes(const SharedFlags& flags, const std::string& flag, const std::string& text, Parse parse)
+{
+    const std::vector<std::string> names = cli::splitList(text);
+    if (names.empty())
+        throw UsageError(flag + ": empty list");
+    if (!flags.lists && names.size() > 1)
+        throw UsageError(flag + ": one value, got '" + text + "' (lfd-bench takes a list)");
+    std::vector<decltype(parse(flag, text))> modes;
+    for (const std::string& n : names)
+        modes.push_back(parse(flag, n));
+    return modes;
+}
+
+// --views, --frames, --aa, --ss, --no-turntable and lfdpr's switches, typed.
+void finishFrameAndLfdprFlags(SharedFlags& flags)
+{
+    if (flags.frames == 0)
+        throw UsageError("--frames: must be at least 1, got 0");
+    if (*flags.viewsOpt)
+        flags.viewCounts = parseViewCounts(flags);
+    flags.aa = parseModes(flags, "--aa", flags.aaText, parseReconstructionFlag);
+    flags.ss = parseModes(flags, "--ss", flags.ssText, parseSupersamplingFlag);
+    flags.turntable = !flags.noTurntable;
+    flags.lfdSampling = !flags.noLfdSampling;
+    flags.textureSplatting = !flags.noTextureSplatting;
+    flags.mvMipmapping = !flags.noMvMipmapping;
+    flags.pixelCulling = !flags.noPixelCulling;
+    try { // the parsers name their flag
+        flags.atomics = parseLfdprAtomics(flags.atomicsText);
+        flags.pipeline = parseLfdprPipeline(flags.pipelineText);
+    } catch (const std::exception& e) {
+        throw UsageError(e.what());
+    }
+}
+
+} // namespace
 
 void addSharedFlags(CLI::App& app, SharedFlags& flags)
 {
@@ -54,6 +155,23 @@ void addSharedFlags(CLI::App& app, SharedFlags& flags)
         ->capture_default_str();
     app.add_flag("--gl-debug", flags.glDebug,
                  "debug GL context: print every KHR_debug message; a GL error fails the run naming the call");
+    app.add_flag("--no-turntable", flags.noTurntable, "no turntable rotation: a still scene (as --turntable-period 0)");
+    addFrameFlags(app, flags);
+    addLfdprFlags(app, flags);
+}
+
+std::vector<std::string> sharedFlagNames()
+{
+    CLI::App app;
+    SharedFlags flags;
+    addSharedFlags(app, flags);
+    std::vector<std::string> names;
+    for (const CLI::Option* option : app.get_options())
+        for (const std::string& name : option->get_lnames())
+            names.push_back("--" + name);
+    // CLI11's own --help is not one of ours.
+    std::erase(names, "--help");
+    return names;
 }
 
 void finishSharedFlags(SharedFlags& flags)
@@ -61,9 +179,10 @@ void finishSharedFlags(SharedFlags& flags)
     if (*flags.viewSizeOpt)
         flags.viewSize = cli::parseSize("--view-size", flags.viewSizeText);
     if (!std::isfinite(flags.fps) || flags.fps <= 0.0)
-        throw UsageError("--fps: must be a positive number");
+        throw UsageError("--fps: must be a positive number, got " + cli::numberText(flags.fps));
     if (!std::isfinite(flags.turntablePeriod) || flags.turntablePeriod < 0.0)
-        throw UsageError("--turntable-period: must be >= 0");
+        throw UsageError("--turntable-period: must be >= 0 seconds, got " + cli::numberText(flags.turntablePeriod));
+    finishFrameAndLfdprFlags(flags);
     GstdOptions gstd;
     gstd.factor = flags.gstdFactor;
     try {
@@ -83,9 +202,11 @@ void finishSharedFlags(SharedFlags& flags)
         throw UsageError(std::string("--gstd-sub-views: ") + e.what());
     }
     if (!std::isfinite(flags.environmentRotationDeg))
-        throw UsageError("--environment-rotation: must be a finite number of degrees");
+        throw UsageError("--environment-rotation: must be a finite number of degrees, got " +
+                         cli::numberText(flags.environmentRotationDeg));
     if (!std::isfinite(flags.exposureEv) || std::abs(flags.exposureEv) > 64.0)
-        throw UsageError("--exposure: must be a number of stops between -64 and 64");
+        throw UsageError("--exposure: must be a number of stops between -64 and 64, got " +
+                         cli::numberText(flags.exposureEv));
     if (flags.toneMapText == "pbr-neutral")
         flags.toneMap = ToneMap::PbrNeutral;
     else if (flags.toneMapText == "none")
@@ -114,6 +235,13 @@ void applySharedFlags(const SharedFlags& flags, RendererOptions& options)
     options.gstd.subViews = flags.gstdSubViews;
     options.lfdpr.workShape = flags.lfdprWork;
     options.lfdpr.anisoFilter = flags.lfdprAniso;
+    options.lfdpr.lfdBiasedSampling = flags.lfdSampling;
+    options.lfdpr.textureSplatting = flags.textureSplatting;
+    options.lfdpr.multiviewMipmapping = flags.mvMipmapping;
+    options.lfdpr.pixelCentreCulling = flags.pixelCulling;
+    options.lfdpr.cellScale = flags.lfdprCellScale;
+    options.lfdpr.atomics = flags.atomics;
+    options.lfdpr.pipeline = flags.pipeline;
 }
 
 Reconstruction parseReconstructionFlag(const std::string& flag, const std::string& text)

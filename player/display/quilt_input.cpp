@@ -179,7 +179,7 @@ QuiltViews extractQuiltViews(const metrics::Image& quilt, const QuiltName& name,
         throw QuiltInputError(std::to_string(count) + " views asked of a " + std::to_string(name.cols) + "x" +
                               std::to_string(name.rows) + " quilt");
     if (quilt.channels != 4)
-        throw QuiltInputError("quilt image must be RGBA8");
+        throw QuiltInputError("quilt image has " + std::to_string(quilt.channels) + " channels, expected 4 (RGBA8)");
     const uint32_t tileW = quilt.width / name.cols, tileH = quilt.height / name.rows;
     if (tileW == 0 || tileH == 0)
         throw QuiltInputError(std::to_string(quilt.width) + "x" + std::to_string(quilt.height) +

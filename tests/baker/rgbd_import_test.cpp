@@ -237,3 +237,24 @@ TEST_F(RgbdImport, SamplePairBakesWithinTheEdgeBoundAndVerifies)
     EXPECT_EQ(both.exitCode, 1);
     EXPECT_NE(both.out.find("either a glTF INPUT or --rgbd"), std::string::npos) << both.out;
 }
+
+// Issue 42: the message names the flag and the values given, through the real lfd-bake.
+TEST_F(RgbdImport, ReversedDepthRangeNamesTheValues)
+{
+    RgbdOptions o = withDepth([](int, int) { return 128; });
+    o.depthLow = 0.8;
+    o.depthHigh = 0.2;
+    try {
+        importRgbd(o, {});
+        FAIL() << "a reversed depth range was accepted";
+    } catch (const std::exception& e) {
+        EXPECT_NE(std::string(e.what()).find("--rgbd-depth-range: the near value must exceed the far one, got 0.8 0.2"),
+                  std::string::npos)
+            << e.what();
+    }
+    const lfd::test::RunResult r = run(std::string(LFD_BINARY_DIR) + "/baker/lfd-bake --rgbd " +
+                                       quoted(dir_ / "photo.png") + " " + quoted(dir_ / "depth.png") +
+                                       " --rgbd-depth-range 0.8 0.2 -o " + quoted(dir_ / "r.lfdpack"));
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.out.find("got 0.8 0.2"), std::string::npos) << r.out;
+}
