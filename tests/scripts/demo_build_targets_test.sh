@@ -14,7 +14,7 @@ demo=$src/scripts/demo.sh
 build_line=$(grep -E '^[^#]*scripts/build\.sh' "$demo") || fail "demo.sh has no scripts/build.sh line"
 [[ $(grep -cE '^[^#]*scripts/build\.sh' "$demo") == 1 ]] || fail "demo.sh runs build.sh more than once"
 # The targets named on the build line, and the tools the script runs from ./build.
-named=$(grep -oE -- '--target[ =][A-Za-z0-9_.-]+' <<<"$build_line" | sed -E 's/--target[ =]//' | sort -u)
+named=$(grep -oE -- '--target[ =][A-Za-z0-9_.-]+' <<<"$build_line" | sed -E 's/--target[ =]//' | sort -u || true)
 run=$(grep -oE '\./build/[A-Za-z0-9_/.-]*/(lfd-[a-z-]+)' "$demo" | sed -E 's|.*/||' | sort -u)
 [[ -n $named ]] || fail "demo.sh's build line names no --target (it would build every test suite): $build_line"
 [[ -n $run ]] || fail "found no ./build/.../lfd-* tool run by demo.sh"
