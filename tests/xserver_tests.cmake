@@ -8,6 +8,8 @@ set_tests_properties(
   DisplayWindowTest.MismatchedMonitorIsRefusedOrCentredUnscaled
   DisplayWindowTest.CameraControlsAndPreviewFromMouseAndKeys
   DisplayWindowTest.QuiltInputFullscreenEqualsItsHeadlessEia
+  DisplayWindowTest.ReadoutTogglesOverTheWindowAndStaysOutOfScreenshots
+  DisplayWindowTest.ReadoutOnThePanelOnlyWhenAsked
   WindowSmoke.RendersEveryOutputAndSavesScreenshotsUnderXvfb
   WindowSmoke.KeysAndMouseSwitchRendererOutputViewerAndPause
   PROPERTIES RESOURCE_LOCK xvfb)

@@ -13,6 +13,7 @@
 #include "quilt_video.h"
 #include "tool_flags.h"
 #include "window_app.h"
+#include "window_key_help.h"
 
 #include "lfd/display_profile.h"
 #include "lfd/pack.h"
@@ -36,15 +37,13 @@ using lfd::cli::checkOutputPath;
 using lfd::cli::parseSize;
 using lfd::player::PlayOptions;
 
-const char* kFooter =
-    "Window keys: R renderer, C reconstruction, O output (EIA, quilt, single view, simulated viewer), "
-    "space pause/resume, . (period) one frame forward while paused, Left/Right move the simulated viewer, "
-    "Esc quit.\n"
-    "Camera: left drag orbit, right or middle drag (or Shift+left drag) pan, wheel zoom, ] / [ focal plane "
-    "nearer / farther (the depth shown at zero parallax), = / - depthiness (view-cone scale) up / down, "
-    "T turntable on/off, Home or Backspace reset.\n"
-    "While the camera moves the window renders a preview (every 2nd view at half size, --preview-*) and "
-    "returns to full quality when input stops.";
+// The window's keys come from window_key_help.h, the table the on-screen key help shows.
+std::string footer()
+{
+    return "Window keys and mouse: " + lfd::player::keyBindingsSentence() +
+           "\nWhile the camera moves the window renders a preview (every 2nd view at half size, --preview-*) and "
+           "returns to full quality when input stops.";
+}
 
 // Flag values parsed after CLI11 (sizes, pairs, names).
 struct RawFlags {
@@ -55,6 +54,7 @@ struct RawFlags {
     bool listMonitors = false;
     CLI::Option* frameOpt = nullptr;
     CLI::Option *monitorOpt = nullptr, *windowSizeOpt = nullptr;
+    bool readout = false, noReadout = false;
 };
 
 std::string rendererList()
@@ -110,6 +110,10 @@ void addWindowFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
                                   "fullscreen monitor: INDEX or NAME (default: the one whose mode is the panel's)");
     app.add_flag("--allow-mismatch", o.allowMismatch,
                  "fullscreen on a monitor of another size: centre the EIA unscaled instead of refusing");
+    app.add_flag("--readout", f.readout,
+                 "windowed: start with the on-screen readout shown, also fullscreen (key I; default: shown in a "
+                 "desktop window, not fullscreen on the panel)");
+    app.add_flag("--no-readout", f.noReadout, "windowed: start with the on-screen readout hidden (key I)");
     app.add_flag("--list-monitors", f.listMonitors, "list the monitors and whether each matches the panel, then exit");
     app.add_option("--preview", f.preview,
                    "responsive preview: off|auto (while the camera moves; window default)|always (default headless: off)");
@@ -183,6 +187,13 @@ void validateWindowFlags(PlayOptions& o, const RawFlags& f)
         throw UsageError("--fullscreen: cannot be combined with --headless");
     if (o.fullscreen && *f.windowSizeOpt)
         throw UsageError("--window-size: a fullscreen window takes the monitor's size");
+    if (f.readout && f.noReadout)
+        throw UsageError("--readout: cannot be combined with --no-readout");
+    if ((f.readout || f.noReadout) && o.headless)
+        throw UsageError(std::string(f.readout ? "--readout" : "--no-readout") +
+                         ": needs a window (headless images never carry the readout)");
+    if (f.readout || f.noReadout)
+        o.readout = f.readout;
     if ((*f.monitorOpt || o.allowMismatch) && !o.fullscreen)
         throw UsageError(std::string(*f.monitorOpt ? "--monitor" : "--allow-mismatch") + ": needs --fullscreen");
     if (!f.preview.empty()) {
@@ -603,7 +614,7 @@ int main(int argc, char** argv)
     RawFlags flags;
     CLI::App app{"lfd-play: render a packed scene (.lfdpack), or play quilts, as light field views and the "
                  "panel's elemental image array (EIA)"};
-    app.footer(kFooter);
+    app.footer(footer());
     addRenderFlags(app, options, flags);
     addOutputFlags(app, options);
     addWindowFlags(app, options, flags);

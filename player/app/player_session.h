@@ -60,6 +60,8 @@ struct PlayOptions {
     uint32_t windowWidth = 1280, windowHeight = 800;
     std::string show = "eia";              // windowed: first output shown (eia|quilt|view|viewer)
     bool framesGiven = false;              // windowed: exit after `frames` frames
+    std::optional<bool> readout;           // windowed: on-screen readout at start (--readout / --no-readout);
+                                           // unset: shown in a desktop window, not fullscreen
     bool glDebug = false;                  // --gl-debug: debug context, KHR_debug messages printed
 
     // Driving a display (README "Driving a display").

@@ -8,6 +8,8 @@
 #include "monitor_selection.h"
 #include "quilt.h"
 #include "simulated_viewer.h"
+#include "text_overlay_drawer.h"
+#include "window_readout.h"
 
 #include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 
 namespace lfd::player {
 
@@ -37,6 +40,7 @@ const char* shownName(Shown s)
 struct Input {
     bool nextRenderer = false, nextReconstruction = false, nextOutput = false;
     bool paused = false;
+    bool toggleReadout = false, toggleHelp = false; // I, H / F1 (window_readout.h)
     int viewerStep = 0;
     int frameSteps = 0; // '.' while paused: frames to step forward
     // Camera input gathered since the last frame (camera_controls.h).
@@ -84,6 +88,9 @@ void onKey(GLFWwindow* window, int key, int, int action, int)
     case GLFW_KEY_R: input.nextRenderer |= press; break;
     case GLFW_KEY_C: input.nextReconstruction |= press; break;
     case GLFW_KEY_O: input.nextOutput |= press; break;
+    case GLFW_KEY_I: input.toggleReadout ^= press; break;
+    case GLFW_KEY_H:
+    case GLFW_KEY_F1: input.toggleHelp ^= press; break;
     case GLFW_KEY_SPACE: if (press) input.paused = !input.paused; break;
     case GLFW_KEY_PERIOD: input.frameSteps += input.paused ? 1 : 0; break;
     case GLFW_KEY_LEFT: --input.viewerStep; break;
@@ -638,6 +645,84 @@ void showReadout(LoopState& state, Readouts& readouts, PlayerSession& session, c
     }
 }
 
+// The on-screen readout and key help (window_readout.h): toggled by I and H / F1, drawn
+// into the window after the output and after --screenshot has read it, before the swap.
+struct Overlay {
+    ReadoutToggles toggles;
+    FrameTimeAverage frameTime;
+    std::optional<CameraReadout> lastCamera; // to notice focus and depthiness changes
+    std::optional<TextOverlayDrawer> drawer; // built when first shown
+};
+
+// What the readout reports about the frame just shown.
+ReadoutState readoutState(const LoopState& state, PlayerSession& session, const CameraControls& controls,
+                          const Overlay& overlay, bool paused, int windowW, int windowH)
+{
+    const DisplayProfile& display = session.displayProfile();
+    const DisplayProfile& views = session.profile();
+    ReadoutState r;
+    r.renderer = session.rendererName();
+    r.reconstruction = state.reconstructions[state.reconstructionIndex];
+    r.shown = shownName(state.shown);
+    r.views = views.viewCount;
+    r.viewWidth = views.viewWidth;
+    r.viewHeight = views.viewHeight;
+    switch (state.shown) {
+    case Shown::Eia:
+        r.outputWidth = display.panelWidth;
+        r.outputHeight = display.panelHeight;
+        break;
+    case Shown::Quilt: {
+        const QuiltLayout layout = quiltLayoutFor(session.options(), views);
+        r.outputWidth = layout.width();
+        r.outputHeight = layout.height();
+        break;
+    }
+    case Shown::SingleView:
+        r.outputWidth = session.targets().width();
+        r.outputHeight = session.targets().height();
+        break;
+    case Shown::Viewer:
+        r.outputWidth = views.viewWidth;
+        r.outputHeight = views.viewHeight;
+        break;
+    }
+    r.windowWidth = uint32_t(std::max(windowW, 0));
+    r.windowHeight = uint32_t(std::max(windowH, 0));
+    r.preview = session.lastQuality() == FrameQuality::Preview;
+    r.paused = paused;
+    r.frameMs = overlay.frameTime.meanMs();
+    if (!session.quiltInput())
+        r.camera = CameraReadout{controls.state().focalDepthMm, controls.state().depthiness};
+    return r;
+}
+
+// Step 3b: the I and H presses, a focus or depthiness change, and the overlay drawn over
+// the output (nothing at all while it is off).
+void drawOverlay(Overlay& overlay, Input& input, const LoopState& state, PlayerSession& session,
+                 const CameraControls& controls, int windowW, int windowH, double wall)
+{
+    if (input.toggleReadout)
+        overlay.toggles.toggleReadout();
+    if (input.toggleHelp)
+        overlay.toggles.toggleHelp();
+    input.toggleReadout = input.toggleHelp = false;
+    const CameraReadout camera{controls.state().focalDepthMm, controls.state().depthiness};
+    if (overlay.lastCamera &&
+        (overlay.lastCamera->focalDepthMm != camera.focalDepthMm || overlay.lastCamera->depthiness != camera.depthiness))
+        overlay.toggles.cameraChanged(wall);
+    overlay.lastCamera = camera;
+    if (windowW <= 0 || windowH <= 0)
+        return;
+    const std::vector<OverlayLine> lines =
+        overlay.toggles.lines(readoutState(state, session, controls, overlay, input.paused, windowW, windowH), wall);
+    if (lines.empty())
+        return;
+    if (!overlay.drawer)
+        overlay.drawer.emplace();
+    overlay.drawer->draw(layoutOverlay(lines, windowW, windowH), windowW, windowH);
+}
+
 // Finishes the timers and prints the run's frame counts, mean frame times and fps.
 void printRunSummary(PlayerSession& session, const LoopState& state)
 {
@@ -671,6 +756,7 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
     state.startWall = glfwGetTime();
     state.lastWall = state.lastTitle = state.startWall;
     Readouts readouts;
+    Overlay overlay{ReadoutToggles(options.readout, setup.fullscreen), {}, {}, {}};
     while (!glfwWindowShouldClose(window) && !(companion && glfwWindowShouldClose(companion))) {
         glfwPollEvents();
         int windowW = 0, windowH = 0;
@@ -687,8 +773,11 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
         const bool last = options.framesGiven && state.frame >= options.frames;
         if (last && !options.screenshot.empty())
             takeScreenshot(options, windowW, windowH, state.status);
+        drawOverlay(overlay, input, state, session, controls, windowW, windowH, wall);
         glfwSwapBuffers(window);
-        readouts.pacing.swapped(glfwGetTime());
+        const double swapped = glfwGetTime();
+        readouts.pacing.swapped(swapped);
+        overlay.frameTime.swapped(swapped);
 
         if (wall - state.lastTitle >= 0.5 || last)
             showReadout(state, readouts, session, controls, setup, companion, input.paused, wall, last);
@@ -702,6 +791,7 @@ int runLoop(WindowSetup& setup, PlayerSession& session, const PlayOptions& optio
     show.viewer.release();
     show.layerFbo.reset();
     show.eiaFbo.reset();
+    overlay.drawer.reset();
     if (companion)
         glfwDestroyWindow(companion);
     return state.status;

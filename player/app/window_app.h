@@ -1,9 +1,11 @@
 // Interactive lfd-play: a GLFW window showing the EIA, the quilt, one view or the simulated
 // viewer's view - scaled to fit in a desktop window, or with --fullscreen the EIA 1:1 on
-// the panel's monitor (monitor_selection.h). Keys: R renderer, C reconstruction, O
-// displayed output, space pause/resume, Left/Right move the simulated viewer (and pick the
-// single view), Esc quit; camera controls (drag, wheel, [ ] - = T Home) as in
-// camera_controls.h. While the camera moves, frames render at preview quality (fewer,
+// the panel's monitor (monitor_selection.h). Keys (window_key_help.h): R renderer, C
+// reconstruction, O displayed output, space pause/resume, Left/Right move the simulated
+// viewer (and pick the single view), I the on-screen readout, H / F1 the key help, Esc
+// quit; camera controls (drag, wheel, [ ] - = T Home) as in camera_controls.h. The
+// readout (window_readout.h) is drawn over the output in a desktop window by default and
+// fullscreen only when asked for (I, H, --readout), never into --screenshot. While the camera moves, frames render at preview quality (fewer,
 // smaller views) and return to full quality when input stops. The title (and, fullscreen,
 // a companion window on another monitor and a line on stdout) shows fps, frame pacing and
 // per-stage GPU milliseconds of full and preview frames, refreshed about twice a second.

@@ -1,8 +1,10 @@
 // Driving a display under Xvfb: --fullscreen on a screen of the panel's size shows the
 // headless EIA pixel for pixel (captured from the X server's framebuffer, not from the
 // program), a monitor of another size is refused (or, with --allow-mismatch, shows the EIA
-// centred and unscaled), --list-monitors, and the camera controls and the responsive
-// preview driven by mouse and keys through xdotool. Skipped without Xvfb / xdotool.
+// centred and unscaled), --list-monitors, the camera controls and the responsive
+// preview driven by mouse and keys through xdotool, and the on-screen readout and key help
+// (I, H: over the output in a window, on the panel only when asked, never in a
+// --screenshot). Skipped without Xvfb / xdotool.
 #include "gl_test_support.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
@@ -10,6 +12,7 @@
 
 #include "image_metrics.h"
 #include "quilt_video.h"
+#include "text_overlay_layout.h"
 
 #include "lfd/pack.h"
 
@@ -17,8 +20,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
+#include <climits>
 #include <csignal>
+#include <functional>
 #include <cstdio>
 #include <fstream>
 #include <thread>
@@ -36,6 +42,43 @@ std::string readText(const fs::path& path)
 {
     std::ifstream in(path);
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// Where two screen captures differ: how many pixels, and their bounding box.
+struct Difference {
+    size_t count = 0;
+    uint32_t x0 = UINT_MAX, y0 = UINT_MAX, x1 = 0, y1 = 0;
+};
+Difference difference(const metrics::Image& a, const metrics::Image& b)
+{
+    Difference d;
+    for (uint32_t y = 0; y < std::min(a.height, b.height); ++y)
+        for (uint32_t x = 0; x < std::min(a.width, b.width); ++x) {
+            const size_t i = (size_t(y) * a.width + x) * 3;
+            if (a.pixels[i] == b.pixels[i] && a.pixels[i + 1] == b.pixels[i + 1] && a.pixels[i + 2] == b.pixels[i + 2])
+                continue;
+            ++d.count;
+            d.x0 = std::min(d.x0, x);
+            d.y0 = std::min(d.y0, y);
+            d.x1 = std::max(d.x1, x);
+            d.y1 = std::max(d.y1, y);
+        }
+    return d;
+}
+
+bool isColour(const metrics::Image& image, size_t pixel, const std::array<uint8_t, 4>& rgba)
+{
+    return std::equal(rgba.begin(), rgba.begin() + 3, image.pixels.begin() + std::ptrdiff_t(pixel * 3));
+}
+
+// Pixels that are the overlay colour `rgba` in `after` and were not in `before`: glyphs,
+// drawn opaque in exact colours (the box under them leaves a quarter of the output).
+size_t becameColour(const metrics::Image& before, const metrics::Image& after, const std::array<uint8_t, 4>& rgba)
+{
+    size_t count = 0;
+    for (size_t p = 0; p < size_t(after.width) * after.height && p * 3 < before.pixels.size(); ++p)
+        count += isColour(after, p, rgba) && !isColour(before, p, rgba);
+    return count;
 }
 
 // Xvfb of a given screen with a pack and the 384x216 test panel profile in a fresh folder.
@@ -100,6 +143,19 @@ protected:
         }
         ADD_FAILURE() << "window title never contained \"" << text << "\"; last: " << title;
         return title;
+    }
+    // Reads the screen until `done` holds for it (about 30 s at most); returns the last read.
+    metrics::Image screenUntil(const std::function<bool(const metrics::Image&)>& done, const std::string& what)
+    {
+        metrics::Image screen;
+        for (int i = 0; i < 300; ++i) {
+            screen = server_->readScreen();
+            if (done(screen))
+                return screen;
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+        ADD_FAILURE() << "the screen never showed " << what;
+        return screen;
     }
     void send(const std::string& what) { std::system((env_ + "xdotool " + what + " >/dev/null 2>&1").c_str()); }
     void quit()
@@ -299,6 +355,114 @@ TEST_F(DisplayWindowTest, QuiltVideoPausesAndStepsOneFrame)
     send("key --window " + w + " period");
     titleContains("mp4 frame " + std::to_string((shown + 2) % 3) + " of 3");
     quit();
+}
+
+} // namespace
+} // namespace lfd::test
+
+namespace lfd::test {
+namespace {
+
+// The readout in a desktop window: I shows it over the output's top-left corner - glyphs
+// in exact white over a dark box, the rest of the window untouched - H adds the key help,
+// ] shows the focal plane alone for two seconds, and the back buffer saved by --screenshot
+// never carries it. This capture is docs/readout.png (README "On-screen readout").
+TEST_F(DisplayWindowTest, ReadoutTogglesOverTheWindowAndStaysOutOfScreenshots)
+{
+    startServer("1280x720x24");
+    const std::string args = common_ + " --no-turntable --window-size 1280x720";
+    std::string err;
+    ASSERT_EQ(run(args + " --readout --frames 2 --screenshot " + q(dir_ / "shot.png"), err), 0) << err;
+    const std::string w = start(args + " --no-readout");
+    metrics::Image last;
+    const metrics::Image plain = screenUntil(
+        [&](const metrics::Image& s) {
+            const bool steady = s.pixels == last.pixels; // the streamed textures are in
+            last = s;
+            return steady;
+        },
+        "a steady frame");
+    ASSERT_EQ(plain.width, 1280u);
+    const metrics::Image shot = metrics::readImage(dir_ / "shot.png", 3);
+    EXPECT_TRUE(shot.pixels == plain.pixels) << "--readout --screenshot: the saved image differs from the window "
+                                                "without the readout (max difference "
+                                             << metrics::maxAbsDiff(shot, plain) << ")";
+
+    const auto& white = player::kOverlayTextColor;
+    const auto& accent = player::kOverlayHighlightColor;
+    send("key --window " + w + " i");
+    const metrics::Image shown =
+        screenUntil([&](const metrics::Image& s) { return becameColour(plain, s, white) > 1000; }, "the readout");
+    metrics::writeImage(dir_ / "readout.png", shown);
+    const Difference d = difference(plain, shown);
+    // A box from the corner's margin (4 font units at scale 2) over at most the top-left
+    // quarter; everything else is the output as it was.
+    EXPECT_GE(d.x0, 8u);
+    EXPECT_GE(d.y0, 8u);
+    EXPECT_LT(d.x1, 640u);
+    EXPECT_LT(d.y1, 360u);
+    // Text-like: glyph pixels with dark box pixels right beside them (crisp edges), and
+    // every other changed pixel darker than before (the box).
+    size_t edges = 0, brighter = 0;
+    for (uint32_t y = d.y0; y <= d.y1; ++y)
+        for (uint32_t x = d.x0; x < d.x1; ++x) {
+            const size_t p = size_t(y) * 1280 + x;
+            const uint8_t* n = &shown.pixels[(p + 1) * 3];
+            edges += isColour(shown, p, white) && std::max({n[0], n[1], n[2]}) <= 80;
+            const uint8_t *a = &plain.pixels[p * 3], *b = &shown.pixels[p * 3];
+            brighter += !isColour(shown, p, white) && b[0] + b[1] + b[2] > a[0] + a[1] + a[2];
+        }
+    EXPECT_GT(edges, 300u);
+    EXPECT_EQ(brighter, 0u);
+
+    // H: the key help below the readout, its title in the accent colour.
+    send("key --window " + w + " h");
+    const metrics::Image help = screenUntil(
+        [&](const metrics::Image& s) { return difference(plain, s).y1 > d.y1 + 200; }, "the key help");
+    metrics::writeImage(dir_ / "help.png", help);
+    EXPECT_GT(becameColour(plain, help, accent), 100u);
+    EXPECT_GE(difference(plain, help).x0, 8u);
+
+    // Both off: the window is the output again, byte for byte.
+    send("key --window " + w + " h i");
+    screenUntil([&](const metrics::Image& s) { return s.pixels == plain.pixels; }, "the output without overlay");
+
+    // ] with the readout off: the focal plane alone, in the accent colour, for two seconds.
+    send("key --window " + w + " bracketright");
+    screenUntil([&](const metrics::Image& s) { return becameColour(plain, s, accent) > 200; }, "the camera line");
+    screenUntil([&](const metrics::Image& s) { return becameColour(plain, s, accent) < 20; },
+                "the camera line gone after two seconds");
+    quit();
+}
+
+// Fullscreen on the panel the EIA arrives untouched until the readout is asked for: with
+// I (and gone again with I), or from the start with --readout. A headless run has no
+// readout to show: the flag is refused with one line.
+TEST_F(DisplayWindowTest, ReadoutOnThePanelOnlyWhenAsked)
+{
+    startServer("384x216x24");
+    const metrics::Image eia = headlessEia();
+    start(common_ + " --no-turntable --fullscreen");
+    EXPECT_TRUE(server_->readScreen().pixels == eia.pixels);
+    const auto& white = player::kOverlayTextColor;
+    send("key --window " + window_ + " i");
+    const metrics::Image asked =
+        screenUntil([&](const metrics::Image& s) { return becameColour(eia, s, white) > 300; }, "the readout");
+    metrics::writeImage(dir_ / "asked.png", asked);
+    const Difference d = difference(eia, asked);
+    EXPECT_GE(d.x0, 4u); // scale 1 on a 384x216 panel
+    EXPECT_GE(d.y0, 4u);
+    send("key --window " + window_ + " i");
+    screenUntil([&](const metrics::Image& s) { return s.pixels == eia.pixels; }, "the EIA untouched again");
+    quit();
+
+    start(common_ + " --no-turntable --fullscreen --readout");
+    screenUntil([&](const metrics::Image& s) { return becameColour(eia, s, white) > 300; }, "the readout at start");
+    quit();
+
+    std::string err;
+    EXPECT_EQ(run("--headless " + common_ + " --readout", err), 2);
+    EXPECT_EQ(err, "lfd-play: --readout: needs a window (headless images never carry the readout)\n");
 }
 
 } // namespace

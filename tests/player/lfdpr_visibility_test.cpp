@@ -561,6 +561,8 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"gstd_panel_accumulate.comp", "comp", {}},
         {"gstd_panel_resolve.comp", "comp", {}},
         {"view_downsample.comp", "comp", {}},
+        {"text_overlay.vert", "vert", {}},
+        {"text_overlay.frag", "frag", {}},
         {"pose_vertices.comp", "comp", {}},
         {"pose_triangles.comp", "comp", {}},
         {"lfdpr_paper_points.vert", "vert", {}},
