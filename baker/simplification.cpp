@@ -25,6 +25,14 @@ namespace {
 
 constexpr uint32_t kInvalid = std::numeric_limits<uint32_t>::max();
 
+// meshoptimizer's error (the square root of the collapse's quadric error: distance to
+// the planes of the faces merged so far) underestimates how far the input's vertices end
+// up from the simplified surface: on the test heightfields the measured vertical distance
+// reached 2.3 times it (simplification_test.cpp). So meshoptimizer is given this share of
+// the bound, and its error is reported divided by it: an input vertex then stays within
+// the bound, and the report does not understate.
+constexpr double kQuadricShare = 0.4;
+
 bool usableBound(double bound) { return std::isfinite(bound) && bound > 0.0; }
 
 // What meshoptimizer sees of one welded vertex: every attribute the pack stores, so that
@@ -131,7 +139,7 @@ PrimitiveResult simplifyPrimitive(const Scene& scene, const Primitive& prim, dou
     const float extent = meshopt_simplifyScale(positions.data(), welded, 3 * sizeof(float));
     if (!(extent > 0.0f) || !std::isfinite(extent))
         return result;
-    const auto relative = float(maxErrorObject / double(extent));
+    const auto relative = float(kQuadricShare * maxErrorObject / double(extent));
     std::vector<uint32_t> out(n);
     float error = 0.0f;
     const size_t kept = meshopt_simplify(out.data(), local.data(), n, positions.data(), welded, 3 * sizeof(float), 0,
@@ -143,7 +151,7 @@ PrimitiveResult simplifyPrimitive(const Scene& scene, const Primitive& prim, dou
         i = representative[i];
     result.changed = true;
     result.indices = std::move(out);
-    result.errorObject = double(error) * double(extent);
+    result.errorObject = double(error) * double(extent) / kQuadricShare;
     return result;
 }
 
