@@ -83,7 +83,7 @@ Log bakeLog(const Options& o)
 }
 
 // Framing: the scene fitted to the display volume decides what a view pixel measures
-// (scene units per view pixel at the nearest depth; README "Baking", step 3).
+// (scene units per view pixel at the nearest depth; README "Baking", step 4).
 double viewPixelWorldOf(const Scene& scene, const DisplayProfile& profile, const Options& o, const Log& log)
 {
     const Framing framing = fitSceneToDisplay(profile, scene.bounds, o.fill);
