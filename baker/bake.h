@@ -4,6 +4,8 @@
 //   importGltf        gltf_import.cpp     glTF -> lfd::Scene (object-space meshes, nodes,
 //                                         animations, materials, texture sources)
 //   computeBounds     scene_bounds.cpp    scene-space AABB + bounding sphere over animations
+//   simplifyScene     simplification.cpp  merge triangles finer than --simplify view pixels
+//                                         (simplification.h)
 //   tessellateScene   tessellation.cpp    split oversized triangles, crack-free
 //   computeTriangleStats triangle_stats.cpp  A_ws, A_ts, n_tex, size_uv, A_ts/A_ws
 //   bakeTexture       texture_bake.cpp    decode, reduce, mip chain (sRGB-correct), RGBA8

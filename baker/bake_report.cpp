@@ -47,6 +47,42 @@ std::string countList(std::initializer_list<std::pair<size_t, const char*>> coun
     return out;
 }
 
+// Most per-mesh simplification lines printed; the rest are counted in one line.
+constexpr size_t kMeshLines = 20;
+
+// Issue 40: triangles in and out and the largest error per mesh, in view pixels.
+void printSimplification(std::ostream& out, const SimplificationStats& s)
+{
+    if (!(s.boundPx > 0.0)) {
+        out << "  simplification: off (--simplify 0)\n";
+        return;
+    }
+    const auto precision = out.precision();
+    out << std::setprecision(3);
+    out << "  simplification (bound " << s.boundPx << " view px): " << s.trianglesIn << " -> " << s.trianglesOut
+        << " triangles, " << s.verticesIn << " -> " << s.verticesOut << " vertices, largest error " << s.maxErrorPx
+        << " view px, " << s.lockedSeamVertices << " seam vertices kept\n";
+    size_t printed = 0, rest = 0;
+    for (const SimplifiedMesh& m : s.meshes) {
+        if (m.leftWhole.empty() && m.trianglesOut == m.trianglesIn)
+            continue;
+        if (printed == kMeshLines) {
+            ++rest;
+            continue;
+        }
+        ++printed;
+        out << "    mesh '" << m.name << "': ";
+        if (!m.leftWhole.empty())
+            out << m.trianglesIn << " triangles, " << m.leftWhole << "\n";
+        else
+            out << m.trianglesIn << " -> " << m.trianglesOut << " triangles, largest error " << m.maxErrorPx
+                << " view px\n";
+    }
+    if (rest > 0)
+        out << "    ... and " << rest << " more meshes\n";
+    out << std::setprecision(int(precision));
+}
+
 } // namespace
 
 std::vector<std::string> materialAndLightLines(const Scene& scene)
@@ -89,6 +125,7 @@ void printBakeReport(std::ostream& out, const std::filesystem::path& pack, const
     out << "bake report: " << pack.string() << "\n";
     out << "  triangles: " << r.trianglesIn << " in, " << r.trianglesOut << " out ("
         << r.tessellation.trianglesSplit << " oversized split), " << r.vertices << " vertices\n";
+    printSimplification(out, r.simplification);
     if (r.tessellation.trianglesSplit > 0)
         out << "  new points: OpenSubdiv bilinear surface of " << r.tessellation.surfaceMeshes
             << " meshes (refused: " << r.tessellation.surfaceMeshesRefused

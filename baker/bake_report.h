@@ -2,6 +2,7 @@
 #pragma once
 
 #include "bake.h"
+#include "simplification.h"
 #include "lfd/pack.h"
 
 #include <ostream>
@@ -27,6 +28,7 @@ struct BakeReport {
     size_t trianglesIn = 0, trianglesOut = 0, vertices = 0, warnings = 0;
     double maxEdgePxBefore = 0.0, maxEdgePxAfter = 0.0;
     double meanEdgePxAfter = 0.0, meanPieceEdgePx = 0.0;
+    SimplificationStats simplification;
     TessellationStats tessellation;
     std::vector<std::string> extensionLines; // materialAndLightLines of the baked scene
     std::vector<TextureReport> textures;

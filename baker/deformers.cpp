@@ -2,28 +2,13 @@
 // vertices (the player writes them over the mesh's streams), so it needs a mesh no other
 // node shares and one contiguous vertex range (lfd::Deformer).
 #include "bake.h"
+#include "vertex_streams_each.h"
 
 #include <algorithm>
 #include <numeric>
 
 namespace lfd::bake {
 namespace {
-
-// Every per-vertex stream of `v`, with `slots` entries per vertex for the morph deltas.
-template <class Fn>
-void forEachStream(VertexStreams& v, Fn&& fn)
-{
-    const size_t k = v.deform.morphTargets;
-    fn(v.positions, 1);
-    fn(v.normals, 1);
-    fn(v.tangents, 1);
-    fn(v.uvs, 1);
-    fn(v.deform.joints, 1);
-    fn(v.deform.weights, 1);
-    fn(v.deform.positions, k);
-    fn(v.deform.normals, k);
-    fn(v.deform.tangents, k);
-}
 
 // The vertices mesh m's primitives use, ascending, each once.
 std::vector<uint32_t> meshVertexList(const Scene& scene, uint32_t m)

@@ -6,6 +6,7 @@
 #include "mip_chain.h"
 #include "parallel.h"
 #include "rgbd_import.h"
+#include "simplification.h"
 #include "texture_compression.h"
 #include "texture_prefetch.h"
 #include "lfd/pack.h"
@@ -13,6 +14,7 @@
 #include <CLI/CLI.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <cstdio>
 #include <iostream>
@@ -33,6 +35,7 @@ struct Options {
     std::filesystem::path input, output, display, inspect;
     std::filesystem::path depfile; // --depfile: the files the bake read, Make/Ninja syntax
     double maxEdgePx = 100.0;
+    double simplifyPx = 0.25; // --simplify: merge triangles within this error, view pixels (0: off)
     double fill = 1.0;
     uint32_t maxTextureSize = 16384;
     double textureDetail = 2.0;
@@ -80,7 +83,7 @@ Log bakeLog(const Options& o)
 }
 
 // Framing: the scene fitted to the display volume decides what a view pixel measures
-// (scene units per view pixel at the nearest depth; README "Baking", step 3).
+// (scene units per view pixel at the nearest depth; README "Baking", step 4).
 double viewPixelWorldOf(const Scene& scene, const DisplayProfile& profile, const Options& o, const Log& log)
 {
     const Framing framing = fitSceneToDisplay(profile, scene.bounds, o.fill);
@@ -243,6 +246,10 @@ int bakeScene(const Options& o)
         scene.bounds = computeBounds(scene);
         viewPixelWorld = viewPixelWorldOf(scene, profile, o, log);
     });
+    // Merge what the display cannot resolve, then split what is too long (issue 40): one
+    // view-pixel measure for both, so the output still meets the --max-edge-px bound.
+    timed("simplify",
+          [&] { report.simplification = simplifyScene(scene, o.simplifyPx, viewPixelWorld, log, o.threads); });
     timed("tessellate",
           [&] { report.tessellation = tessellateScene(scene, o.maxEdgePx * viewPixelWorld, log, o.threads); });
     timed("triangle stats", [&] {
@@ -269,6 +276,27 @@ void addBakeFlags(CLI::App& app, Options& o)
     app.add_option("--display", o.display, "display profile JSON or Looking Glass visual.json (default: the paper's prototype)");
     app.add_option("--max-edge-px", o.maxEdgePx, "split triangles whose edges exceed this many view pixels (default 100)")
         ->check(CLI::Range(1.0, 1e6));
+    app.add_option("--simplify", o.simplifyPx,
+                   "merge triangles finer than the display resolves, keeping the surface within this many view "
+                   "pixels (same measure as --max-edge-px; seams, borders and material boundaries kept; default "
+                   "0.25; 0: off)")
+        ->check(CLI::Validator(
+            [](std::string& value) -> std::string {
+                // note: CLI::Range lets NaN through (every comparison with it is false).
+                double px = 0.0;
+                try {
+                    size_t used = 0;
+                    px = std::stod(value, &used);
+                    if (used != value.size())
+                        return "expected a number of view pixels, got '" + value + "'";
+                } catch (const std::exception&) {
+                    return "expected a number of view pixels, got '" + value + "'";
+                }
+                if (!std::isfinite(px) || px < 0.0 || px > 1e6)
+                    return "expected view pixels in [0, 1e6], got '" + value + "'";
+                return std::string();
+            },
+            "PX"));
     app.add_option("--fill", o.fill, "fraction of the largest sphere fitting every view (formats/display_profiles.md 4.) the scene's bounding sphere fills (default 1)")
         ->check(CLI::Range(0.01, 1.0));
     app.add_option("--max-texture-size", o.maxTextureSize, "largest texture dimension kept (GPU limit, default 16384)")
@@ -290,7 +318,7 @@ void addBakeFlags(CLI::App& app, Options& o)
     app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
     app.add_flag("--strict", o.strict, "treat every warning (e.g. a glTF schema violation the baker can work around) as an error");
     app.add_option("--threads", o.threads,
-                   "threads for Draco/meshopt decoding, tessellation, triangle statistics and mip chains (default 0: "
+                   "threads for Draco/meshopt decoding, simplification, tessellation, triangle statistics and mip chains (default 0: "
                    "one per hardware thread; 1: serial); the pack is the same bytes for any count")
         ->check(CLI::Range(0u, 1024u));
     app.add_flag("--bench", o.bench,

@@ -2,7 +2,7 @@
 //
 // Paper section 5: large triangles were "tessellated ... to ensure that they spanned no
 // more than a hundred pixels", because point rendering only beats rasterisation on small
-// triangles. README "Baking", step 3: only oversized triangles are cut, attributes are
+// triangles. README "Baking", step 4: only oversized triangles are cut, attributes are
 // interpolated, and the result has no cracks (no T-junctions).
 //
 // Each edge is cut into ceil(length / bound) equal pieces (its rate), not into the next

@@ -1,6 +1,6 @@
 // lfd-make-samples: writes the project's own glTF 2.0 sample scenes.
 //
-//   lfd-make-samples OUTDIR [--scene gallery|car|room|dense|character|crowd|rgbd|spheres|all] [--texture-size N]
+//   lfd-make-samples OUTDIR [--scene gallery|car|room|dense|character|crowd|rgbd|spheres|terrain|all] [--texture-size N]
 //                    [--instances N] [--quiet]
 //
 // Each scene goes to OUTDIR/<scene>/ (<scene>.gltf, <scene>.bin, PNG textures). A scene
@@ -28,7 +28,7 @@ using namespace lfd::samples;
 namespace {
 
 constexpr const char* kUsage =
-    "usage: lfd-make-samples OUTDIR [--scene gallery|car|room|dense|character|crowd|rgbd|spheres|all] [--texture-size N] "
+    "usage: lfd-make-samples OUTDIR [--scene gallery|car|room|dense|character|crowd|rgbd|spheres|terrain|all] [--texture-size N] "
     "[--instances N] [--quiet]\n"
     "  --scene         which scene to write (default: all)\n"
     "  --texture-size  gallery painting size in pixels, 16..32768 (default: 2048)\n"
@@ -106,11 +106,12 @@ Options parseArguments(int argc, char** argv)
     if (scene == "all")
         options.scenes = {"gallery", "car", "room"}; // dense is for benchmarks: ask for it
     else if (scene == "gallery" || scene == "car" || scene == "room" || scene == "dense" || scene == "character" ||
-             scene == "crowd" || scene == "rgbd" || scene == "spheres")
+             scene == "crowd" || scene == "rgbd" || scene == "spheres" ||
+             scene == "terrain")
         options.scenes = {scene};
     else
         throw UsageError("unknown scene '" + scene +
-                         "' (expected gallery, car, room, dense, character, crowd, rgbd, spheres or all)");
+                         "' (expected gallery, car, room, dense, character, crowd, rgbd, spheres, terrain or all)");
     return options;
 }
 
@@ -148,6 +149,8 @@ SceneSummary writeSceneAtomically(const Options& options, const std::string& nam
             summary = writeRgbdSample(staging);
         else if (name == "spheres")
             summary = writeSpheresScene(staging);
+        else if (name == "terrain")
+            summary = writeTerrainScene(staging);
         else if (name == "character")
             summary = writeCharacterScene(staging);
         else if (name == "crowd")

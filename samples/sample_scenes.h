@@ -44,6 +44,10 @@ SceneSummary writeCrowdScene(const std::filesystem::path& dir, int instances);
 // below - the material grid for judging lighting (docs/lighting.md).
 SceneSummary writeSpheresScene(const std::filesystem::path& dir);
 
+// An over-dense, scanned-looking heightfield: 2,093,058 triangles of a 2 x 2 m textured
+// patch, far finer than a view pixel when framed whole (issue 40, `lfd-bake --simplify`).
+SceneSummary writeTerrainScene(const std::filesystem::path& dir);
+
 // An RGB-D photo for `lfd-bake --rgbd`, not a glTF scene: photo.png, depth.png (white =
 // near) and photo_rgbd.png (the two side by side), 512 x 384 each.
 SceneSummary writeRgbdSample(const std::filesystem::path& dir);

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -247,6 +249,25 @@ TEST_F(BakeCli, BadArgumentsAreRejected)
                             " --display " + quoted(dir_ / "no_profile.json"));
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.out.find("no_profile.json"), std::string::npos) << r.out;
+}
+
+TEST_F(BakeCli, BadSimplifyBoundsAreRejectedWithOneLineNamingTheFlag)
+{
+    const std::string bake = kBake + " " + quoted(dir_ / "samples/car/car.gltf") + " -o " + quoted(dir_ / "s.lfdpack");
+    for (const char* bad : {"-1", "nan", "inf", "abc", "0.5px"}) {
+        const RunResult r = run(bake + " --simplify " + bad);
+        EXPECT_EQ(r.exitCode, 2) << bad << ": " << r.out;
+        EXPECT_NE(r.out.find("--simplify"), std::string::npos) << r.out;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "s.lfdpack"));
+    // 0 turns the stage off; the report says so.
+    const RunResult off = run(bake + " --simplify 0");
+    EXPECT_EQ(off.exitCode, 0) << off.out;
+    EXPECT_NE(off.out.find("simplification: off"), std::string::npos) << off.out;
+    const RunResult on = run(bake + " --simplify 2");
+    EXPECT_EQ(on.exitCode, 0) << on.out;
+    EXPECT_NE(on.out.find("simplification (bound 2"), std::string::npos) << on.out;
 }
 
 const fs::path kGltfCases = fs::path(LFD_TEST_DATA) / "gltf";
