@@ -10,7 +10,8 @@
 # bundle, out/gpu-bench in the tree)]. Per scene OUTDIR/<scene>/bench.{json,csv}; the table
 # in OUTDIR/table.md (printed at the end; needs python3, else lfd-bench's own tables are
 # printed). LFD_BENCH_RENDERERS times other renderers, LFD_BENCH_WARMUP sets the warm-up
-# frames (default 5).
+# frames (default 5). Then anisotropic filtering (OUTDIR/aniso.md) and image-based lighting's
+# cost against the fixed light (OUTDIR/lighting.md).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 frames="${1:-20}"
@@ -127,5 +128,43 @@ for run in runs:
 PY
     mv "$out/aniso.md.tmp" "$out/aniso.md"
     cat "$out/aniso.md"
+  fi
+fi
+
+# Image-based lighting's cost (docs/lighting.md "Cost"): the runs above light with the
+# defaults (the neutral studio, PBR Neutral); each scene again with the fixed light and no
+# tone mapper, mvr and lfdpr, and the added share per renderer. LFD_BENCH_LIGHTING=0 skips it.
+if [ "${LFD_BENCH_LIGHTING:-1}" != 0 ]; then
+  lighting=()
+  for pack in "${packs[@]}"; do
+    scene=$(basename "$pack" .lfdpack)
+    [ "$scene" = dense ] && continue # its 1M triangles say nothing more about shading
+    echo "gpu-bench: $scene --environment none --tone-map none"
+    "$bench" "$pack" --renderers mvr,lfdpr --reference mvr --frames "$frames" --warmup "$warmup" --views 48 \
+      --view-size 480x360 --environment none --tone-map none --out "$out/light-none-$scene" --quiet \
+      > "$out/light-none-$scene.txt"
+    lighting+=("$scene")
+  done
+  if [ "${#lighting[@]}" -gt 0 ]; then
+    python3 - "$out" "${lighting[@]}" > "$out/lighting.md.tmp" <<'PY'
+import json, os, sys
+out, scenes = sys.argv[1], sys.argv[2:]
+print("| scene | mvr ms: fixed light -> IBL | mvr added | lfdpr ms: fixed light -> IBL | lfdpr added |")
+print("|---|---|---|---|---|")
+for scene in scenes:
+    def totals(run):
+        b = json.load(open(os.path.join(out, run, "bench.json")))
+        return {r["name"]: r["stages"]["total"]["mean"] for r in b["renderers"] if r.get("timed")}
+    off, on = totals(f"light-none-{scene}"), totals(scene)
+    cells = []
+    for name in ("mvr", "lfdpr"):
+        if name in off and name in on:
+            cells += [f"{off[name]:.2f} -> {on[name]:.2f}", f"{100 * (on[name] / off[name] - 1):+.0f}%"]
+        else:
+            cells += ["-", "-"]
+    print(f"| {scene} | " + " | ".join(cells) + " |")
+PY
+    mv "$out/lighting.md.tmp" "$out/lighting.md"
+    cat "$out/lighting.md"
   fi
 fi
