@@ -9,7 +9,7 @@
 # of a fresh build's compile units (issue 42: the demo took 587 s on two cores, mostly
 # compiling tests it never runs). Every other argument goes to the cmake configure step.
 # LFD_BUILD_DRY_RUN=1 prints the two commands instead of running them (tested by
-# tests/scripts/build_targets_test.sh).
+# tests/scripts/demo_build_targets_test.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
