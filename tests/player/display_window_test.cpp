@@ -150,8 +150,13 @@ protected:
         metrics::Image screen;
         for (int i = 0; i < 300; ++i) {
             screen = server_->readScreen();
-            if (done(screen))
-                return screen;
+            // Xvfb writes its framebuffer file while we read it: a read can hold the top of
+            // one frame and the bottom of the next. Only a screen read twice alike counts.
+            if (done(screen)) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(30));
+                if (server_->readScreen().pixels == screen.pixels)
+                    return screen;
+            }
             std::this_thread::sleep_for(std::chrono::milliseconds(100));
         }
         ADD_FAILURE() << "the screen never showed " << what;
