@@ -33,10 +33,11 @@ class LFD_OT_bake(bpy.types.Operator, pipeline.JobOperator):
         r = self.resolved
         t = self.timings
         t.launch = self.job.launch_seconds
+        t.check = r.check_seconds
         size = os.path.getsize(r.pack)
         total = time.perf_counter() - self.t_start
-        text = (f"Baked {r.pack} ({size / 1e6:.2f} MB) in {total:.2f} s: export {t.export:.2f} s, "
-                f"launch {t.launch * 1000:.1f} ms, lfd-bake {total - t.export:.2f} s")
+        text = (f"Baked {r.pack} ({size / 1e6:.2f} MB) in {total:.2f} s: export {t.export:.3f} s, "
+                f"launch {t.launch * 1000:.1f} ms, lfd-bake {t.bake:.2f} s, tool check {t.check:.3f} s")
         self.report({"INFO"}, text)
         context.scene.lfd.last_message = text
         if preview_operator.preview_running():

@@ -38,7 +38,8 @@ class ProcessStep:
                                          start_new_session=True)
         except OSError as e:
             raise StepFailed(f"{self.label}: cannot run {self.argv[0]}: {e.strerror}")
-        self.launch_seconds = time.perf_counter() - t0
+        self.t_launched = time.perf_counter()
+        self.launch_seconds = self.t_launched - t0
         for stream, is_err in ((self.proc.stdout, False), (self.proc.stderr, True)):
             t = threading.Thread(target=self._read, args=(stream, is_err), daemon=True)
             t.start()

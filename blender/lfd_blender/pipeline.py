@@ -30,6 +30,7 @@ class Resolved:
     """Scene.lfd with absolute paths, the tools located and the profile checked."""
 
     def __init__(self, context, need=("lfd-bake",)):
+        t0 = time.perf_counter()
         scene = context.scene
         s = scene.lfd
         self.scene, self.settings = scene, s
@@ -48,6 +49,7 @@ class Resolved:
         self.name = bpy.path.clean_name(scene.name) or "scene"
         self.glb = os.path.join(self.output_dir, self.name + ".glb")
         self.pack = os.path.join(self.output_dir, self.name + ".lfdpack")
+        self.check_seconds = time.perf_counter() - t0
 
     def bake_argv(self):
         s = self.settings
@@ -87,9 +89,10 @@ def pack_is_current(r):
 
 class Timings:
     def __init__(self):
+        self.check = 0.0   # locating the tools, checking them and the profile
         self.export = 0.0
-        self.launch = 0.0
-        self.bake = 0.0
+        self.launch = 0.0  # Popen of lfd-bake
+        self.bake = 0.0    # lfd-bake's own run, from launch to exit
 
 
 def bake_step(r, op):
@@ -115,6 +118,7 @@ def bake_step(r, op):
         op.messages.append((level, text))
 
     def on_exit(code):
+        op.timings.bake = time.perf_counter() - step.t_launched
         if code != 0:
             raise jobs.StepFailed("lfd-bake: " + (state["error"] or f"failed (exit status {code})"))
         with open(r.pack + SIDECAR, "w", encoding="utf-8") as f:

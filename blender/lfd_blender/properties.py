@@ -10,26 +10,34 @@ from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty, St
 from . import tools
 
 ADDON_DIR = os.path.dirname(os.path.abspath(__file__))
-_preset_items = []  # Blender keeps no reference to dynamic enum items: this list does
+_preset_cache = {"key": None, "items": [], "paths": {}}  # Blender keeps no reference to dynamic enum items
 
 
 def preset_items(self, context):
-    global _preset_items
-    tool_paths = [tools.find_tool(n, self.tools_dir) for n in ("lfd-bake", "lfd-play")]
-    items = [("BUILTIN", "Prototype (built in)", "The paper's prototype display, built into the tools", 0)]
-    for i, (path, label) in enumerate(tools.shipped_profiles(tool_paths, ADDON_DIR)):
-        items.append((path, label, path, i + 1))
-    items.append(("FILE", "File...", "A display profile JSON or a Looking Glass visual.json, chosen below",
-                  len(items)))
-    _preset_items = items
-    return _preset_items
+    """BUILTIN, one item per shipped profile (identifier = its file name), FILE. The same list
+    object is returned while the profiles found stay the same (Blender reads its strings later)."""
+    tool_paths = [tools.find_tool(n, bpy.path.abspath(self.tools_dir) if self.tools_dir else "")
+                  for n in ("lfd-bake", "lfd-play")]
+    found = tools.shipped_profiles(tool_paths, ADDON_DIR)
+    key = tuple(found)
+    if key != _preset_cache["key"]:
+        items = [("BUILTIN", "Prototype (built in)", "The paper's prototype display, built into the tools", 0)]
+        paths = {}
+        for i, (path, label) in enumerate(found):
+            ident = label[:60]
+            paths[ident] = path
+            items.append((ident, label, path, i + 1))
+        items.append(("FILE", "File...", "A display profile JSON or a Looking Glass visual.json, chosen below",
+                      len(items)))
+        _preset_cache.update(key=key, items=items, paths=paths)
+    return _preset_cache["items"]
 
 
 def preset_changed(self, context):
     if self.profile_preset == "BUILTIN":
         self.display_profile = ""
     elif self.profile_preset != "FILE":
-        self.display_profile = self.profile_preset
+        self.display_profile = _preset_cache["paths"].get(self.profile_preset, "")
 
 
 class LfdSettings(bpy.types.PropertyGroup):
