@@ -253,6 +253,26 @@ def main():
     check("MovingCube" in names.translate(f"accessors[{acc}]: x"), "an accessor path names its object")
     check(reports.classify("lfd-bake: warning: x.glb: nodes[0]: y", True) == ("WARNING", "x.glb: nodes[0]: y"),
           "lfd-bake warnings become WARNING reports")
+    p = reports.bake_progress("tessellation: mesh 'Cube': 50 / 100 triangles")
+    check(p is not None and abs(p[0] - 0.45) < 1e-9, f"a tessellation progress line is half of its stage ({p})")
+
+    # ---- a running step is cancelled: the process ends, the job says CANCELLED
+    from lfd_blender import jobs
+    step = jobs.ProcessStep("Sleeping", ["sleep", "30"])
+    job = jobs.Job([step])
+    job.poll()
+    t0 = time.perf_counter()
+    job.cancel()
+    check(job.state == "CANCELLED" and step.proc.poll() is not None and time.perf_counter() - t0 < 5,
+          "cancelling a job ends its process")
+
+    # ---- preview: without a display lfd-play's refusal is the report; with one, a screenshot
+    if os.environ.get("DISPLAY"):
+        shot = os.path.join(work, "preview.png")
+        result, err = run_op(bpy.ops.lfd.preview, screenshot=shot, frames=1)
+        check(result == {"FINISHED"} and os.path.isfile(shot), f"preview saves a screenshot ({err})")
+    else:
+        expect_error("preview without a display", r"lfd-play|display|GLFW|X11", bpy.ops.lfd.preview)
 
     # ---- quilts of frames 1..3 (the render re-uses the current pack: no re-bake)
     mtime = os.path.getmtime(pack)
