@@ -190,6 +190,18 @@ def main():
     s.threads = 2
     scene.render.filepath = os.path.join(work, "render") + os.sep
 
+    # ---- the shipped profiles are offered (found from the build tree's source tree)
+    from lfd_blender import properties
+    idents = [i[0] for i in properties.preset_items(s, bpy.context)]
+    check("looking_glass_portrait_visual" in idents and "BUILTIN" in idents and "FILE" in idents,
+          f"the display menu offers the shipped profiles ({idents})")
+    s.profile_preset = "looking_glass_portrait_visual"
+    check(s.display_profile.endswith("looking_glass_portrait_visual.json") and os.path.isfile(s.display_profile),
+          "choosing a shipped profile sets its file")
+    s.profile_preset = "BUILTIN"
+    check(s.display_profile == "", "the built-in prototype clears the file")
+    s.display_profile = profile
+
     # ---- bad settings: one ERROR report each, never a traceback
     def expect_error(what, pattern, op=bpy.ops.lfd.bake, **kw):
         result, err = run_op(op, **kw)
