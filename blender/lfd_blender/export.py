@@ -29,14 +29,22 @@ EXPORT_OPTIONS = dict(
     export_morph_normal=True,
     export_morph_tangent=False,
     export_extras=False,
+    export_animation_mode="ACTIVE_ACTIONS",  # Blender 3.6+: the same as export_nla_strips=False
+    export_anim_slide_to_zero=False,         # Blender 3.6+: keep time = frame / fps
 )
+
+
+def supported_options(options):
+    """The options this Blender's exporter has (names come and go between versions)."""
+    known = set(bpy.ops.export_scene.gltf.get_rna_type().properties.keys())
+    return {k: v for k, v in options.items() if k in known}
 
 
 def export_glb(context, path, scope):
     """Writes path; returns the seconds it took. Raises RuntimeError with the exporter's text."""
-    options = dict(EXPORT_OPTIONS)
+    options = supported_options(EXPORT_OPTIONS)
     if scope == "COLLECTION":
-        options.update(use_active_collection=True, use_active_collection_with_nested=True)
+        options.update(supported_options(dict(use_active_collection=True, use_active_collection_with_nested=True)))
     t0 = time.perf_counter()
     with context.temp_override(scene=context.scene) if hasattr(context, "temp_override") else _null():
         result = bpy.ops.export_scene.gltf(filepath=path, check_existing=False, **options)

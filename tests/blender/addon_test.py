@@ -335,6 +335,22 @@ def main():
     result, err = run_op(bpy.ops.lfd.render, kind="QUILT", frame_range="CURRENT")
     check(result == {"FINISHED"} and os.path.getmtime(pack) != mtime, "a changed scene is baked again")
 
+    # ---- the active collection alone
+    only = bpy.data.collections.new("OnlyThis")
+    scene.collection.children.link(only)
+    bpy.ops.mesh.primitive_monkey_add()
+    monkey = bpy.context.object
+    monkey.name = "LoneMonkey"
+    for c in list(monkey.users_collection):
+        c.objects.unlink(monkey)
+    only.objects.link(monkey)
+    bpy.context.view_layer.active_layer_collection = bpy.context.view_layer.layer_collection.children["OnlyThis"]
+    s.export_scope = "COLLECTION"
+    result, err = run_op(bpy.ops.lfd.bake)
+    nodes = [n.get("name") for n in reports.read_gltf_json(glb).get("nodes", [])]
+    check(result == {"FINISHED"} and nodes == ["LoneMonkey"], f"the active collection alone is exported ({nodes})")
+    s.export_scope = "SCENE"
+
     # ---- a bad frame range is a report
     expect_error("empty frame range", r"frames 3\.\.1", bpy.ops.lfd.render, kind="QUILT", frame_range="RANGE",
                  frame_start=3, frame_end=1)
