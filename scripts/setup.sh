@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool assimp-testmodels glslang-tools ffmpeg
   clang libclang-rt-14-dev python3 python3-matplotlib
+  blender
 )
 
 missing=()

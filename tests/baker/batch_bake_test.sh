@@ -18,6 +18,7 @@ for tool in "${tools[@]}"; do
   PATH="$work/prefix/bin:$PATH" $tool --help >/dev/null || fail "installed $tool --help failed"
 done
 [ -f "$work/prefix/share/doc/lfdpr/README.md" ] || fail "README not installed"
+[ -f "$work/prefix/share/lfd/lfd_blender.zip" ] || fail "Blender add-on zip not installed"
 "$work/prefix/bin/lfd-make-samples" "$work/assets" --scene gallery --texture-size 64 --quiet
 "$work/prefix/bin/lfd-make-samples" "$work/assets" --scene car --quiet
 profile="$work/prefix/share/lfd/profiles/looking_glass_portrait_visual.json"
