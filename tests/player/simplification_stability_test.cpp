@@ -2,9 +2,9 @@
 // for `lfd-bake --simplify`): the thin part's silhouette and a texture seam, the two places
 // a display-aware simplifier is most likely to be seen. One scene, over-dense as a scan is:
 // * a thin pole: a closed, smooth ellipsoid 3.5 view pixels across (radius 1.75 px) and
-//   ~54 rows long, 48 x 512 segments (edges ~0.2 px), no uvs and smooth normals, so it has neither
-//   border nor seam and nothing locks it: only the error bound keeps its silhouette;
-// * a textured plane 0.9 x 0.8 units (40 x 36 view pixels) of 0.32-px cells (28K
+//   ~52 rows long, 48 x 512 segments (edges 0.1-0.25 px), no uvs and smooth normals, so it
+//   has neither border nor seam and nothing locks it: only the error bound keeps its silhouette;
+// * a textured plane 0.9 x 0.8 units (40 x 48 view pixels) of 0.32-px cells (28K
 //   triangles) with a UV seam down its middle (x = 0, the centre column of every view): the vertices
 //   on the seam are duplicated, the right half's uvs shifted by half a checker square, so
 //   the checker jumps there; simplification must keep the seam vertices and both halves'
@@ -14,7 +14,7 @@
 // and rendered by mvr (8 views of 160 x 120, prototype profile, time 0). Each part is
 // rendered alone (the other node dropped) so its region is its own: the pole's region is
 // its --simplify 0 coverage grown by 2 px (the silhouette and both sides of it: the pole is
-// all silhouette at 3 px), the seam's the 6 columns about the seam over the plane's rows.
+// all silhouette at 3.5 px), the seam's the 6 columns about the seam over the plane's rows.
 // The numbers are printed ("[ numbers  ] ..."); LFD_KEEP_TEST_IMAGES=1 keeps the centre
 // view of every level as PNGs.
 #include "gl_test_support.h"
