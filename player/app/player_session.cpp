@@ -1,6 +1,8 @@
 #include "player_session.h"
 
+#include "frame_limits.h"
 #include "gpu_environment.h"
+#include "renderer_lfdpr.h"
 
 #include "image.h"
 #include "quilt.h"
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <regex>
 #include <stdexcept>
 
@@ -54,11 +57,34 @@ void warnIfBakedForAnotherDisplay(const Scene& scene, const DisplayProfile& prof
                  baked.viewHeight, profile.name.c_str(), profile.viewWidth, profile.viewHeight);
 }
 
+// Every GL limit the frame's buffers can hit (frame_limits.h), before anything is allocated:
+// one line naming the limit and a setting that fits.
+static void preflightFrame(const PlayOptions& options, const DisplayProfile& profile)
+{
+    FrameShape shape;
+    shape.views = profile.viewCount;
+    shape.viewWidth = profile.viewWidth;
+    shape.viewHeight = profile.viewHeight;
+    shape.panelWidth = profile.panelWidth;
+    shape.panelHeight = profile.panelHeight;
+    shape.supersampleViews = options.supersampling == Supersampling::Angular2x ? 2 : 1;
+    shape.supersampleSize = options.supersampling == Supersampling::Spatial2x ? 2 : 1;
+    shape.viewBuffers = options.renderer.rfind("lfdpr", 0) == 0;
+    shape.viewBufferBytesPerPixel =
+        shape.viewBuffers && lfdprUseInt64(options.rendererOptions.lfdpr.atomics) ? 8 : 4;
+    shape.prefilter = options.reconstruction == Reconstruction::Spatial       ? PrefilterPlanes::Layered
+                      : options.reconstruction == Reconstruction::ViewSpatial ? PrefilterPlanes::Volume
+                                                                              : PrefilterPlanes::None;
+    if (const std::optional<std::string> problem = checkFrameLimits(shape, queryFrameLimits()))
+        throw std::runtime_error(*problem);
+}
+
 PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
                              std::string packName)
     : options_(options), displayProfile_(profile), packName_(std::move(packName)),
       plan_(planSceneMemory(options, scene, packName_))
 {
+    preflightFrame(options, profile);
     warnIfBakedForAnotherDisplay(scene, profile, packName_);
     GpuSceneOptions sceneOptions;
     sceneOptions.plan = &plan_;
@@ -72,6 +98,7 @@ PlayerSession::PlayerSession(const PlayOptions& options, const DisplayProfile& p
     : options_(options), displayProfile_(profile), packName_(std::move(packName)),
       plan_(planSceneMemory(options, pack->scene(), packName_)), mapped_(std::move(pack))
 {
+    preflightFrame(options, profile);
     warnIfBakedForAnotherDisplay(mapped_->scene(), profile, packName_);
     GpuSceneOptions sceneOptions;
     sceneOptions.plan = &plan_;

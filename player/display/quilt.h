@@ -25,8 +25,8 @@ class ViewTargets;
 struct QuiltLayout {
     uint32_t cols = 0, rows = 0;
     uint32_t tileWidth = 0, tileHeight = 0; // = the view size
-    // A vendor's standard quilt may be a few pixels larger than its tiles (8192 for 7 tiles
-    // of 1170): the tiles sit from the bottom-left corner, the rest stays black.
+    // A vendor's standard quilt may be a few pixels larger than its tiles (8192 for 9 tiles
+    // of 910): the tiles sit from the bottom-left corner, the rest stays black.
     uint32_t totalWidth = 0, totalHeight = 0;
     uint32_t width() const { return std::max(cols * tileWidth, totalWidth); }
     uint32_t height() const { return std::max(rows * tileHeight, totalHeight); }

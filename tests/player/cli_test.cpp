@@ -370,6 +370,11 @@ TEST_F(CliTest, BadInputFailsCleanly)
          "--views"},
         {"--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 100000x16" + outputs,
          "view_width"},
+        // Within the profile's rules but past the driver's (frame_limits.h, README "8K panels"):
+        // 2^29 lfdpr view-buffer texels against llvmpipe's 2^27 (any driver's is below 2^29).
+        {"--headless " + q(pack_) + " --display " + q(profile_) + " --renderer lfdpr --views 8 --view-size 8192x8192" +
+             outputs,
+         "GL_MAX_TEXTURE_BUFFER_SIZE"},
     };
     for (const auto& [args, culprit] : cases) {
         const RunResult r = runPlay(dir_, args);

@@ -180,7 +180,7 @@ TEST(Quilt, LookingGlassPortraitWritesItsStandard8x6Quilt) {
     EXPECT_EQ(other.width(), 2940u);
 }
 
-// A standard quilt larger than its tiles (8192 for 7 tiles of 1170) keeps the tiles at the
+// A standard quilt larger than its tiles (8192 for 9 rows of 910) keeps the tiles at the
 // bottom-left and the spare pixels black.
 TEST(Quilt, SpareStandardQuiltPixelsStayBlack) {
     const QuiltLayout layout{2, 1, 3, 2, 7, 3};
