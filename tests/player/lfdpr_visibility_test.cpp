@@ -330,6 +330,63 @@ TEST_F(LfdprVisibilityTest, OverflowGrowsAndTheFrameIsRenderedAgain)
     EXPECT_EQ(c.info.overflowFrames, 2u);
 }
 
+TEST_F(LfdprVisibilityTest, PointBufferSizedAtLoadSoTheFirstFrameDoesNotOverflow)
+{
+    // The default capacity (0) is sized from a count-only run of point generation for the
+    // scene's first frame: that frame keeps every point, and the buffer is not far above
+    // what it needs (1.5 x the count; measured here on llvmpipe: ratio 1.50).
+    const Scene scene = denseTestScene();
+    const DisplayProfile profile = smallProfile(8, 160, 120);
+    auto renderer = player::createLfdprRenderer();
+    const Frame a = render(*renderer, scene, profile, 0.4);
+    EXPECT_EQ(a.info.overflowFrames, 0u);
+    EXPECT_EQ(a.info.bufferGrowths, 0u);
+    EXPECT_GT(a.info.points, 10000u) << "a moderately dense scene";
+    EXPECT_EQ(a.info.points, a.info.pointsStored);
+    EXPECT_EQ(a.info.sizedPoints, a.info.points) << "the count-only run counts as the frame does";
+    EXPECT_GE(a.info.pointCapacity, a.info.points);
+    EXPECT_LE(double(a.info.pointCapacity), 2.0 * double(a.info.points));
+    std::printf("first frame: %llu points, capacity %u (%.2fx)\n", (unsigned long long)a.info.points,
+                a.info.pointCapacity, double(a.info.pointCapacity) / double(a.info.points));
+}
+
+TEST_F(LfdprVisibilityTest, WorkCountersAreConsistent)
+{
+    // lfdpr's work counters (extraStats, so lfd-bench's bench.json and lfd-play --stats):
+    // every stored point is splatted into every view, and the bytes cleared are the view
+    // words (8 B), the RGBA8 views and the small per-frame words; mvr's are its RGBA8 and
+    // D32F targets and its triangles x views.
+    const Scene scene = cubeAndSphereScene();
+    const uint32_t views = 6, width = 96, height = 72;
+    const DisplayProfile profile = smallProfile(views, width, height);
+    auto value = [](const player::Renderer& r, const std::string& key) {
+        for (const auto& [name, v] : r.extraStats())
+            if (name == key)
+                return v;
+        ADD_FAILURE() << "no " << key;
+        return -1.0;
+    };
+    auto lfdpr = player::createLfdprRenderer();
+    const Frame a = render(*lfdpr, scene, profile);
+    const double points = value(*lfdpr, "work_points");
+    EXPECT_GT(points, 0.0);
+    EXPECT_EQ(points, double(a.info.pointsStored));
+    EXPECT_EQ(value(*lfdpr, "work_point_views"), points * views);
+    const double viewBytes = double(views) * width * height * (8 + 4);
+    const double cleared = value(*lfdpr, "work_bytes_cleared");
+    EXPECT_GE(cleared, viewBytes);
+    EXPECT_LE(cleared, viewBytes + double(value(*lfdpr, "shade_work_bytes")) + 4096.0);
+    std::printf("lfdpr: %.0f points, %.0f point-views, %.0f bytes cleared (views: %.0f)\n", points,
+                value(*lfdpr, "work_point_views"), cleared, viewBytes);
+
+    auto mvr = player::createRenderer("mvr");
+    render(*mvr, scene, profile);
+    EXPECT_EQ(value(*mvr, "work_bytes_cleared"), double(views) * width * height * 8);
+    EXPECT_GT(value(*mvr, "work_triangle_views"), 0.0);
+    EXPECT_EQ(std::fmod(value(*mvr, "work_triangle_views"), double(views)), 0.0);
+    std::printf("mvr: %.0f triangle-views\n", value(*mvr, "work_triangle_views"));
+}
+
 TEST_F(LfdprVisibilityTest, CompactPointsAndReportedMemory)
 {
     auto renderer = player::createLfdprRenderer();

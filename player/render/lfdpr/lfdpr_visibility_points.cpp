@@ -101,6 +101,11 @@ void LfdprVisibilityPointGeneration::clearQueues() const
 
 size_t LfdprVisibilityPointGeneration::bufferBytes() const { return bytes_; }
 
+size_t LfdprVisibilityPointGeneration::clearedBytes() const
+{
+    return classes_.size() * LfdprConstants::get().largeDispatchBytes;
+}
+
 void LfdprVisibilityPointGeneration::run(const GpuScene& scene) const
 {
     const LfdprConstants& k = LfdprConstants::get();

@@ -36,6 +36,7 @@ public:
     void run(const GpuScene& scene) const;
 
     size_t bufferBytes() const; // the workgroup table and the large-triangle queue
+    size_t clearedBytes() const; // what clearQueues clears: the queues' dispatch words
 
 private:
     // One dispatch: the workgroups [firstWorkgroup, firstWorkgroup + workgroups) of the

@@ -48,6 +48,12 @@ public:
     size_t viewBufferBytes() const;
     // The shading work: per group a dispatch, a list of tile chunks and the splat's marks.
     size_t shadeWorkBytes() const;
+    // Bytes beginFrame clears: the splat's marks, the shading's dispatches, the view words
+    // (8 per view pixel) and the RGBA8 view colours.
+    size_t clearedBytes() const
+    {
+        return chunkMaskBytes_ + size_t(groupCount_) * 16 + viewBufferBytes() + size_t(views_) * width_ * height_ * 4;
+    }
 
     // Every clear of a frame, before point generation: the splat's marks, the view words,
     // the shading's dispatches and the views' background (targets). Shading groups: 0 =

@@ -86,12 +86,16 @@ struct LfdprOptions {
     // Auto: 64-bit atomics where GL_NV_shader_atomic_int64 exists, else two-pass 32-bit.
     // Int64 where unsupported throws gl::GlError at construction.
     enum class Atomics { Auto, Int64, TwoPass32 } atomics = Atomics::Auto;
-    // Points the buffer holds initially; it grows (needed * 1.25) after an overflow, once the
+    // Points the buffer holds initially. 0 (the default): the visibility pipeline sizes it
+    // when a scene is first rendered, from a count-only run of point generation for that
+    // first frame's views (the one wait of a scene, at load; 1.5 x the count),
+    // so the first frame does not overflow; the paper pipeline starts at 2^20.
+    // Either way it grows (needed * 1.25) after an overflow, once the
     // overflowing frame's counts are back from the GPU (read without waiting, frames later).
     // Frames rendered until then keep what fits and are counted (overflow_frames);
     // Renderer::settle() reports an overflowed last frame, which lfd-play and lfd-bench
     // render again before reading its outputs, so no output ever lacks points below the cap.
-    uint32_t initialPointCapacity = 1u << 20;
+    uint32_t initialPointCapacity = 0;
     // Upper bound of that growth (also capped by GL_MAX_SHADER_STORAGE_BLOCK_SIZE): past
     // it every frame stores what fits, is flagged as overflowed and renders partially,
     // rather than asking the driver for an unbounded allocation. 2^26 points = 3 GiB.
@@ -122,6 +126,7 @@ struct LfdprFrameInfo {
     uint64_t bufferGrowths = 0;       // visibility pipeline: the point buffer grown after an overflow
     uint64_t repairs = 0;             // visibility pipeline, 32-bit: pixels whose index was repaired
     uint64_t viewBufferBytes = 0;
+    uint64_t sizedPoints = 0;         // visibility pipeline: the load-time count-only run's points
 };
 
 class LfdprRenderer : public Renderer {

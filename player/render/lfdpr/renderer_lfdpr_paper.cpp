@@ -42,7 +42,8 @@ public:
         maxPointCapacity_ = uint32_t(std::min<uint64_t>(
             std::max<uint32_t>(options.maxPointCapacity, 1),
             std::max<uint64_t>(uint64_t(std::max<GLint64>(maxBlockBytes, 0)) / k_.pointBytes, 1)));
-        pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
+        pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity ? options.initialPointCapacity : (1u << 20), 1,
+                                              maxPointCapacity_);
         points_ = gl::createBuffer(size_t(pointCapacity_) * k_.pointBytes);
         counters_ = gl::createBuffer(k_.counterBytes, GL_DYNAMIC_STORAGE_BIT);
         frameUbo_ = gl::createBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);

@@ -65,7 +65,9 @@ public:
         maxPointCapacity_ = uint32_t(std::min<uint64_t>(
             std::max<uint32_t>(options.maxPointCapacity, 1),
             std::max<uint64_t>(uint64_t(std::max<GLint64>(maxBlockBytes, 0)) / k_.compactPointBytes, 1)));
-        pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity, 1, maxPointCapacity_);
+        // 0: sized by the first frame of each scene (sizeForScene); until then a small buffer.
+        pointCapacity_ = std::clamp<uint32_t>(options.initialPointCapacity ? options.initialPointCapacity : 1024u, 1,
+                                              maxPointCapacity_);
         points_ = gl::createBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
         counters_ = gl::createBuffer(k_.visCounterBytes, GL_DYNAMIC_STORAGE_BIT);
         frameUbo_ = gl::createBuffer(sizeof(LfdprFrameGpu), GL_DYNAMIC_STORAGE_BIT);
@@ -125,6 +127,8 @@ public:
         const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options, frame.profile.viewCount);
         glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
 
+        sizeForScene(scene, sampling, options);
+
         // Step 2: every clear of the frame, behind one barrier; point generation, which also
         // sizes the splat's dispatch (GPU side); the counters go to a read-back slot.
         const uint64_t tag = ++frameSerial_;
@@ -171,6 +175,10 @@ public:
         info_.pointBufferBytes = uint64_t(pointCapacity_) * k_.compactPointBytes;
         info_.triangleBufferBytes = triangleCapacity_ * k_.recordBytes + pointGeneration_.bufferBytes();
         info_.viewBufferBytes = shading_.viewBufferBytes();
+        // Work counters known on the CPU: what this frame's clears wrote (the counters, the
+        // large-triangle queues' dispatch words and shading's clears).
+        workBytesCleared_ = k_.visCounterBytes + pointGeneration_.clearedBytes() + shading_.clearedBytes();
+        splatViews_ = frame.profile.viewCount;
     }
 
     bool settle() override
@@ -200,6 +208,12 @@ public:
             {"point_capacity", double(info_.pointCapacity)},
             {"overflow_frames", double(info_.overflowFrames)},
             {"point_buffer_growths", double(info_.bufferGrowths)},
+            {"points_sized_at_load", double(info_.sizedPoints)},
+            // Work counters of the last counted frame: points splatted, point x view pairs
+            // the splat considers (every stored point in every view), bytes cleared.
+            {"work_points", double(info_.pointsStored)},
+            {"work_point_views", double(info_.pointsStored) * double(splatViews_)},
+            {"work_bytes_cleared", double(workBytesCleared_)},
             {"index_repairs", double(info_.repairs)},
             {"atomics", info_.int64Atomics ? 1.0 : 0.0},
             {"triangles_emitting", double(info_.triangles)},
@@ -218,6 +232,39 @@ public:
     }
 
 private:
+    // The point buffer sized for a scene's first frame (LfdprOptions::initialPointCapacity
+    // 0): point generation runs once with capacity 0 - it stores nothing but counts every
+    // point, by the same rule as a frame - and the count is read back, waiting: the one
+    // wait of a scene, at its first frame, never in a steady frame. The count depends on the
+    // views (pixel footprints reverse-projected at each triangle) and on the pose, so it is
+    // exact for this frame only: the buffer takes kSizingHeadroom x the count, and later
+    // frames that need more still grow it (applyCounts).
+    void sizeForScene(const GpuScene& scene, const FrameSetup& sampling, uint32_t options)
+    {
+        if (options_.initialPointCapacity != 0 || sizedSerial_ == scene.serial())
+            return;
+        sizedSerial_ = scene.serial();
+        const LfdprFrameGpu counting = makeLfdprFrame(sampling, 0, options, sampling.profile.viewCount);
+        glNamedBufferSubData(frameUbo_, 0, sizeof(counting), &counting);
+        bindBuffers(scene);
+        const GLuint zero = 0;
+        glClearNamedBufferData(counters_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        pointGeneration_.clearQueues();
+        glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+        pointGeneration_.run(scene);
+        LfdprVisibilityCountersGpu c{};
+        glGetNamedBufferSubData(counters_, 0, sizeof(c), &c); // waits (once per scene)
+        info_.sizedPoints = c.pointCount;
+        const uint32_t wanted = uint32_t(std::clamp<double>(std::ceil(double(c.pointCount) * kSizingHeadroom),
+                                                            double(kMinPointCapacity), double(maxPointCapacity_)));
+        if (wanted != pointCapacity_) {
+            pointCapacity_ = wanted;
+            points_ = gl::createBuffer(size_t(pointCapacity_) * k_.compactPointBytes);
+        }
+    }
+    static constexpr double kSizingHeadroom = 1.5;
+    static constexpr uint32_t kMinPointCapacity = 1024;
+
     // A frame's counters, come back from the GPU: the stats of that frame, and after an
     // overflow a point buffer grown to 1.25 x the count (never dropping points silently:
     // overflow_frames counts every frame that lost some, and settle() has the caller
@@ -353,6 +400,7 @@ private:
     LfdprVisibilityPointGeneration pointGeneration_;
     LfdprVisibilityShading shading_;
     uint64_t sceneSerial_ = 0; // GpuScene::serial() of the scene the tables are for
+    uint64_t sizedSerial_ = 0; // ... and of the scene the point buffer was sized for
     std::vector<uint32_t> drawFirstTriangle_;
     std::vector<int32_t> texturedMaterials_;
     gl::Buffer points_, counters_, frameUbo_, lineUbo_, dummy_, records_, draws_;
@@ -362,6 +410,8 @@ private:
     std::array<gl::Texture, 9> texels_; // buffer textures over the buffers above (bindSceneTexels)
     uint32_t pointCapacity_ = 0, maxPointCapacity_ = 0;
     uint64_t triangleCapacity_ = 0, trianglesCoarsened_ = 0;
+    uint64_t workBytesCleared_ = 0;
+    uint32_t splatViews_ = 0;
 };
 
 } // namespace
