@@ -123,11 +123,10 @@ public:
         uploadCameraLine(frame);
         const uint32_t options = (options_.lfdBiasedSampling ? k_.optionLfdSampling : 0u) |
                                  (options_.textureSplatting ? k_.optionTextureSplatting : 0u);
+        sizeForScene(scene, sampling, options); // before the constants: they carry the capacity
         // Point generation sizes the splat's dispatch, for the views the points go into.
         const LfdprFrameGpu constants = makeLfdprFrame(sampling, pointCapacity_, options, frame.profile.viewCount);
         glNamedBufferSubData(frameUbo_, 0, sizeof(constants), &constants);
-
-        sizeForScene(scene, sampling, options);
 
         // Step 2: every clear of the frame, behind one barrier; point generation, which also
         // sizes the splat's dispatch (GPU side); the counters go to a read-back slot.
