@@ -38,16 +38,6 @@ using metrics::Image;
 
 // ---- Scene and rendering helpers ------------------------------------------------------
 
-SceneBounds unitBounds()
-{
-    SceneBounds b;
-    b.min = glm::vec3(-1.0f);
-    b.max = glm::vec3(1.0f);
-    b.center = glm::vec3(0.0f);
-    b.radius = 1.0f;
-    return b;
-}
-
 // A 1.6 x 1.6 quad through the scene centre carrying a high-frequency checker (16 x 16
 // squares), tilted back by `degrees` about the horizontal axis, so the texture is
 // minified anisotropically (strongly in y, little in x): where mvr's isotropic trilinear

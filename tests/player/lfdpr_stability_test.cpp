@@ -50,16 +50,6 @@ using Frame = RenderedFrame;
 
 // ---- Scenes ---------------------------------------------------------------------------
 
-SceneBounds unitBounds()
-{
-    SceneBounds b;
-    b.min = glm::vec3(-1.0f);
-    b.max = glm::vec3(1.0f);
-    b.center = glm::vec3(0.0f);
-    b.radius = 1.0f;
-    return b;
-}
-
 // One view pixel (horizontal, vertical) on the zero-parallax plane, in scene units, for
 // scenes framed by unitBounds().
 glm::dvec2 pixelUnits(const DisplayProfile& profile)

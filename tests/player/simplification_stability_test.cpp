@@ -43,16 +43,6 @@ using metrics::Image;
 
 class SimplificationStabilityTest : public GlTest {};
 
-SceneBounds unitBounds()
-{
-    SceneBounds b;
-    b.min = glm::vec3(-1.0f);
-    b.max = glm::vec3(1.0f);
-    b.center = glm::vec3(0.0f);
-    b.radius = 1.0f;
-    return b;
-}
-
 DisplayProfile testProfile() { return smallProfile(8, 160, 120); }
 
 // One view pixel (horizontal, vertical) on the zero-parallax plane, in scene units.

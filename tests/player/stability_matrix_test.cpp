@@ -59,16 +59,6 @@ bool envSet(const char* name)
     return v && *v;
 }
 
-SceneBounds unitBounds()
-{
-    SceneBounds b;
-    b.min = glm::vec3(-1.0f);
-    b.max = glm::vec3(1.0f);
-    b.center = glm::vec3(0.0f);
-    b.radius = 1.0f;
-    return b;
-}
-
 Material flat(glm::vec3 colour, int32_t texture = kNone)
 {
     Material m;

@@ -127,6 +127,16 @@ void finishScene(Scene& scene)
     scene.bounds = bake::computeBounds(scene);
 }
 
+SceneBounds unitBounds()
+{
+    SceneBounds b;
+    b.min = glm::vec3(-1.0f);
+    b.max = glm::vec3(1.0f);
+    b.center = glm::vec3(0.0f);
+    b.radius = 1.0f;
+    return b;
+}
+
 Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec4 b, bool srgb)
 {
     Texture tex;

@@ -25,6 +25,9 @@ void addNode(Scene& scene, int32_t mesh, const glm::vec3& t, const glm::quat& r,
 // must be set) and bounds, with the baker's own stages.
 void finishScene(Scene& scene);
 
+// Bounds of the cube [-1, 1]^3 (centre 0, radius 1): a framing the tests can work by hand.
+SceneBounds unitBounds();
+
 // RGBA8 checker texture (squares of `square` texels) with its full box-filtered mip chain.
 Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec4 b, bool srgb);
 
