@@ -3,6 +3,7 @@
 #include "gpu_scene.h"
 #include "scene_bindings.h"
 #include "shader_library.h"
+#include "view_targets.h"
 
 #include <epoxy/gl.h>
 
@@ -68,6 +69,20 @@ void RasterDraw::endFrame() const
     glDisable(GL_CULL_FACE);
     glDisable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void RasterDraw::countWork(const GpuScene& scene, const ViewTargets& targets)
+{
+    workBytesCleared_ = uint64_t(targets.viewCount()) * targets.width() * targets.height() * (4 + 4);
+    uint64_t triangles = 0;
+    for (const DrawItem& d : scene.draws())
+        triangles += d.indexCount / 3;
+    workTriangleViews_ = triangles * targets.viewCount();
+}
+
+std::vector<std::pair<std::string, double>> RasterDraw::workStats() const
+{
+    return {{"work_triangle_views", double(workTriangleViews_)}, {"work_bytes_cleared", double(workBytesCleared_)}};
 }
 
 } // namespace lfd::player

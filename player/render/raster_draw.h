@@ -21,9 +21,15 @@ public:
     // Restores what beginFrame and the draws changed, and binds the default framebuffer.
     void endFrame() const;
 
+    // Work counters of a frame (extraStats), computed on the CPU with no read-back: drawn
+    // triangles x views, and the bytes the targets' clear writes (RGBA8 colour + D32F depth).
+    void countWork(const GpuScene& scene, const ViewTargets& targets);
+    std::vector<std::pair<std::string, double>> workStats() const;
+
 private:
     gl::Program program_;
     FrameUniforms uniforms_;
+    uint64_t workTriangleViews_ = 0, workBytesCleared_ = 0;
 };
 
 std::unique_ptr<Renderer> createMvrRenderer();

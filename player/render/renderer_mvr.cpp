@@ -1,7 +1,6 @@
 // mvr: the paper's multiview-raster baseline ("MVR"): one raster pass per view, each
 // drawing the whole scene with hardware trilinear mipmapping and view-dependent PBR.
 #include "frame_stages.h"
-#include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "raster_draw.h"
 #include "scene_bindings.h"
@@ -23,12 +22,7 @@ public:
     {
         timer.begin(stage::kViewGeneration);
         targets.clear(kBackground);
-        // Work counters (extraStats): computed on the CPU, no GPU read-back.
-        workBytesCleared_ = uint64_t(targets.viewCount()) * targets.width() * targets.height() * (4 + 4); // RGBA8 + D32F
-        uint64_t triangles = 0;
-        for (const DrawItem& d : scene.draws())
-            triangles += d.indexCount / 3;
-        workTriangleViews_ = triangles * targets.viewCount();
+        draw_.countWork(scene, targets);
         draw_.beginFrame(scene, frame);
         // One pass per view: bind view i's layer, select its camera, draw everything.
         for (uint32_t view = 0; view < targets.viewCount(); ++view) {
@@ -42,11 +36,10 @@ public:
 
     std::vector<std::pair<std::string, double>> extraStats() const override
     {
-        return {{"work_triangle_views", double(workTriangleViews_)}, {"work_bytes_cleared", double(workBytesCleared_)}};
+        return draw_.workStats();
     }
 
 private:
-    uint64_t workTriangleViews_ = 0, workBytesCleared_ = 0;
     RasterDraw draw_;
 };
 

@@ -4,7 +4,6 @@
 // shading as mvr (shared fragment shader), so both give the same views.
 #include "frame_stages.h"
 #include "gl_context.h"
-#include "gpu_scene.h"
 #include "gpu_timer.h"
 #include "raster_draw.h"
 #include "view_targets.h"
@@ -50,12 +49,7 @@ public:
     {
         timer.begin(stage::kViewGeneration);
         targets.clear(kBackground);
-        // Work counters (extraStats): computed on the CPU, no GPU read-back.
-        workBytesCleared_ = uint64_t(targets.viewCount()) * targets.width() * targets.height() * (4 + 4); // RGBA8 + D32F
-        uint64_t triangles = 0;
-        for (const DrawItem& d : scene.draws())
-            triangles += d.indexCount / 3;
-        workTriangleViews_ = triangles * targets.viewCount();
+        draw_.countWork(scene, targets);
         draw_.beginFrame(scene, frame);
         // All layers attached; each instance picks its layer in the vertex shader.
         glBindFramebuffer(GL_FRAMEBUFFER, targets.layeredFramebuffer());
@@ -66,11 +60,10 @@ public:
 
     std::vector<std::pair<std::string, double>> extraStats() const override
     {
-        return {{"work_triangle_views", double(workTriangleViews_)}, {"work_bytes_cleared", double(workBytesCleared_)}};
+        return draw_.workStats();
     }
 
 private:
-    uint64_t workTriangleViews_ = 0, workBytesCleared_ = 0;
     RasterDraw draw_;
 };
 
