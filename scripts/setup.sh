@@ -12,7 +12,7 @@ packages=(
   libegl-dev libepoxy-dev libglfw3-dev libegl-mesa0 libgl1-mesa-dri mesa-utils
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool assimp-testmodels glslang-tools ffmpeg
-  clang libclang-rt-14-dev python3 python3-matplotlib
+  clang libclang-rt-14-dev lld python3 python3-matplotlib
   blender
 )
 
