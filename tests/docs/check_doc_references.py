@@ -35,10 +35,10 @@ SKIP_DIRS = {".git", "node_modules", "__pycache__"}
 # A path ending in .md, not part of a longer token ($out/table.md, x.md.tmp, PREFIX/...).
 MD_PATH = re.compile(r"(?<![\w$/.{}@%*<-])((?:\.\.?/)*(?:[\w.-]+/)*[\w-][\w.-]*\.md)(?![\w.])")
 # FILE "Section"[, "Section"...][, step N]   or   FILE, *Section*
-QUOTED = r'"[^"\n]{1,120}"'
+QUOTED = r'\\?"[^"\n]{1,120}?\\?"'          # also \"...\" inside a shell string
 SECTION_REF = re.compile(
     r'(?P<file>(?<![\w./-])(?:(?:\.\.?/)*(?:[\w.-]+/)*[\w-][\w.-]*\.md|README)(?![\w.]))'
-    r'(?:,?[ \t]+(?P<secs>' + QUOTED + r'(?:[ \t]*(?:,|and)[ \t]*' + QUOTED + r')*)'
+    r'(?:,?[ \t]+\(?(?P<secs>' + QUOTED + r'(?:[ \t]*(?:,|and)[ \t]*' + QUOTED + r')*)'
     r'|,?[ \t]+\*(?P<ital>[^*\n]{1,120})\*)'
     r'(?P<step>,?[ \t]+step[ \t]+(?P<n>\d+))?')
 BARE_STEP = re.compile(r'(?<![\w./-])README(?:\.md)?[ \t]+step[ \t]+\d+')
@@ -227,7 +227,7 @@ def main():
                 continue   # reported by check 1 (or allowed)
             if not target.endswith(".md"):
                 continue
-            cited = re.findall(r'"([^"\n]+)"', m.group("secs")) if m.group("secs") else [m.group("ital")]
+            cited = re.findall(r'\\?"([^"\n]+?)\\?"', m.group("secs")) if m.group("secs") else [m.group("ital")]
             d = doc(target)
             found = None
             for title in cited:
