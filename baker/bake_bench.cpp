@@ -1,4 +1,4 @@
-// lfd-bake --bench (see bake_bench.h and README "Baker throughput").
+// lfd-bake --bench (see bake_bench.h and docs/baker/throughput.md).
 //
 // The scene: 8 grid meshes (one node each, side by side), gently curved so that no two
 // triangles are alike, with normals and uvs, one material with one square sRGB texture.

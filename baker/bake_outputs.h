@@ -1,7 +1,7 @@
 // Where the bake writes and what it tells a build system: the output path as the user
 // meant it (a folder names "<input stem>.lfdpack" inside it), checked before the import
 // so a wrong path costs a moment, not a bake; and the depfile (--depfile) that lets Make,
-// Ninja or CMake rebake only the packs whose inputs changed (README "Batch baking").
+// Ninja or CMake rebake only the packs whose inputs changed (docs/baker/batch-baking.md).
 #pragma once
 
 #include <filesystem>

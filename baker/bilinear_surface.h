@@ -1,8 +1,8 @@
 // The welded triangle mesh of one tessellation group as OpenSubdiv's bilinear surface
-// (README "Baking", step 4): Far::TopologyRefiner over the welded faces ->
-// Bfr::RefinerSurfaceFactory, one Bfr::Surface per face. tessellation.cpp places the new
-// points of oversized faces on it; face_pattern.cpp builds its patterns in barycentric
-// weights, so a face here is addressed by barycentric weights of its corners.
+// (docs/baker/lfd-bake.md "What a bake does", step 4): Far::TopologyRefiner over the welded faces
+// -> Bfr::RefinerSurfaceFactory, one Bfr::Surface per face. tessellation.cpp places the new points
+// of oversized faces on it; face_pattern.cpp builds its patterns in barycentric weights, so a face
+// here is addressed by barycentric weights of its corners.
 #pragma once
 
 #include <glm/glm.hpp>

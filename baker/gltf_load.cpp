@@ -99,7 +99,7 @@ bool captureImage(tinygltf::Image* image, const int, std::string*, std::string*,
     return true;
 }
 
-// Why the baker refuses a required extension it knows of (README "glTF extensions");
+// Why the baker refuses a required extension it knows of (docs/baker/gltf-extensions.md);
 // "" for the rest, which it does not implement.
 std::string refusalReason(const std::string& name)
 {

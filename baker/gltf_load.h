@@ -6,7 +6,7 @@
 // passed, with every buffer's bytes handed to it from memory, so its own messages never
 // reach the user. Compressed geometry (Draco, meshopt) is decoded between the resources and
 // the semantics (gltf_decompress.h), so the semantic checks see plain accessors. Every
-// finding names the file and a JSON path (README "Validation").
+// finding names the file and a JSON path (docs/baker/lfd-bake.md "Validation").
 #pragma once
 
 #include "gltf_validation.h"

@@ -6,7 +6,7 @@
 // importer converts anything, so a defect is named with its JSON path even in a file with
 // nothing to render. MUST
 // rules of the specification are errors; SHOULD rules and what the baker can work around
-// with a stated result are warnings (README "Validation") (internal to the baker).
+// with a stated result are warnings (docs/baker/lfd-bake.md "Validation") (internal to the baker).
 #pragma once
 
 #include "gltf_validation.h"

@@ -7,7 +7,7 @@
 // the JSON schema) and reports each violation with its JSON path, for example
 // `materials[0].pbrMetallicRoughness: expected an object, got an array`.
 //
-// Severity (README "Baking", "Validation"):
+// Severity (docs/baker/lfd-bake.md "Validation"):
 //   Error   - the baker cannot know what the author meant: a wrong type, a missing
 //             required property, a reference to something that does not exist, an enum
 //             value it cannot interpret in a property it reads. The file is refused.

@@ -1,4 +1,4 @@
-// lfd-bake: glTF 2.0 -> .lfdpack (see README.md "Baking") and `lfd-bake --inspect PACK`.
+// lfd-bake: glTF 2.0 -> .lfdpack (see docs/baker/lfd-bake.md) and `lfd-bake --inspect PACK`.
 #include "bake.h"
 #include "bake_bench.h"
 #include "bake_outputs.h"
@@ -82,8 +82,8 @@ Log bakeLog(const Options& o)
     return log;
 }
 
-// Framing: the scene fitted to the display volume decides what a view pixel measures
-// (scene units per view pixel at the nearest depth; README "Baking", step 4).
+// Framing: the scene fitted to the display volume decides what a view pixel measures (scene units
+// per view pixel at the nearest depth; docs/baker/lfd-bake.md "What a bake does", step 4).
 double viewPixelWorldOf(const Scene& scene, const DisplayProfile& profile, const Options& o, const Log& log)
 {
     const Framing framing = fitSceneToDisplay(profile, scene.bounds, o.fill);
@@ -225,7 +225,8 @@ std::vector<std::filesystem::path> bakeInputs(const ImportedScene& imported, con
     return files;
 }
 
-// The bake, stage by stage (README "Baking"), each stage timed for the report.
+// The bake, stage by stage (docs/baker/lfd-bake.md "What a bake does"), each stage timed for the
+// report.
 int bakeScene(const Options& o)
 {
     BakeReport report;
@@ -267,7 +268,7 @@ int bakeScene(const Options& o)
     return 0;
 }
 
-// Every lfd-bake flag (README "Baking").
+// Every lfd-bake flag (docs/baker/lfd-bake.md).
 void addBakeFlags(CLI::App& app, Options& o)
 {
     app.add_option("input", o.input, "glTF 2.0 scene (.gltf or .glb)");

@@ -1,4 +1,4 @@
-// RGB-D input (README "RGB-D input"): a photo and its depth map - two images, or one
+// RGB-D input (docs/baker/rgbd.md): a photo and its depth map - two images, or one
 // side-by-side image (colour left, depth right) - turned into a textured relief mesh that
 // the rest of the bake treats like an imported glTF scene (bounds, tessellation bound,
 // triangle statistics, texture compression).

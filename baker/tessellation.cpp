@@ -1,9 +1,9 @@
 // Tessellation stage: cut triangles that would span more than the view-pixel bound.
 //
-// Paper section 5: large triangles were "tessellated ... to ensure that they spanned no
-// more than a hundred pixels", because point rendering only beats rasterisation on small
-// triangles. README "Baking", step 4: only oversized triangles are cut, attributes are
-// interpolated, and the result has no cracks (no T-junctions).
+// Paper section 5: large triangles were "tessellated ... to ensure that they spanned no more than a
+// hundred pixels", because point rendering only beats rasterisation on small triangles.
+// docs/baker/lfd-bake.md "What a bake does", step 4: only oversized triangles are cut, attributes
+// are interpolated, and the result has no cracks (no T-junctions).
 //
 // Each edge is cut into ceil(length / bound) equal pieces (its rate), not into the next
 // power of two, and each oversized face is filled by OpenSubdiv's Bfr::Tessellation for

@@ -1,5 +1,6 @@
-// Texture budget: drop mip levels finer than any view can resolve (README "Baking":
-// texture levels finer than any view can resolve are never sampled, so they are not stored).
+// Texture budget: drop mip levels finer than any view can resolve (docs/baker/lfd-bake.md "What a
+// bake does", step 6: texture levels finer than any view can resolve are never sampled, so they are
+// not stored).
 #include "bake.h"
 
 #include <algorithm>

@@ -24,7 +24,7 @@ constexpr int kAlphaBlockFlags = squish::kDxt5 | squish::kColourRangeFit;
 // ~2 dB less PSNR) on larger ones. The baker keeps textures about twice as fine as the
 // finest view pixel (texture_budget.cpp), so the views sample mostly level 1 and below:
 // the quality goes where it is seen, and the cluster-fit cost is bounded per texture
-// (~1.4 MP) whatever its size (README "Texture compression" has the measured EIA error).
+// (~1.4 MP) whatever its size (docs/baker/texture-compression.md has the measured EIA error).
 constexpr uint64_t kClusterFitTexels = uint64_t(1) << 20;
 
 int colourFit(const MipLevel& level)

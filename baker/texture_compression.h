@@ -1,4 +1,4 @@
-// Block compression of baked textures (README "Baking", "Texture compression").
+// Block compression of baked textures (docs/baker/texture-compression.md).
 //
 // Every texture is baked to RGBA8 with its full mip chain first (mip_chain.h: sRGB colour
 // filtered in linear light), then each level is compressed on its own, so the mips of a

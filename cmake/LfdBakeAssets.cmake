@@ -6,7 +6,7 @@
 # its buffers and images, the display profile) and rebakes only the packs whose inputs
 # changed - or whose baker did. The rules are plain custom commands: Ninja or Make run
 # them in parallel, and any build engine that distributes Ninja/Make rules runs them too.
-# `name` is a target (built by default) that depends on every pack. README "Batch baking".
+# `name` is a target (built by default) that depends on every pack. docs/baker/batch-baking.md.
 function(lfd_bake_assets)
   cmake_parse_arguments(PARSE_ARGV 0 LFD "" "TARGET;DISPLAY;OUTPUT_DIR" "FILES;OPTIONS")
   if(NOT LFD_TARGET)

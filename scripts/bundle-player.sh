@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Makes a self-contained player bundle: a folder (and OUTDIR.tar.gz beside it) that runs
 # lfd-play and lfd-bench on another Linux x86-64 machine that has a GL driver and nothing
-# else (a display PC, a GPU server): README "Running the player on another machine".
+# else (a display PC, a GPU server): docs/player/another-machine.md.
 #
 #   bash scripts/bundle-player.sh OUTDIR [PACK...]
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Compressed glTF as pipelines ship it (README "glTF extensions"): each scene is converted
+# Compressed glTF as pipelines ship it (docs/baker/gltf-extensions.md): each scene is converted
 # with gltf-transform (draco, meshopt, webp, quantize), every variant is baked, and its
 # still EIA (mvr, no turntable) is compared with the uncompressed scene's (SSIM, lfd-compare).
 # Then the Draco variant's bake time is set against the uncompressed file's, in alternating

@@ -32,4 +32,4 @@ print(f"demo: warmed up, {run['profile']['views']} views of {run['profile']['vie
       f"{run['profile']['view_height']}: lfdpr {ms['lfdpr']:.1f} ms, mvr {ms['mvr']:.1f} ms per frame "
       f"(lfdpr {ms['mvr'] / ms['lfdpr']:.2f}x mvr's speed), EIA SSIM lfdpr vs mvr {ssim:.4f}")
 PY
-echo "demo: the full comparison (every renderer, error against the gold standard, charts) is README \"Benchmarking: lfd-bench\" (scripts/bench-matrix.sh)"
+echo "demo: the full comparison (every renderer, error against the gold standard, charts) is docs/bench/lfd-bench.md (scripts/bench-matrix.sh)"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The LFDPR bench table (README "Measured on a GPU"): lfd-bench at the prototype's 48 views
+# The LFDPR bench table (docs/bench/gpu-h200.md): lfd-bench at the prototype's 48 views
 # of 480x360 for mvr, mvr-layered, lfdpr (visibility pipeline) and lfdpr-paper on every
 # scene, against mvr, plus the dense block at 96 views. Runs in two places:
 #   * in a player bundle (scripts/bundle-player.sh): the bundle's lfd-bench over its
@@ -95,9 +95,9 @@ PY
 mv "$out/table.md.tmp" "$out/table.md"
 cat "$out/table.md"
 
-# --aniso 16 on the textured scenes (README "Anisotropic filtering"): mvr against lfdpr with
-# each of its filters (--lfdpr-aniso hardware, a GPU's default, and taps), lfdpr's EIA
-# RMSE against mvr's (issue 23's target: 0.01). LFD_BENCH_ANISO=0 skips it.
+# --aniso 16 on the textured scenes (docs/player/reconstruction.md "Anisotropic filtering"): mvr
+# against lfdpr with each of its filters (--lfdpr-aniso hardware, a GPU's default, and taps),
+# lfdpr's EIA RMSE against mvr's (issue 23's target: 0.01). LFD_BENCH_ANISO=0 skips it.
 if [ "${LFD_BENCH_ANISO:-1}" != 0 ]; then
   aniso=()
   for pack in "${packs[@]}"; do

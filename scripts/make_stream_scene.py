@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a paper-scale glTF scene for the streaming measurements (README "Streaming"):
+"""Writes a paper-scale glTF scene for the streaming measurements (docs/player/streaming.md):
 a height-field grid of about TRIANGLES triangles with one SIZE x SIZE base-colour
 texture (PNG), standard library only. Bake it with build/baker/lfd-bake.
 

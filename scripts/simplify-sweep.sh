@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The simplification axis (issue 40; README "Simplification"): bakes one glTF scene at
+# The simplification axis (issue 40; docs/baker/simplification.md): bakes one glTF scene at
 # `lfd-bake --simplify` 0, 0.25, 0.5, 1 and 2 view pixels, times mvr and lfdpr on every
 # pack with lfd-bench, and compares every level's mvr and lfdpr EIA with the gold standard
 # (gstd) rendered ONCE from the unsimplified (level 0) pack: what the scene looks like on
@@ -98,7 +98,7 @@ for r in rows:
           f"| {r['mvr_vs_level0_ssim']} / {r['mvr_vs_level0_rmse']} |")
 PY
 
-# The chart: PNG through matplotlib where /usr/bin/python3 has it (the README shows it),
+# The chart: PNG through matplotlib where /usr/bin/python3 has it (docs/baker/simplification.md shows it),
 # SVG always.
 chart_py=python3
 /usr/bin/python3 -c 'import matplotlib' 2>/dev/null && chart_py=/usr/bin/python3

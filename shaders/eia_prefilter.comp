@@ -1,14 +1,13 @@
 #version 450
-// Spatial reconstruction, step 1 of 2 (paper section 4; README "Reconstruction and
-// supersampling"): every view in linear light, filtered by the separable 3-tap kernel
-// [a, 1 - 2a, a] in x and y, edge texels repeated, into one R16F plane per channel, the
-// planes side by side (x = channel * width + x), of a 3D texture (z = view; view-spatial)
-// or an array (layer = view; spatial, EIA_PREFILTER_LAYERED defined). Step 2
-// (eia_construct.comp) reads it with one filtered fetch per subpixel from its channel's
-// plane: bilinear at the subpixel's screen position, so the spatial filter is tent *
-// kernel (the kernel's variance 2a is the paper's Gaussian's sigma^2, 0.375^2 view
-// pixels^2: the spread of the Gaussian integral of the bilinear image), and in
-// view-spatial also linear between the two nearest views.
+// Spatial reconstruction, step 1 of 2 (paper section 4; docs/player/reconstruction.md): every view
+// in linear light, filtered by the separable 3-tap kernel [a, 1 - 2a, a] in x and y, edge texels
+// repeated, into one R16F plane per channel, the planes side by side (x = channel * width + x), of
+// a 3D texture (z = view; view-spatial) or an array (layer = view; spatial, EIA_PREFILTER_LAYERED
+// defined). Step 2 (eia_construct.comp) reads it with one filtered fetch per subpixel from its
+// channel's plane: bilinear at the subpixel's screen position, so the spatial filter is tent *
+// kernel (the kernel's variance 2a is the paper's Gaussian's sigma^2, 0.375^2 view pixels^2: the
+// spread of the Gaussian integral of the bilinear image), and in view-spatial also linear between
+// the two nearest views.
 #include "eia_bindings.glsl"
 
 layout(local_size_x = EIA_PREFILTER_LOCAL_SIZE, local_size_y = EIA_PREFILTER_LOCAL_SIZE) in;

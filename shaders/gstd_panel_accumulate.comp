@@ -1,6 +1,6 @@
 #version 450 core
 // gstd's panel model, one batch of consecutive sub-views' contribution (renderer_gstd.h, gstd_panel.h,
-// README "The gold standard"): one invocation per panel pixel, its three subpixels. A
+// docs/player/gstd.md): one invocation per panel pixel, its three subpixels. A
 // subpixel shows, at each point of its area, the light leaving its lens in the direction
 // of that point's lenticular phase; its ideal value is the scene's radiance integrated
 // over that footprint:

@@ -5,13 +5,13 @@
 // Needs scene_bindings.glsl and lfdpr_bindings.glsl first.
 
 // LFDPR_SCENE_TEXELS (lfdpr_visibility_shade.comp): the reads go through buffer textures over the
-// same buffers (LFDPR_UNIT_*): Mesa's llvmpipe turns a storage-buffer load at a
-// per-invocation address into a loop over the SIMD lanes, once per component and with a
-// bounds check per lane, while texelFetch is one vectorised gather of a whole texel. That
-// pays in the shading pass, which follows record -> draw -> triangle -> vertices
-// for every pixel (see README, "View generation and shading"); it was measured slower in
-// the splat (one chain per point, amortised over its views: gallery view generation 45 ->
-// 71 ms), which keeps the storage buffers, as does point generation.
+// same buffers (LFDPR_UNIT_*): Mesa's llvmpipe turns a storage-buffer load at a per-invocation
+// address into a loop over the SIMD lanes, once per component and with a bounds check per lane,
+// while texelFetch is one vectorised gather of a whole texel. That pays in the shading pass, which
+// follows record -> draw -> triangle -> vertices for every pixel (see docs/player/lfdpr.md "View
+// generation and shading"); it was measured slower in the splat (one chain per point, amortised
+// over its views: gallery view generation 45 -> 71 ms), which keeps the storage buffers, as does
+// point generation.
 #ifdef LFDPR_SCENE_TEXELS
 layout(binding = LFDPR_UNIT_INDICES) uniform usamplerBuffer t_sceneTriangles;
 layout(binding = LFDPR_UNIT_POSITIONS) uniform samplerBuffer t_scenePositions;

@@ -1,8 +1,8 @@
 #version 450 core
-// LFDPR visibility pipeline, the frame's clears on a GPU (LFDPR_WORK_GPU; README "Work
-// shaped for a GPU"): every view pixel's words to all ones (empty: a depth key beyond every
-// depth, no record) and its colour to the background, in one dispatch of one invocation
-// per view pixel. The same clears through glClearNamedBufferData / glClearTexImage took
+// LFDPR visibility pipeline, the frame's clears on a GPU (LFDPR_WORK_GPU; docs/player/lfdpr.md
+// "Work shaped for a GPU"): every view pixel's words to all ones (empty: a depth key beyond every
+// depth, no record) and its colour to the background, in one dispatch of one invocation per view
+// pixel. The same clears through glClearNamedBufferData / glClearTexImage took
 // 2.8 ms a frame on an NVIDIA H200 whatever the scene (point generation's stage at 48 views
 // of 480x360: 2.79 ms with 25K points, 3.12 ms with 1.74M) - about 100 MB at some 35 GB/s,
 // the speed of the few units of a compute chip that do graphics - while shader stores run

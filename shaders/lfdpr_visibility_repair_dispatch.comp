@@ -1,7 +1,7 @@
 #version 450 core
 // LFDPR visibility pipeline, 32-bit path: the repair's dispatches, made on the GPU from the
 // first shading pass's count of raced pixels (shadeCounters.repairCount), so the frame
-// never reads the count back to decide (README "Frames that never wait"). Each of the
+// never reads the count back to decide (docs/player/lfdpr.md "Frames that never wait"). Each of the
 // three indirect dispatches of LfdprVisibilityRepairGpu gets zero workgroups when it has nothing to
 // do: without races the repair costs three empty dispatches.
 //   indexPass: lfdpr_visibility_splat.comp LFDPR_INDEX_PASS over every point (as the splat);

@@ -1,7 +1,7 @@
-// How the visibility pipeline's work is cut into invocations (README "Work shaped for a
-// GPU"): a compile-time variant every program of the pipeline gets alike, chosen from the
-// driver (LfdprOptions::WorkShape; lfd-play --lfdpr-work). Both variants write the same
-// views byte for byte (tested): they cut the same work differently.
+// How the visibility pipeline's work is cut into invocations (docs/player/lfdpr.md "Work shaped for
+// a GPU"): a compile-time variant every program of the pipeline gets alike, chosen from the driver
+// (LfdprOptions::WorkShape; lfd-play --lfdpr-work). Both variants write the same views byte for
+// byte (tested): they cut the same work differently.
 //
 // LFDPR_WORK_GPU (hardware GPUs): tens of thousands of short invocations. A GPU hides
 // memory latency with many invocations in flight and runs an invocation's loop as long as

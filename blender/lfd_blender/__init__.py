@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 """LFD toolkit add-on: bake the scene with lfd-bake, preview it with lfd-play, render
-quilts, EIAs and quilt videos for a light field display (README "Blender add-on").
+quilts, EIAs and quilt videos for a light field display (docs/blender.md).
 
 Scripting: settings on ``bpy.types.Scene.lfd`` (``output_dir``, ``display_profile``,
 ``tools_dir``, ...), operators ``bpy.ops.lfd.bake()``, ``bpy.ops.lfd.preview()`` and

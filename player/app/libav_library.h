@@ -1,7 +1,7 @@
 // FFmpeg's decoding libraries (libavformat, libavcodec, libswscale, libavutil), loaded at
 // run time with dlopen when a quilt video is first played, not linked: they and the codec
 // libraries they pull in are ~120 shared objects and 167 MB on Debian, which would end
-// lfd-play's portability (README "Running the player on another machine": 17 libraries,
+// lfd-play's portability (docs/player/another-machine.md: 17 libraries,
 // a 9 MiB bundle). The headers come from the -dev packages at build time (CMake
 // pkg_check_modules), so the calls are type-checked, and the sonames opened are the
 // major versions of those headers.

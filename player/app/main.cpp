@@ -1,6 +1,6 @@
 // lfd-play: renders a packed scene (.lfdpack), or plays quilts made elsewhere, as N light
 // field views and the panel's EIA, headless (EGL), in a window or fullscreen on the panel's
-// monitor (GLFW). See `lfd-play --help` and README "Driving a display".
+// monitor (GLFW). See `lfd-play --help` and docs/player/display.md.
 #include "camera_controls.h"
 #include "cli_support.h"
 #include "frame_stages.h"
@@ -420,7 +420,7 @@ struct HeadlessRun {
     bool wantOutputs = false, eiaSequence = false;
     uint32_t first = 0, frames = 1; // frames first .. first + frames - 1
     uint32_t outputFrame = 0;       // counted from `first`
-    double firstFrameMs = -1.0, residentMs = -1.0; // loading figures (README "Streaming")
+    double firstFrameMs = -1.0, residentMs = -1.0; // loading figures (docs/player/streaming.md)
     lfd::player::FrameOutputs outputs;
     lfd::DisplayProfile outputProfile;
     std::vector<fs::path> written; // removed again if the run fails

@@ -64,7 +64,7 @@ struct PlayOptions {
                                            // unset: shown in a desktop window, not fullscreen
     bool glDebug = false;                  // --gl-debug: debug context, KHR_debug messages printed
 
-    // Driving a display (README "Driving a display").
+    // Driving a display (docs/player/display.md).
     bool fullscreen = false;               // borderless fullscreen, EIA 1:1 on the monitor
     std::string monitor;                   // --monitor INDEX|NAME; empty: the one matching the panel
     bool allowMismatch = false;            // centre the EIA unscaled on a monitor of another size
@@ -73,7 +73,7 @@ struct PlayOptions {
     PreviewShape previewShape;             // --preview-view-step, --preview-size-divisor
     double previewHoldSeconds = 0.3;       // preview lasts this long after the last input
 
-    // Streaming (README "Streaming"): map the pack and upload it in bounded chunks; the
+    // Streaming (docs/player/streaming.md): map the pack and upload it in bounded chunks; the
     // window shows frames while finer mip levels arrive, headless runs wait until all is
     // resident before the first timed frame. false (--no-streaming): readPack, everything
     // uploaded before the first frame.

@@ -20,7 +20,7 @@ namespace lfd::player {
 int runWindowed(const PlayOptions& options, const DisplayProfile& profile, Scene scene,
                 const std::string& packName);
 // The same for a mapped pack: kStreamBytesPerFrame uploaded per frame until resident
-// (README "Streaming"), the title shows the progress.
+// (docs/player/streaming.md), the title shows the progress.
 inline constexpr uint64_t kStreamBytesPerFrame = uint64_t(64) << 20;
 int runWindowedStreamed(const PlayOptions& options, const DisplayProfile& profile, std::shared_ptr<MappedPack> pack,
                         const std::string& packName);

@@ -7,7 +7,8 @@ namespace lfd::player {
 namespace {
 
 // note: window_app.cpp's onKey and cameraKey are the bindings themselves; this is what a
-// user is told about them. The camera rows are the README's "Controls" table, shortened.
+// user is told about them. The camera rows are the "Controls" table of
+// docs/player/display.md, shortened.
 constexpr std::array kBindings = {
     KeyBinding{"R", "next renderer"},
     KeyBinding{"C", "next reconstruction (--aa)"},

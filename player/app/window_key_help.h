@@ -1,6 +1,7 @@
 // The window's keys and mouse controls as one table. The on-screen key help (H or F1,
-// window_readout.h), lfd-play --help's footer and README's "Window keys" table all show
-// this table; tests/player/window_readout_test.cpp holds the README to it, so a key added
+// window_readout.h), lfd-play --help's footer and the window keys table of
+// docs/player/display.md "On-screen readout and window keys" all show this table;
+// tests/player/window_readout_test.cpp holds that manual to it, so a key added
 // here and not there (or the other way round) fails a test instead of going undocumented.
 #pragma once
 
@@ -11,7 +12,7 @@
 namespace lfd::player {
 
 struct KeyBinding {
-    std::string_view keys;   // as the README writes them, e.g. "] / [" or "Home, Backspace"
+    std::string_view keys;   // as the manual writes them, e.g. "] / [" or "Home, Backspace"
     std::string_view action; // what they do, short enough for one line of the key help
 };
 

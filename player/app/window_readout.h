@@ -23,7 +23,7 @@ struct OverlayLine {
     bool highlight = false;
 };
 
-// The focal plane and depthiness steered by ] [ = - (README "Controls").
+// The focal plane and depthiness steered by ] [ = - (docs/player/display.md "Controls").
 struct CameraReadout {
     double focalDepthMm = 0.0;
     double depthiness = 1.0;

@@ -1,7 +1,7 @@
 // lfd-bench: times every renderer on one pack in one process and GL context (same views,
 // same frames of the rotating scene), measures each one's quality against a reference
-// renderer, and prints the speed-up and error table. See `lfd-bench --help` and README.md
-// ("Benchmarking: lfd-bench").
+// renderer, and prints the speed-up and error table. See `lfd-bench --help` and
+// docs/bench/lfd-bench.md.
 #include "bench_matrix.h"
 #include "bench_report.h"
 #include "bench_runner.h"

@@ -1,9 +1,9 @@
-// lfd-bench's measurement (paper section 5; README "Benchmarking: lfd-bench"): every renderer runs in one process and
-// one GL context on the same uploaded pack, the same views and the same frame times of
-// the rotating scene; per-stage GPU times come from the renderers' own GpuTimer stages,
-// and quality is measured at one fixed frame against a reference renderer (the gold
-// standard gstd by default, paper section 5; its views are cached on disk, gstd_cache.h).
-// Speed and error are reported together (bench_report.h formats them).
+// lfd-bench's measurement (paper section 5; docs/bench/lfd-bench.md): every renderer runs in one
+// process and one GL context on the same uploaded pack, the same views and the same frame times of
+// the rotating scene; per-stage GPU times come from the renderers' own GpuTimer stages, and quality
+// is measured at one fixed frame against a reference renderer (the gold standard gstd by default,
+// paper section 5; its views are cached on disk, gstd_cache.h). Speed and error are reported
+// together (bench_report.h formats them).
 #pragma once
 
 #include "eia_builder.h"    // Reconstruction
@@ -101,9 +101,9 @@ struct RendererResult {
         double rmseMean = 0.0, rmseWorst = 0.0, ssimMean = 1.0, ssimWorst = 1.0;
         std::vector<Quality> positions;
     } lensSweep;
-    // Wall-clock time per frame (README "Honest frame rates"): the timed frame count again,
-    // back to back as fast as the CPU submits them, finished once at the end; above the
-    // GPU total where a frame waits for the GPU or the CPU cannot keep it busy. 0 untimed.
+    // Wall-clock time per frame (docs/bench/lfd-bench.md "Honest frame rates"): the timed frame
+    // count again, back to back as fast as the CPU submits them, finished once at the end; above
+    // the GPU total where a frame waits for the GPU or the CPU cannot keep it busy. 0 untimed.
     double wallMsPerFrame = 0.0;
     // The GL calls of those frames, per frame (gl::GlCallCounter): compute dispatches,
     // draws, memory barriers and calls that wait for the GPU (0 in a steady state).

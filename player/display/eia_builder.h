@@ -5,7 +5,7 @@
 // screen). The reconstruction modes of the paper's section 4 (`--aa`) filter around that
 // sample in linear light - spatial (the spread of a 2.25 view-pixel Gaussian), view (a
 // tent over the 2 view intervals around it) or both - computed exactly, with one filtered
-// fetch per subpixel after a prefilter pass (README "Reconstruction and supersampling").
+// fetch per subpixel after a prefilter pass (docs/player/reconstruction.md).
 #pragma once
 
 #include "eia_bindings_gpu.h"

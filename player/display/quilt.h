@@ -1,4 +1,4 @@
-// Quilt images (Looking Glass convention, README "Playing: lfd-play"): all N views tiled into one
+// Quilt images (Looking Glass convention, docs/player/lfd-play.md): all N views tiled into one
 // image, `cols` x `rows` tiles, view 0 in the bottom-left tile (the leftmost camera), then
 // left to right and upwards, so view cols-1 is bottom-right and view cols sits above view 0.
 // Tiles past the last view stay black. File names carry the layout as a suffix

@@ -1,4 +1,4 @@
-// GL errors made visible (`--gl-debug`, README "Faults"). Two levels:
+// GL errors made visible (`--gl-debug`, docs/player/lfd-play.md "GL errors"). Two levels:
 //  * always: checkGlError() drains glGetError after a frame, so a GL error becomes a clear
 //    message and a non-zero exit instead of a silently wrong image;
 //  * with --gl-debug: GlDebugOutput installs a KHR_debug callback (core since GL 4.3) on a

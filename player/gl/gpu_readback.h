@@ -1,10 +1,10 @@
-// Small blocks the GPU writes (counters), read back without waiting for it (README
-// "Frames that never wait"): a frame copies its block into a slot of a pool of
-// persistently mapped buffers and puts a fence after the copy; a later frame takes the
-// slots whose fences have signalled - asked with glGetSynciv, which never waits - in the
-// order they were filled. Only waitAll() waits, for the frames whose outputs are read.
-// A slot is reused once taken; when every slot is still in flight the pool grows (an
-// allocation, not a wait), so no frame's block is ever skipped.
+// Small blocks the GPU writes (counters), read back without waiting for it (docs/player/lfdpr.md
+// "Frames that never wait"): a frame copies its block into a slot of a pool of persistently mapped
+// buffers and puts a fence after the copy; a later frame takes the slots whose fences have
+// signalled - asked with glGetSynciv, which never waits - in the order they were filled. Only
+// waitAll() waits, for the frames whose outputs are read. A slot is reused once taken; when every
+// slot is still in flight the pool grows (an allocation, not a wait), so no frame's block is ever
+// skipped.
 #pragma once
 
 #include "gl_handles.h"

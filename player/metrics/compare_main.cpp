@@ -1,7 +1,6 @@
-// lfd-compare: compares a test image with a reference image of the same size and prints
-// RMSE, PSNR, SSIM and LDR FLIP (as text, or one JSON object with --json); --diff writes
-// the per-pixel FLIP error as a magma heat map. See README.md, "Comparing images:
-// lfd-compare", and image_metrics.h for each metric's definition.
+// lfd-compare: compares a test image with a reference image of the same size and prints RMSE, PSNR,
+// SSIM and LDR FLIP (as text, or one JSON object with --json); --diff writes the per-pixel FLIP
+// error as a magma heat map. See docs/compare.md, and image_metrics.h for each metric's definition.
 #include "image_metrics.h"
 
 #include "cli_support.h"

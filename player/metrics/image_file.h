@@ -1,8 +1,7 @@
-// Image files for the player's tools (lfd-play, lfd-bench, lfd-compare) and libraries:
-// decoding with stb_image and encoding with stb_image_write (Debian's libstb-dev headers,
-// compiled into image_file.cpp), so the player links no image library and runs on a
-// machine that has a GL driver and nothing else (README "Running the player on another
-// machine"; the baker keeps OpenImageIO for its textures).
+// Image files for the player's tools (lfd-play, lfd-bench, lfd-compare) and libraries: decoding
+// with stb_image and encoding with stb_image_write (Debian's libstb-dev headers, compiled into
+// image_file.cpp), so the player links no image library and runs on a machine that has a GL driver
+// and nothing else (docs/player/another-machine.md; the baker keeps OpenImageIO for its textures).
 //
 // Read: PNG (8 and 16 bits), JPEG (baseline and progressive), BMP, TGA, GIF (first frame),
 // PSD (composited), HDR and PNM. Write: PNG, JPEG (quality 95), BMP, TGA, by extension.

@@ -1,8 +1,7 @@
 // lfd_image_metrics: CPU-only full-reference image metrics for comparing a test image with
 // a reference of the same size (a renderer's view or EIA against another renderer's or the
 // gold standard's): RMSE, PSNR, SSIM (Wang et al. 2004), LDR FLIP (Andersson et al. 2020),
-// and a heat-map writer for FLIP error maps. Used by `lfd-compare` (README.md, "Comparing
-// images: lfd-compare").
+// and a heat-map writer for FLIP error maps. Used by `lfd-compare` (docs/compare.md).
 //
 // Images are RGB, row 0 = top, channel values on the 8-bit scale 0..255 (stored as float so
 // that 8-bit images convert exactly and float images keep their fractional values). Alpha

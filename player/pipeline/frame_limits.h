@@ -1,11 +1,11 @@
-// Preflight of one frame's GPU resources against the driver's limits, before the first
-// frame allocates anything: the view targets (2D array, colour + depth), the supersampled
-// targets, the lfdpr per-pixel view buffers (SSBOs read through buffer textures), the
-// spatial reconstructions' prefiltered planes (--aa spatial: 2D array; view-spatial: 3D
-// texture, 3 view widths wide) and the panel-sized EIA, and their sum against the GPU
-// memory the driver reports (GL_NVX_gpu_memory_info / GL_ATI_meminfo). Pure computation
-// (checkFrameLimits) with the GL query apart (queryFrameLimits), so tests use fake limits.
-// 8K panels (7680x4320, 49-72 views) are what first reach these limits; README "8K panels".
+// Preflight of one frame's GPU resources against the driver's limits, before the first frame
+// allocates anything: the view targets (2D array, colour + depth), the supersampled targets, the
+// lfdpr per-pixel view buffers (SSBOs read through buffer textures), the spatial reconstructions'
+// prefiltered planes (--aa spatial: 2D array; view-spatial: 3D texture, 3 view widths wide) and the
+// panel-sized EIA, and their sum against the GPU memory the driver reports (GL_NVX_gpu_memory_info
+// / GL_ATI_meminfo). Pure computation (checkFrameLimits) with the GL query apart
+// (queryFrameLimits), so tests use fake limits. 8K panels (7680x4320, 49-72 views) are what first
+// reach these limits; docs/player/quilts.md "8K panels".
 #pragma once
 
 #include <cstdint>

@@ -24,7 +24,7 @@ struct RunInfo {
     uint64_t viewBufferBytes = 0, sceneGpuBytes = 0, triangles = 0, drawnTriangles = 0;
     double textureAnisotropy = 1.0; // --aniso as applied
     std::vector<std::pair<std::string, double>> extra; // Renderer::extraStats()
-    // Loading (README "Streaming"): wall milliseconds from the start of reading the pack to
+    // Loading (docs/player/streaming.md): wall milliseconds from the start of reading the pack to
     // the end of the first frame and to the whole scene resident on the GPU (< 0: not
     // measured, e.g. quilt input), and the process's peak resident set (getrusage).
     double timeToFirstFrameMs = -1.0, timeToResidentMs = -1.0, peakHostMemoryMiB = 0.0;

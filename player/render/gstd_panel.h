@@ -1,5 +1,5 @@
-// gstd's panel model: the gold standard as the limit of the display (README "The gold
-// standard"). Every panel subpixel integrates the scene over the light it sends out:
+// gstd's panel model: the gold standard as the limit of the display (docs/player/gstd.md). Every
+// panel subpixel integrates the scene over the light it sends out:
 //  * angularly, over its own interval: the lenticular phase across its area (a trapezoid:
 //    its width and, through the slant, its height each spread the phase). The sub-views
 //    tile the cone's phases; each one's weight for a subpixel is the fraction of that

@@ -33,13 +33,12 @@ public:
     // GPU memory the renderer holds for its frames beyond the scene and the view targets
     // (point, record and per-view-pixel buffers), in bytes.
     virtual uint64_t frameGpuBytes() const { return 0; }
-    // A renderer that sizes its buffers from counts the GPU keeps (lfdpr's points) reads
-    // them back frames later, behind a fence, so no frame waits for the GPU (README
-    // "Frames that never wait"); a frame that overflowed is known only then. settle() waits
-    // for the counts of every frame rendered so far, applies them (grown buffers, stats)
-    // and says whether the last frame was complete; false: it overflowed and rendering the
-    // same frame again draws it whole. Blocking: for frames whose outputs are read, never
-    // between steady-state frames.
+    // A renderer that sizes its buffers from counts the GPU keeps (lfdpr's points) reads them back
+    // frames later, behind a fence, so no frame waits for the GPU (docs/player/lfdpr.md "Frames
+    // that never wait"); a frame that overflowed is known only then. settle() waits for the counts
+    // of every frame rendered so far, applies them (grown buffers, stats) and says whether the last
+    // frame was complete; false: it overflowed and rendering the same frame again draws it whole.
+    // Blocking: for frames whose outputs are read, never between steady-state frames.
     virtual bool settle() { return true; }
     // A renderer that computes the panel image itself (gstd's panel model, which integrates
     // every subpixel's own footprint instead of interleaving views) writes it into the EIA

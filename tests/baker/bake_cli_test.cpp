@@ -228,7 +228,7 @@ TEST_F(BakeCli, TexturesAreBlockCompressedByUseUnlessAskedNotTo)
     }
     EXPECT_LE(blockBytes * 4, rgbaBytes);
     // (The files: the samples' procedural textures are so regular that zstd shrinks the
-    // RGBA8 levels about as small as the blocks; see README "Texture compression".)
+    // RGBA8 levels about as small as the blocks; see docs/baker/texture-compression.md.)
 
     const RunResult inspect = run(kBake + " --inspect " + quoted(bc));
     EXPECT_EQ(inspect.exitCode, 0) << inspect.out;

@@ -1,4 +1,4 @@
-// The bake's outputs as a build system sees them (README "Batch baking"): the output path
+// The bake's outputs as a build system sees them (docs/baker/batch-baking.md): the output path
 // (a folder names "<stem>.lfdpack" in it; a missing folder is refused before the import),
 // the depfile (every file read, Make/Ninja escapes), and the progress clock long stages
 // print by.

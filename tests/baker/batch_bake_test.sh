@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Batch baking end to end (README "Batch baking"): install the toolkit into a temporary
+# Batch baking end to end (docs/baker/batch-baking.md): install the toolkit into a temporary
 # prefix, configure samples/batch_bake over two generated scenes with every generator
 # available (Ninja, Unix Makefiles), and check that a clean build bakes both packs, a
 # rebuild bakes nothing, touching one texture rebakes only the pack that read it, and the

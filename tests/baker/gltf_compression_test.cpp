@@ -1,4 +1,4 @@
-// Compressed glTF as pipelines ship it (README "glTF extensions"): the gallery sample run
+// Compressed glTF as pipelines ship it (docs/baker/gltf-extensions.md): the gallery sample run
 // through gltf-transform (tests/data/gltf_compressed/make_fixtures.sh) - Draco, meshopt,
 // WebP, quantize - imports like the uncompressed gallery.glb; corrupt or truncated streams
 // (the fixtures patched here) are refused with one line naming the primitive or buffer

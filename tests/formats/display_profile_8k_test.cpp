@@ -1,6 +1,6 @@
 // The shipped 8K profiles (samples/profiles/looking_glass_{32,65}_8k.json): they load, match
 // their Looking Glass device's vendor quilt (formats/display_profiles.md section 3), and the
-// panel-matched render sizes of README "8K panels" have N * w * h = W * H.
+// panel-matched render sizes of docs/player/quilts.md "8K panels" have N * w * h = W * H.
 #include "lfd/display_profile.h"
 #include "lfd/looking_glass_devices.h"
 

@@ -1,4 +1,4 @@
-// The self-contained player (README "Running the player on another machine"): lfd-play links
+// The self-contained player (docs/player/another-machine.md): lfd-play links
 // no image library and few others, scripts/bundle-player.sh makes a bundle within 15 MB in
 // which every library the tools load resolves to the bundle, glibc or the GL driver, and
 // the bundle's lfd-play renders what the build tree's does.

@@ -365,13 +365,15 @@ TEST_F(CliTest, BadInputFailsCleanly)
         {"--headless " + q(pack_) + small + " --environment " + q(dir_ / "not_an_hdr.hdr") + outputs, "not_an_hdr.hdr"},
         {"--headless " + q(pack_) + small + " --tone-map aces" + outputs, "--tone-map"},
         {"--headless " + q(pack_) + small + " --exposure inf" + outputs, "--exposure"},
-        // Beyond GL limits (README "Faults"): refused before anything is allocated.
+        // Beyond GL limits (docs/player/quilts.md "8K panels"): refused before anything is
+        // allocated.
         {"--headless " + q(pack_) + " --display " + q(profile_) + " --views 100000 --view-size 64x48" + outputs,
          "--views"},
         {"--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 100000x16" + outputs,
          "view_width"},
-        // Within the profile's rules but past the driver's (frame_limits.h, README "8K panels"):
-        // 2^29 lfdpr view-buffer texels against llvmpipe's 2^27 (any driver's is below 2^29).
+        // Within the profile's rules but past the driver's (frame_limits.h, docs/player/quilts.md
+        // "8K panels"): 2^29 lfdpr view-buffer texels against llvmpipe's 2^27 (any driver's is
+        // below 2^29).
         {"--headless " + q(pack_) + " --display " + q(profile_) + " --renderer lfdpr --views 8 --view-size 8192x8192" +
              outputs,
          "GL_MAX_TEXTURE_BUFFER_SIZE"},

@@ -1,4 +1,4 @@
-// Block-compressed textures (README "Texture compression"): every renderer samples a
+// Block-compressed textures (docs/baker/texture-compression.md): every renderer samples a
 // BC1/BC4/BC5 texture like the RGBA8 chain it was compressed from (within the codec's
 // error, not bit-exact), BC5 normal maps get their z rebuilt (a wrong z would flip the
 // shading), streamed block levels - uploaded in partial chunks of block rows - render

@@ -368,10 +368,10 @@ TEST_F(DisplayWindowTest, QuiltVideoPausesAndStepsOneFrame)
 namespace lfd::test {
 namespace {
 
-// The readout in a desktop window: I shows it over the output's top-left corner - glyphs
-// in exact white over a dark box, the rest of the window untouched - H adds the key help,
-// ] shows the focal plane alone for two seconds, and the back buffer saved by --screenshot
-// never carries it. This capture is docs/readout.png (README "On-screen readout").
+// The readout in a desktop window: I shows it over the output's top-left corner - glyphs in exact
+// white over a dark box, the rest of the window untouched - H adds the key help, ] shows the focal
+// plane alone for two seconds, and the back buffer saved by --screenshot never carries it. This
+// capture is docs/readout.png (docs/player/display.md "On-screen readout and window keys").
 TEST_F(DisplayWindowTest, ReadoutTogglesOverTheWindowAndStaysOutOfScreenshots)
 {
     startServer("1280x720x24");

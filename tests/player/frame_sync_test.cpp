@@ -1,9 +1,9 @@
-// Frames that never wait for the GPU (README "Frames that never wait"): in a steady-state
-// frame no renderer reads a buffer back, maps one, finishes, waits on a fence or asks for a
-// query result before it is available. The test swaps libepoxy's GL entry points for
-// counting wrappers (gl::GlCallCounter) and counts the calls of frames 3-10, as lfd-play
-// and lfd-bench render them (FramePipeline::renderFrame), for every renderer. It also pins
-// the shape of an lfdpr frame: its dispatches and barriers do not grow with the view count.
+// Frames that never wait for the GPU (docs/player/lfdpr.md "Frames that never wait"): in a
+// steady-state frame no renderer reads a buffer back, maps one, finishes, waits on a fence or asks
+// for a query result before it is available. The test swaps libepoxy's GL entry points for counting
+// wrappers (gl::GlCallCounter) and counts the calls of frames 3-10, as lfd-play and lfd-bench
+// render them (FramePipeline::renderFrame), for every renderer. It also pins the shape of an lfdpr
+// frame: its dispatches and barriers do not grow with the view count.
 #include "gl_test_support.h"
 #include "render_test_util.h"
 #include "test_scenes.h"

@@ -1,6 +1,6 @@
-// GL errors become clear failures (README "Faults"): glGetError after every frame, and with
-// --gl-debug the KHR_debug message naming the call. Each check is made to fire with a
-// deliberately invalid call, then shown to stay quiet on a real frame of every renderer.
+// GL errors become clear failures (docs/player/lfd-play.md "GL errors"): glGetError after every
+// frame, and with --gl-debug the KHR_debug message naming the call. Each check is made to fire with
+// a deliberately invalid call, then shown to stay quiet on a real frame of every renderer.
 #include "gl_debug_output.h"
 #include "gl_test_support.h"
 #include "test_scenes.h"

@@ -1,7 +1,7 @@
-// Quilt videos as input (lfd-play --quilt-in clip.mp4, README "Quilts"): the streaming
-// decoder (frame count, rate, rewinding), the headless round trip through the real
-// executable - an animation exported with --quilt-video and played back gives the direct
-// render's EIAs within the codec's error - and bad videos failing in one line.
+// Quilt videos as input (lfd-play --quilt-in clip.mp4, docs/player/quilts.md "Quilt videos"): the
+// streaming decoder (frame count, rate, rewinding), the headless round trip through the real
+// executable - an animation exported with --quilt-video and played back gives the direct render's
+// EIAs within the codec's error - and bad videos failing in one line.
 #include "player_cli_fixture.h"
 #include "tool_run.h"
 
@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // The codec's error the round trip allows: H.264 at CRF 15 in 4:2:0 (quilt_video.cpp),
-// measured on the interleaved EIA (README "Quilts" gives the measured values).
+// measured on the interleaved EIA (docs/player/quilts.md "Quilt videos" gives the measured values).
 constexpr double kMinEiaPsnrDb = 35.0;
 
 // stderr only (stdout names the GPU), so a failure's one line can be counted.

@@ -1,4 +1,4 @@
-// lfd-play's streaming flags end to end (README "Streaming"): the default (mapped,
+// lfd-play's streaming flags end to end (docs/player/streaming.md): the default (mapped,
 // streamed, resident before timing) and --no-streaming write the same views and report
 // the loading figures in --stats; --gpu-memory-budget too small for the geometry, and a
 // pack with a corrupt texel, end with one line naming the file and a non-zero exit.

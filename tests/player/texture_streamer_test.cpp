@@ -1,4 +1,4 @@
-// Streaming (README "Streaming"): a mapped pack uploaded chunk by chunk renders exactly
+// Streaming (docs/player/streaming.md): a mapped pack uploaded chunk by chunk renders exactly
 // what the eager upload renders once resident; levels arrive coarsest first and the
 // sampled levels follow what is resident; the GPU memory plan drops top mips to fit a
 // budget or GL_MAX_TEXTURE_SIZE and refuses geometry that cannot fit.

@@ -1,7 +1,7 @@
 // The window's on-screen readout without a window: its lines for a given state, when it
 // is shown (off fullscreen until asked, the camera line while focus or depthiness change),
 // the frame-time average, the text layout (box in the top-left corner, glyphs inside it,
-// scale, columns), and the key help table against the README and the key handler. The
+// scale, columns), and the key help table against docs/player/display.md and the key handler. The
 // drawn overlay is tested under Xvfb in display_window_test.cpp.
 #include "text_overlay_layout.h"
 #include "window_key_help.h"
@@ -236,7 +236,7 @@ TEST(TextOverlayLayout, TabsAlignAColumnAndOddCharactersShowAsQuestionMarks)
                      player::layoutOverlay({{"caf???"}}, 200, 100)));
 }
 
-// ---- key help: one table, the README's and the key handler's -----------------------------
+// ---- key help: one table, the manual's and the key handler's -----------------------------
 
 std::string readText(const std::filesystem::path& path)
 {
@@ -246,13 +246,14 @@ std::string readText(const std::filesystem::path& path)
     return text.str();
 }
 
-TEST(WindowKeyHelp, ReadmeTableIsTheKeyHelpTable)
+// The table lives in lfd-play's manual, docs/player/display.md "On-screen readout and window keys".
+TEST(WindowKeyHelp, ManualTableIsTheKeyHelpTable)
 {
-    const std::string readme = readText(std::filesystem::path(LFD_SOURCE_DIR) / "README.md");
-    const size_t begin = readme.find("<!-- window-keys -->"), end = readme.find("<!-- /window-keys -->");
-    ASSERT_NE(begin, std::string::npos) << "README.md has no <!-- window-keys --> table";
+    const std::string manual = readText(std::filesystem::path(LFD_SOURCE_DIR) / "docs/player/display.md");
+    const size_t begin = manual.find("<!-- window-keys -->"), end = manual.find("<!-- /window-keys -->");
+    ASSERT_NE(begin, std::string::npos) << "docs/player/display.md has no <!-- window-keys --> table";
     ASSERT_NE(end, std::string::npos);
-    std::istringstream block(readme.substr(begin, end - begin));
+    std::istringstream block(manual.substr(begin, end - begin));
     std::vector<std::pair<std::string, std::string>> rows;
     const std::regex row(R"(^\|\s*(.*?)\s*\|\s*(.*?)\s*\|\s*$)");
     for (std::string line; std::getline(block, line);) {
@@ -266,7 +267,7 @@ TEST(WindowKeyHelp, ReadmeTableIsTheKeyHelpTable)
         rows.emplace_back(plain(m[1]), plain(m[2]));
     }
     const auto table = player::windowKeyBindings();
-    ASSERT_EQ(rows.size(), table.size()) << "README's window keys table and window_key_help.cpp differ in length";
+    ASSERT_EQ(rows.size(), table.size()) << "docs/player/display.md's window keys table and window_key_help.cpp differ in length";
     for (size_t i = 0; i < rows.size(); ++i) {
         EXPECT_EQ(rows[i].first, table[i].keys) << "row " << i;
         EXPECT_EQ(rows[i].second, table[i].action) << "row " << i;

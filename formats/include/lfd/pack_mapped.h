@@ -1,4 +1,4 @@
-// Memory-mapped pack reading, for streaming large packs to the GPU (README "Streaming").
+// Memory-mapped pack reading, for streaming large packs to the GPU (docs/player/streaming.md).
 //
 // readPack copies the whole file into memory, so a pack with a 16K texture needs its
 // full size in host memory before the first frame. MappedPack maps the file read-only,

@@ -67,21 +67,21 @@ struct LfdprOptions {
     // paper's spacing (their cells carry the mask). 1: the paper's density.
     uint32_t cellScale = 2;
     // Visibility pipeline: how its work is cut into invocations (shaders/lfdpr_work_shape.glsl,
-    // README "Work shaped for a GPU"). Gpu: many short invocations (a splat per point and
-    // slice of views, splats of a few pixels, shading per slice of views); Cpu: long
-    // invocations that amortise per-point setup over every view, which a CPU rasteriser
-    // runs fastest. Auto: Cpu on Mesa's software rasterisers (llvmpipe, softpipe) and
-    // OpenSWR, Gpu elsewhere. The views are the same either way.
+    // docs/player/lfdpr.md "Work shaped for a GPU"). Gpu: many short invocations (a splat per point
+    // and slice of views, splats of a few pixels, shading per slice of views); Cpu: long
+    // invocations that amortise per-point setup over every view, which a CPU rasteriser runs
+    // fastest. Auto: Cpu on Mesa's software rasterisers (llvmpipe, softpipe) and OpenSWR, Gpu
+    // elsewhere. The views are the same either way.
     enum class WorkShape { Auto, Gpu, Cpu } workShape = WorkShape::Auto;
-    // Visibility pipeline, --aniso above 1: how the shading filters a texture anisotropically
-    // at the pixel's exact footprint (README "Anisotropic filtering"). Hardware: one
-    // textureGrad through the textures' own anisotropic sampler state, the texture unit's
-    // filter - the one mvr's texture() uses, given the analytic gradients instead of the
-    // quad's differences. Taps: n = min(ceil(major / minor), N) trilinear textureGrad taps
-    // along the footprint's major axis, averaged. Auto: Taps on Mesa's software
-    // rasterisers and OpenSWR (llvmpipe's anisotropic filter takes its ellipse from the
-    // lanes of a 2x2 quad, which in a compute shader are unrelated pixels), Hardware
-    // elsewhere. At --aniso 1 both are the same single trilinear textureGrad.
+    // Visibility pipeline, --aniso above 1: how the shading filters a texture anisotropically at
+    // the pixel's exact footprint (docs/player/reconstruction.md "Anisotropic filtering").
+    // Hardware: one textureGrad through the textures' own anisotropic sampler state, the texture
+    // unit's filter - the one mvr's texture() uses, given the analytic gradients instead of the
+    // quad's differences. Taps: n = min(ceil(major / minor), N) trilinear textureGrad taps along
+    // the footprint's major axis, averaged. Auto: Taps on Mesa's software rasterisers and OpenSWR
+    // (llvmpipe's anisotropic filter takes its ellipse from the lanes of a 2x2 quad, which in a
+    // compute shader are unrelated pixels), Hardware elsewhere. At --aniso 1 both are the same
+    // single trilinear textureGrad.
     enum class AnisoFilter { Auto, Hardware, Taps } anisoFilter = AnisoFilter::Auto;
     // Auto: 64-bit atomics where GL_NV_shader_atomic_int64 exists, else two-pass 32-bit.
     // Int64 where unsupported throws gl::GlError at construction.

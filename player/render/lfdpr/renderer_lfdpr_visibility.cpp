@@ -6,11 +6,10 @@
 //   2. "view_generation": visibility splatting of depth and the point's triangle record
 //      into every view (lfdpr_visibility_shading, camera-line coherence);
 //   3. "resolve": one shading per visible view pixel, as mvr shades a fragment.
-// No step waits for the GPU (README "Frames that never wait"): the counters are copied into
-// a read-back slot behind a fence and read frames later (gl::GpuReadback). A frame whose
-// points overflowed the buffer is known then: the buffer grows for the next frames (stat
-// overflow_frames), and settle() tells a caller that reads the frame's outputs to render it
-// again.
+// No step waits for the GPU (docs/player/lfdpr.md "Frames that never wait"): the counters are
+// copied into a read-back slot behind a fence and read frames later (gl::GpuReadback). A frame
+// whose points overflowed the buffer is known then: the buffer grows for the next frames (stat
+// overflow_frames), and settle() tells a caller that reads the frame's outputs to render it again.
 #include "renderer_lfdpr.h"
 
 #include "frame_stages.h"

@@ -369,7 +369,7 @@ def interleaved_sparse():
 
 
 def schema_warnings():
-    # Schema violations a sensible bake survives (README "Validation"): a metallic
+    # Schema violations a sensible bake survives (docs/baker/lfd-bake.md "Validation"): a metallic
     # factor above 1 (clamped), a node name that is a number (ignored). lfd-bake warns;
     # lfd-bake --strict refuses the file.
     g = Gltf()
