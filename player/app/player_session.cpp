@@ -70,6 +70,7 @@ static void preflightFrame(const PlayOptions& options, const DisplayProfile& pro
     shape.supersampleViews = options.supersampling == Supersampling::Angular2x ? 2 : 1;
     shape.supersampleSize = options.supersampling == Supersampling::Spatial2x ? 2 : 1;
     shape.viewBuffers = options.renderer.rfind("lfdpr", 0) == 0;
+    shape.depthTargets = options.renderer.rfind("mvr", 0) == 0;
     shape.viewBufferBytesPerPixel =
         shape.viewBuffers && lfdprUseInt64(options.rendererOptions.lfdpr.atomics) ? 8 : 4;
     shape.prefilter = options.reconstruction == Reconstruction::Spatial       ? PrefilterPlanes::Layered

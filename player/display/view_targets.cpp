@@ -36,9 +36,15 @@ ViewTargets::ViewTargets(uint32_t viewCount, uint32_t width, uint32_t height)
     srgbView_ = gl::Texture(view);
     glTextureParameteri(srgbView_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(srgbView_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+void ViewTargets::createDepthAndFramebuffers()
+{
     depth_ = gl::createTexture(GL_TEXTURE_2D_ARRAY);
-    glTextureStorage3D(depth_, 1, GL_DEPTH_COMPONENT32F, GLsizei(width), GLsizei(height),
-                       GLsizei(viewCount));
+    glTextureStorage3D(depth_, 1, GL_DEPTH_COMPONENT32F, GLsizei(width_), GLsizei(height_),
+                       GLsizei(viewCount_));
+    const float one = 1.0f; // a new depth array starts cleared, like one cleared by clear()
+    glClearTexImage(depth_, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
 
     // One layered framebuffer (all layers; gl_Layer selects) and one per view.
     auto check = [](GLuint fbo, const char* what) {
@@ -51,8 +57,8 @@ ViewTargets::ViewTargets(uint32_t viewCount, uint32_t width, uint32_t height)
     glNamedFramebufferTexture(layeredFbo_, GL_COLOR_ATTACHMENT0, color_, 0);
     glNamedFramebufferTexture(layeredFbo_, GL_DEPTH_ATTACHMENT, depth_, 0);
     check(layeredFbo_, "layered");
-    layerFbos_.reserve(viewCount);
-    for (uint32_t i = 0; i < viewCount; ++i) {
+    layerFbos_.reserve(viewCount_);
+    for (uint32_t i = 0; i < viewCount_; ++i) {
         layerFbos_.push_back(gl::createFramebuffer());
         glNamedFramebufferTextureLayer(layerFbos_[i], GL_COLOR_ATTACHMENT0, color_, 0, GLint(i));
         glNamedFramebufferTextureLayer(layerFbos_[i], GL_DEPTH_ATTACHMENT, depth_, 0, GLint(i));
@@ -60,17 +66,40 @@ ViewTargets::ViewTargets(uint32_t viewCount, uint32_t width, uint32_t height)
     }
 }
 
-size_t ViewTargets::bytes() const
+unsigned ViewTargets::depthArray()
 {
-    return size_t(viewCount_) * width_ * height_ * (4 + 4); // RGBA8 + DEPTH32F
+    if (!hasDepth())
+        createDepthAndFramebuffers();
+    return depth_.get();
 }
+
+unsigned ViewTargets::layeredFramebuffer()
+{
+    if (!hasDepth())
+        createDepthAndFramebuffers();
+    return layeredFbo_.get();
+}
+
+unsigned ViewTargets::layerFramebuffer(uint32_t view)
+{
+    if (!hasDepth())
+        createDepthAndFramebuffers();
+    return layerFbos_[view].get();
+}
+
+size_t ViewTargets::colourBytes() const { return size_t(viewCount_) * width_ * height_ * 4; } // RGBA8
+
+size_t ViewTargets::depthBytes() const { return size_t(viewCount_) * width_ * height_ * 4; } // DEPTH32F
+
+size_t ViewTargets::bytes() const { return colourBytes() + (hasDepth() ? depthBytes() : 0); }
 
 void ViewTargets::clear(const float rgba[4])
 {
     // glClearTexImage clears every layer at once, independent of framebuffer state.
     const float one = 1.0f;
     glClearTexImage(color_, 0, GL_RGBA, GL_FLOAT, rgba);
-    glClearTexImage(depth_, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
+    if (hasDepth())
+        glClearTexImage(depth_, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &one);
 }
 
 std::vector<uint8_t> ViewTargets::readView(uint32_t view) const

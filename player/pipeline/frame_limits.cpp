@@ -54,9 +54,10 @@ FrameNeeds frameNeeds(const FrameShape& s)
     n.renderWidth = uint64_t(s.viewWidth) * s.supersampleSize;
     n.renderHeight = uint64_t(s.viewHeight) * s.supersampleSize;
     const uint64_t renderPixels = n.renderViews * n.renderWidth * n.renderHeight;
-    n.totalBytes = 8 * viewPixels; // RGBA8 colour + 32-bit float depth
+    const uint64_t targetBytes = s.depthTargets ? 8 : 4; // RGBA8 colour (+ 32-bit float depth)
+    n.totalBytes = targetBytes * viewPixels;
     if (renderPixels != viewPixels)
-        n.totalBytes += 8 * renderPixels; // the supersampled targets as well
+        n.totalBytes += targetBytes * renderPixels; // the supersampled targets as well
     if (s.viewBuffers) {
         n.viewBufferTexels = renderPixels;
         n.viewBufferBytes = renderPixels * s.viewBufferBytesPerPixel;

@@ -31,6 +31,7 @@ struct FrameShape {
     uint32_t supersampleViews = 1;  // --ss 2v: 2
     uint32_t supersampleSize = 1;   // --ss 2s: 2 (both axes)
     bool viewBuffers = false;       // lfdpr renderers: per-pixel depth/index buffers
+    bool depthTargets = true;       // raster renderers (mvr, mvr-layered): a D32F array beside the colours
     uint32_t viewBufferBytesPerPixel = 8; // their SSBO words per pixel (8: 64-bit atomics)
     PrefilterPlanes prefilter = PrefilterPlanes::None;
 };

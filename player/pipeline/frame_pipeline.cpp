@@ -210,9 +210,13 @@ uint32_t FramePipeline::completeFrame(Renderer& renderer, double time, Reconstru
 
 uint64_t FramePipeline::frameGpuBytes(const Renderer& renderer) const
 {
-    uint64_t bytes = targets_->bytes() + eia_->bytes() + renderer.frameGpuBytes();
+    // The depth arrays count only for a renderer that draws with them: in lfd-bench an
+    // earlier mvr run has allocated them, but an lfdpr-only frame never does.
+    const bool depth = renderer.drawsWithDepthTargets();
+    uint64_t bytes = targets_->colourBytes() + (depth ? targets_->depthBytes() : 0) + eia_->bytes() +
+                     renderer.frameGpuBytes();
     if (ssTargets_)
-        bytes += ssTargets_->bytes();
+        bytes += ssTargets_->colourBytes() + (depth ? ssTargets_->depthBytes() : 0);
     return bytes;
 }
 

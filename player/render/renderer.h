@@ -33,6 +33,10 @@ public:
     // GPU memory the renderer holds for its frames beyond the scene and the view targets
     // (point, record and per-view-pixel buffers), in bytes.
     virtual uint64_t frameGpuBytes() const { return 0; }
+    // True for renderers that rasterise into the view targets' framebuffers and so need
+    // their depth array (ViewTargets allocates it on first use); it counts in the frame's
+    // GPU memory only for them.
+    virtual bool drawsWithDepthTargets() const { return false; }
     // A renderer that sizes its buffers from counts the GPU keeps (lfdpr's points) reads them back
     // frames later, behind a fence, so no frame waits for the GPU (docs/player/lfdpr.md "Frames
     // that never wait"); a frame that overflowed is known only then. settle() waits for the counts

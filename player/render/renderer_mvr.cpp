@@ -16,6 +16,7 @@ class MvrRenderer final : public Renderer {
 public:
     MvrRenderer() : draw_("mvr.vert") {}
     std::string name() const override { return "mvr"; }
+    bool drawsWithDepthTargets() const override { return true; }
 
     void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets,
                 GpuTimer& timer) override

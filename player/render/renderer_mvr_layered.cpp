@@ -43,6 +43,7 @@ class MvrLayeredRenderer final : public Renderer {
 public:
     MvrLayeredRenderer() : draw_(checkedVertexShader()) {}
     std::string name() const override { return "mvr-layered"; }
+    bool drawsWithDepthTargets() const override { return true; }
 
     void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets,
                 GpuTimer& timer) override

@@ -39,13 +39,14 @@ TEST(FrameLimits, NeedsHandWorked)
     // 72 * 960 * 480 = 33,177,600 = 7680 * 4320 view pixels; views 8 B each, EIA 4 B each.
     EXPECT_EQ(frameNeeds(s).totalBytes, 8u * 33177600u + 4u * 33177600u);
     s.viewBuffers = true;
+    s.depthTargets = false; // lfdpr: no depth array beside the colours
     s.prefilter = PrefilterPlanes::Volume;
     const FrameNeeds n = frameNeeds(s);
     EXPECT_EQ(n.viewBufferTexels, 33177600u);
     EXPECT_EQ(n.viewBufferBytes, 8u * 33177600u);
     EXPECT_EQ(n.prefilterWidth, 2880u);
-    // + 8 B view buffers + 6 B prefilter (3 widths of R16F) per view pixel.
-    EXPECT_EQ(n.totalBytes, (8u + 8u + 6u + 4u) * 33177600ull);
+    // 4 B colours + 8 B view buffers + 6 B prefilter (3 widths of R16F) per view pixel.
+    EXPECT_EQ(n.totalBytes, (4u + 8u + 6u + 4u) * 33177600ull);
     s.supersampleSize = 2; // --ss 2s: targets 1920x960 as well
     EXPECT_EQ(frameNeeds(s).renderWidth, 1920u);
     EXPECT_EQ(frameNeeds(s).viewBufferTexels, 4u * 33177600u);

@@ -68,6 +68,41 @@ TEST_F(FrameSync, NoRendererWaitsForTheGpuInSteadyFrames)
     }
 }
 
+// The view targets' depth array exists only for renderers that rasterise into it: an
+// lfdpr frame holds the colours and its own view words, and its reported frame memory is
+// the same before and after an mvr frame on the same pipeline allocated the depth array
+// (at 72 views of 960x480 that array is 127 MiB; issue 38's memory target).
+TEST_F(FrameSync, OnlyRasterRenderersHoldTheDepthArray)
+{
+    const Scene scene = cubeAndSphereScene();
+    const DisplayProfile profile = profileWith(6);
+    player::FramePipeline pipeline(profile, scene, 10.0);
+    player::GpuTimer timer;
+    std::unique_ptr<player::Renderer> lfdpr = player::createRenderer("lfdpr", {});
+    std::unique_ptr<player::Renderer> mvr = player::createRenderer("mvr", {});
+    const uint64_t colours = uint64_t(6) * 48 * 36 * 4;
+    const uint64_t eia = uint64_t(profile.panelWidth) * profile.panelHeight * 4;
+
+    pipeline.renderFrame(*lfdpr, 0.0, timer);
+    lfdpr->settle();
+    EXPECT_FALSE(pipeline.targets().hasDepth());
+    EXPECT_EQ(pipeline.targets().bytes(), colours);
+    const uint64_t lfdprBytes = pipeline.frameGpuBytes(*lfdpr);
+    EXPECT_EQ(lfdprBytes, colours + eia + lfdpr->frameGpuBytes());
+    const std::vector<uint8_t> lfdprView = pipeline.targets().readView(3);
+
+    pipeline.renderFrame(*mvr, 0.0, timer);
+    EXPECT_TRUE(pipeline.targets().hasDepth());
+    EXPECT_EQ(pipeline.targets().bytes(), 2 * colours); // + D32F, 4 B per view pixel
+    EXPECT_EQ(pipeline.frameGpuBytes(*mvr), 2 * colours + eia + mvr->frameGpuBytes());
+    EXPECT_EQ(pipeline.frameGpuBytes(*lfdpr), lfdprBytes);
+
+    // lfdpr never reads the depth array: the same frame after mvr's gives the same view.
+    pipeline.renderFrame(*lfdpr, 0.0, timer);
+    lfdpr->settle();
+    EXPECT_TRUE(pipeline.targets().readView(3) == lfdprView);
+}
+
 TEST_F(FrameSync, RepairsOnTheThirtyTwoBitPathDoNotWait)
 {
     // Every 3rd point stores its record where it lost the depth test, as a lost race
