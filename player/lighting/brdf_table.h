@@ -16,6 +16,8 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -47,5 +49,22 @@ glm::vec3 splitSumTerms(float nDotV, float roughness, uint32_t samples);
 glm::vec2 brdfTableCoordinate(float nDotV, float roughness, uint32_t size);
 // (A, B, C) read as GL_LINEAR with GL_CLAMP_TO_EDGE reads it at brdfTableCoordinate.
 glm::vec3 sampleBrdfTable(const BrdfTable& table, float nDotV, float roughness);
+
+// GL_LINEAR with GL_CLAMP_TO_EDGE at brdfTableCoordinate of any square (n.v, roughness)
+// table with a `size` and a `texel(x, y)` (the BRDF table, the lobe tap table): texel
+// centres at (i + 0.5) / size.
+template <class Table>
+auto sampleSquareTableLinear(const Table& table, float nDotV, float roughness)
+{
+    const glm::vec2 texel = brdfTableCoordinate(nDotV, roughness, table.size) * float(table.size) - 0.5f;
+    const int last = int(table.size) - 1;
+    const float x0f = std::floor(texel.x), y0f = std::floor(texel.y);
+    const float fx = texel.x - x0f, fy = texel.y - y0f;
+    const auto at = [&](float x, float y) {
+        return table.texel(uint32_t(std::clamp(int(x), 0, last)), uint32_t(std::clamp(int(y), 0, last)));
+    };
+    return glm::mix(glm::mix(at(x0f, y0f), at(x0f + 1.0f, y0f), fx),
+                    glm::mix(at(x0f, y0f + 1.0f), at(x0f + 1.0f, y0f + 1.0f), fx), fy);
+}
 
 } // namespace lfd::lighting

@@ -21,16 +21,7 @@ const LobeTapTable& lobeTapTable()
 
 glm::vec4 sampleLobeTapTable(const LobeTapTable& table, float nDotV, float roughness)
 {
-    // GL_LINEAR at brdfTableCoordinate: texel centres at (i + 0.5) / size, clamped to edge.
-    const glm::vec2 texel = brdfTableCoordinate(nDotV, roughness, table.size) * float(table.size) - 0.5f;
-    const int last = int(table.size) - 1;
-    const float x0f = std::floor(texel.x), y0f = std::floor(texel.y);
-    const float fx = texel.x - x0f, fy = texel.y - y0f;
-    const auto at = [&](float x, float y) {
-        return table.texel(uint32_t(std::clamp(int(x), 0, last)), uint32_t(std::clamp(int(y), 0, last)));
-    };
-    return glm::mix(glm::mix(at(x0f, y0f), at(x0f + 1.0f, y0f), fx),
-                    glm::mix(at(x0f, y0f + 1.0f), at(x0f + 1.0f, y0f + 1.0f), fx), fy);
+    return sampleSquareTableLinear(table, nDotV, roughness);
 }
 
 } // namespace lfd::lighting
