@@ -176,6 +176,17 @@ TEST(SubpixelPhaseFixedPoint, ViewIsTheHighWordOfPhaseTimesN) {
     EXPECT_EQ(fixedSubpixelPhase(m, 0, 0), uint64_t(3) << 62);
 }
 
+TEST(SubpixelPhaseFixedPoint, SamePhaseStrideIsOneLensOnThePrototypeAndThe8KPanels) {
+    // Prototype: 3 / X = 0.12483 per pixel, 8 pixels = 0.99867 periods: 0.064 views off at 48.
+    EXPECT_EQ(samePhasePixelStride(prototypeDisplayProfile(), 16, 0.5), 8u);
+    const fs::path dir = fs::path(LFD_SOURCE_DIR) / "samples" / "profiles";
+    EXPECT_EQ(samePhasePixelStride(loadDisplayProfile(dir / "looking_glass_65_8k.json"), 16, 0.5), 8u);
+    EXPECT_EQ(samePhasePixelStride(loadDisplayProfile(dir / "looking_glass_32_8k.json"), 16, 0.5), 8u);
+    // About 6.22 pixels per lens: no stride up to 16 comes within half a view; plain order.
+    EXPECT_EQ(samePhasePixelStride(loadDisplayProfile(dir / "looking_glass_portrait_visual.json"), 16, 0.5), 1u);
+    EXPECT_EQ(samePhasePixelStride(prototypeDisplayProfile(), 4, 0.5), 1u);
+}
+
 TEST_P(SubpixelPhaseEveryProfile, FixedPointViewIsExactOnEverySubpixel) {
     const DisplayProfile& p = GetParam().profile;
     Exact exact[3] = {0, 0, 0};

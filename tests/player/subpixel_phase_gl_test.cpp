@@ -117,7 +117,7 @@ class SubpixelPhaseGpu : public GlTest {};
 TEST_F(SubpixelPhaseGpu, SmallPanelEveryRowEqualsTheCpu)
 {
     const gl::Program program = buildProbe();
-    for (const DisplayProfile& profile : {displaytest::smallProfile("RGB"), displaytest::smallProfile("RGB", true)}) {
+    for (const DisplayProfile& profile : {player::displaytest::smallProfile("RGB"), player::displaytest::smallProfile("RGB", true)}) {
         std::vector<uint32_t> rows(profile.panelHeight);
         for (uint32_t l = 0; l < profile.panelHeight; ++l)
             rows[l] = l;
