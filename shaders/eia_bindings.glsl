@@ -7,19 +7,20 @@
 #define EIA_MODE_SPATIAL 1
 #define EIA_MODE_VIEW 2
 #define EIA_MODE_VIEW_SPATIAL 3
-#define EIA_LOCAL_SIZE 8              // x and y: one invocation per panel pixel
+#define EIA_LOCAL_SIZE 8              // x and y: one invocation per panel pixel (x in lens order, EIA_LOC_LENS_ORDER)
 #define EIA_UNIT_VIEWS 0              // sampler2DArray: the N views, as stored (sRGB-encoded RGBA8)
 #define EIA_UNIT_PREFILTERED 1        // the prefiltered linear views, R16F channel planes: sampler3D (view-spatial, trilinear) or sampler2DArray (spatial)
 #define EIA_IMAGE_EIA 0               // rgba8 image2D: the panel-size output
 #define EIA_LOC_PANEL_SIZE 0          // uvec2
 #define EIA_LOC_VIEW_SIZE 1           // uvec2
 #define EIA_LOC_VIEW_COUNT 2          // uint
-#define EIA_LOC_PER_SUBPIXEL 3        // double (SubpixelMapping)
-#define EIA_LOC_PER_ROW 4             // double
-#define EIA_LOC_PHASE_OFFSET 5        // double
+#define EIA_LOC_PER_SUBPIXEL 3        // uvec2 (FixedSubpixelMapping: 2^-64 lens periods, low word, high word)
+#define EIA_LOC_PER_ROW 4             // uvec2
+#define EIA_LOC_PHASE_OFFSET 5        // uvec2
 #define EIA_LOC_INVERT_PHASE 6        // bool
 #define EIA_LOC_SUBPIXELS_BGR 7       // bool
 #define EIA_LOC_LINEAR_FROM_BYTE 8    // float[256] (mode view): sRGB byte -> linear, locations 8..263
+#define EIA_LOC_LENS_ORDER 264        // uvec2: invocation order, (pixel stride s, runs ceil(W / s)) (lfd::samePhasePixelStride)
 #define EIA_ENCODE_BUCKETS 512        // buckets of the sRGB encode table, uniform in sqrt(linear)
 #define EIA_SSBO_ENCODE_TABLE 0       // float[EIA_ENCODE_BUCKETS] (filtered modes): linear -> sRGB level
 #define EIA_PREFILTER_LOCAL_SIZE 8    // x and y (each invocation EIA_PREFILTER_BLOCK^2 texels); z = 1 (one view per z)

@@ -1,13 +1,14 @@
 #version 450
+#extension GL_ARB_gpu_shader_int64 : require
 // EIA construction (formats/display_profiles.md section 2): one invocation per panel pixel writes its three
 // subpixels. Subpixel column k = 3x + i (physical order on the panel), pixel row l (0 =
 // top of the panel). Its phase under the lens array follows the profile's SubpixelMapping
-// (van Berkel 1999 in affine form), exactly as lfd::subpixelPhase computes it on the CPU:
+// (van Berkel 1999 in affine form), exactly as lfd::fixedSubpixelPhase computes it on the CPU:
 //   phase = fract(perSubpixel * k + perRow * l + offset),  1 - phase if inverted,
 // and the subpixel shows channel i (RGB stripe) or 2 - i (BGR) of the views around
 // phase * N. Each view covers the whole screen, so the view pixel read is the one under
 // the subpixel's screen position (u, v) = ((k + 0.5) / 3W, (l + 0.5) / H).
-// The phase is computed in double precision (shaders/subpixel_phase.glsl says why).
+// The phase is computed in 64-bit fixed point (shaders/subpixel_phase.glsl says why).
 
 // Reconstruction modes (C++: lfd::player::Reconstruction, checked by a test), paper
 // section 4, in linear light, computed exactly (no random samples: no fixed noise pattern,
@@ -53,22 +54,20 @@ layout(binding = EIA_IMAGE_EIA, rgba8) uniform writeonly image2D eia;
 layout(location = EIA_LOC_PANEL_SIZE) uniform uvec2 panelSize;     // W, H in pixels
 layout(location = EIA_LOC_VIEW_SIZE) uniform uvec2 viewSize;       // view width, height in pixels
 layout(location = EIA_LOC_VIEW_COUNT) uniform uint viewCount;      // N
-layout(location = EIA_LOC_PER_SUBPIXEL) uniform double perSubpixel; // SubpixelMapping
-layout(location = EIA_LOC_PER_ROW) uniform double perRow;
-layout(location = EIA_LOC_PHASE_OFFSET) uniform double phaseOffset;
+// lfd::FixedSubpixelMapping: 2^-64 lens periods as uvec2(low word, high word).
+layout(location = EIA_LOC_PER_SUBPIXEL) uniform uvec2 perSubpixel;
+layout(location = EIA_LOC_PER_ROW) uniform uvec2 perRow;
+layout(location = EIA_LOC_PHASE_OFFSET) uniform uvec2 phaseOffset;
 layout(location = EIA_LOC_INVERT_PHASE) uniform bool invertPhase;
 layout(location = EIA_LOC_SUBPIXELS_BGR) uniform bool subpixelsBgr;
 // Mode view: sRGB byte -> linear value, the CPU reference's table (IEC 61966-2-1). Why a
 // table: llvmpipe decodes every channel of an sRGB texel in arithmetic, and a subpixel uses
 // one; looking its byte up made the view mode's EIA pass 1.3x faster.
 layout(location = EIA_LOC_LINEAR_FROM_BYTE) uniform float linearFromByte[256];
+// Invocation order: (stride s, runs n = ceil(W / s)), C++: lfd::samePhasePixelStride.
+layout(location = EIA_LOC_LENS_ORDER) uniform uvec2 lensOrder;
 
 #include "subpixel_phase.glsl"
-
-double subpixelPhase(uint k, uint l)
-{
-    return subpixelPhase(k, l, perSubpixel, perRow, phaseOffset, invertPhase);
-}
 
 // floor(a / b) for unsigned a, b > 0 with a < 2^31, exactly: a float quotient (within a
 // few ulps of the true one, so off by at most one below 2^24) corrected by one integer
@@ -93,9 +92,9 @@ ivec2 viewTexelUnder(uint k, uint l)
 }
 
 // Nearest view: the subpixel takes its channel from view floor(phase * N).
-float nearestView(uint k, uint l, uint channel, double phase)
+float nearestView(uint k, uint l, uint channel, uint64_t phase)
 {
-    const uint view = min(viewCount - 1u, uint(floor(phase * double(viewCount))));
+    const uint view = fixedPhaseView(phase, viewCount);
     return texelFetch(views, ivec3(viewTexelUnder(k, l), int(view)), 0)[channel];
 }
 
@@ -137,16 +136,19 @@ uint clampedView(int v)
 }
 
 #if EIA_MODE != EIA_MODE_NONE
-float filtered(uint k, uint l, uint channel, double phase)
+float filtered(uint k, uint l, uint channel, uint64_t phase)
 {
-    const double c = phase * double(viewCount);
 #if EIA_MODE == EIA_MODE_VIEW
-    // The view centres around c: views floor(c - 1/2) and the next, weighted linearly.
-    const double below = floor(c - 0.5LF);
-    const float a = float(c - 0.5LF - below);
+    // The view centres around c = phase * N: views floor(c - 1/2) and the next, weighted
+    // linearly. c = view + fraction, so c - 1/2 has the fraction's top bit flipped, and its
+    // floor is view - 1 where that bit was 0.
+    const uint view = fixedPhaseView(phase, viewCount);
+    const uint64_t fraction = fixedPhaseViewFraction(phase, viewCount);
+    const int below = int(view) - (fraction < 0x8000000000000000UL ? 1 : 0);
+    const float a = fixedPhaseToFloat(fraction ^ 0x8000000000000000UL);
     const ivec2 texel = viewTexelUnder(k, l);
-    const float v0 = linearValue(texelFetch(views, ivec3(texel, int(clampedView(int(below)))), 0)[channel]);
-    const float v1 = linearValue(texelFetch(views, ivec3(texel, int(clampedView(int(below) + 1))), 0)[channel]);
+    const float v0 = linearValue(texelFetch(views, ivec3(texel, int(clampedView(below))), 0)[channel]);
+    const float v1 = linearValue(texelFetch(views, ivec3(texel, int(clampedView(below + 1))), 0)[channel]);
     return encodeSrgb(mix(v0, v1, a));
 #else
     // The subpixel's screen position ((2k + 1) / 6W, (2l + 1) / 2H) in texture coordinates
@@ -158,20 +160,29 @@ float filtered(uint k, uint l, uint channel, double phase)
                                 1.0 - 0.5 / float(viewSize.x));
     const vec2 uv = vec2((float(channel) + inPlane) * (1.0 / 3.0), 1.0 - float(2u * l + 1u) * (1.0 / float(2u * panelSize.y)));
 #if EIA_MODE == EIA_MODE_SPATIAL
-    const float layer = float(clampedView(int(floor(c)))); // the view under c
+    const float layer = float(fixedPhaseView(phase, viewCount)); // the view under c = phase * N
     return encodeSrgb(textureLod(prefiltered, vec3(uv, layer), 0.0).r);
 #else
-    // z = c / N = the phase: linear between the two view centres around c (no double
-    // division: it was 8% of this pass on llvmpipe).
-    return encodeSrgb(textureLod(prefiltered, vec3(uv, float(phase)), 0.0).r);
+    // z = c / N = the phase: linear between the two view centres around c.
+    return encodeSrgb(textureLod(prefiltered, vec3(uv, fixedPhaseToFloat(phase)), 0.0).r);
 #endif
 #endif
 }
 #endif
 
-float subpixelValue(uint k, uint l, uint channel)
+// The panel column of invocation x: consecutive invocations are s pixels apart, s being the
+// stride over which the phase comes back nearest to itself (one lens on the 8K panels and
+// the prototype), so the lanes of a workgroup show the same or adjacent views and read
+// neighbouring texels of the same view layers (row by row instead of 6 views apart per
+// pixel); s = 1 is the plain order. Invocation x = p n + j is pixel j s + p (p < s).
+uint lensOrderedColumn(uint invocation)
 {
-    const double phase = subpixelPhase(k, l);
+    const uint position = floorDivide(invocation, lensOrder.y);
+    return (invocation - position * lensOrder.y) * lensOrder.x + position;
+}
+
+float subpixelValue(uint k, uint l, uint channel, uint64_t phase)
+{
 #if EIA_MODE == EIA_MODE_NONE
     return nearestView(k, l, channel, phase);
 #else
@@ -181,15 +192,22 @@ float subpixelValue(uint k, uint l, uint channel)
 
 void main()
 {
-    const uvec2 pixel = gl_GlobalInvocationID.xy; // x, GL row
+    if (gl_GlobalInvocationID.x >= lensOrder.x * lensOrder.y)
+        return;
+    const uvec2 pixel = uvec2(lensOrderedColumn(gl_GlobalInvocationID.x), gl_GlobalInvocationID.y); // x, GL row
     if (any(greaterThanEqual(pixel, panelSize)))
         return;
     const uint l = panelSize.y - 1u - pixel.y; // panel row, 0 = top
 
+    // The pixel's three subpixels: P(k + 1) = P(k) + perSubpixel exactly (mod 2^64), so one
+    // evaluation of the phase and two adds.
+    const uint64_t step = fixedPhaseUniform(perSubpixel);
+    uint64_t raw = fixedRawSubpixelPhase(3u * pixel.x, l, step, fixedPhaseUniform(perRow), fixedPhaseUniform(phaseOffset));
     vec4 rgba = vec4(0.0, 0.0, 0.0, 1.0);
     for (uint i = 0u; i < 3u; ++i) {
         const uint channel = subpixelsBgr ? 2u - i : i;
-        rgba[channel] = subpixelValue(3u * pixel.x + i, l, channel);
+        rgba[channel] = subpixelValue(3u * pixel.x + i, l, channel, fixedSubpixelPhase(raw, invertPhase));
+        raw += step;
     }
     imageStore(eia, ivec2(pixel), rgba);
 }

@@ -24,9 +24,9 @@
 #define GSTD_PANEL_IMAGE_PHASE 2         // rgba32f image2D: the three subpixels' phases (after inversion)
 #define GSTD_PANEL_IMAGE_LENS 3          // rgba32f image2D: the three subpixels' lens centres, texture u
 #define GSTD_PANEL_LOC_PANEL_SIZE 0      // uvec2: W, H
-#define GSTD_PANEL_LOC_PER_SUBPIXEL 1    // double (SubpixelMapping)
-#define GSTD_PANEL_LOC_PER_ROW 2         // double
-#define GSTD_PANEL_LOC_PHASE_OFFSET 3    // double
+#define GSTD_PANEL_LOC_PER_SUBPIXEL 1    // uvec2 (FixedSubpixelMapping: 2^-64 lens periods, low word, high word)
+#define GSTD_PANEL_LOC_PER_ROW 2         // uvec2
+#define GSTD_PANEL_LOC_PHASE_OFFSET 3    // uvec2
 #define GSTD_PANEL_LOC_INVERT_PHASE 4    // bool
 #define GSTD_PANEL_LOC_SUBPIXELS_BGR 5   // bool
 #define GSTD_PANEL_LOC_FIRST_PHASE 6     // float: phase t of the batch's first sub-view (layer 0)
@@ -35,3 +35,4 @@
 #define GSTD_PANEL_LOC_SPREAD 9          // vec2: phase spread over a subpixel's width, its height
 #define GSTD_PANEL_LOC_FOOTPRINT 10      // vec2: spatial footprint (one view pixel), texture units
 #define GSTD_PANEL_LOC_TAPS 11           // uvec2: bilinear taps across the footprint, x and y
+#define GSTD_PANEL_LOC_LENS_SUBPIXELS 12 // float: 1 / perSubpixel, subpixel columns per lens (signed)

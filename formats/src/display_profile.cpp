@@ -402,24 +402,4 @@ DisplayProfile withViews(DisplayProfile profile, uint32_t viewCount, uint32_t vi
     return profile;
 }
 
-double subpixelPhase(const DisplayProfile& profile, uint32_t k, uint32_t l) {
-    const SubpixelMapping& m = profile.mapping;
-    double phase = m.perSubpixel * double(k) + m.perRow * double(l) + m.offset;
-    phase -= std::floor(phase);
-    if (m.invert)
-        phase = 1.0 - phase;
-    // note: x - floor(x) rounds to 1.0 for tiny negative x, and 1 - 0 is 1; the phase is
-    // periodic, so 1 is the same lens position as 0.
-    if (phase >= 1.0)
-        phase = 0.0;
-    return phase;
-}
-
-uint32_t subpixelView(const DisplayProfile& profile, uint32_t k, uint32_t l) {
-    if (profile.viewCount == 0)
-        return 0;
-    const double view = std::floor(subpixelPhase(profile, k, l) * double(profile.viewCount));
-    return std::min(uint32_t(view), profile.viewCount - 1);
-}
-
 } // namespace lfd

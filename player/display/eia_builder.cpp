@@ -1,7 +1,7 @@
 // EIA construction: the compute pass (shaders/eia_construct.comp) and its CPU reference.
-// Both implement the same nearest-view mapping with the same arithmetic (phase in double
-// precision through lfd::subpixelPhase's operations, view texel in integer arithmetic,
-// no filtering), so their outputs are bit-identical; eia_test checks that. The filtered
+// Both implement the same nearest-view mapping with the same arithmetic (the 64-bit
+// fixed-point phase of lfd/subpixel_phase.h, view texel in integer arithmetic, no
+// filtering), so their outputs are bit-identical; eia_test checks that. The filtered
 // modes mirror the two passes (eia_prefilter.comp, eia_construct.comp) step by step in
 // float (within one 8-bit level, see eia_builder.h).
 #include "eia_builder.h"
@@ -13,6 +13,8 @@
 #include "gpu_timer.h"
 #include "shader_library.h"
 #include "view_targets.h"
+
+#include "lfd/subpixel_phase.h"
 
 #include <epoxy/gl.h>
 #include <glm/gtc/packing.hpp>
@@ -134,6 +136,9 @@ uint8_t encodeSrgbLevel(float linear) {
 
 EiaBuilder::EiaBuilder(const DisplayProfile& profile) : profile_(profile) {
     validateDisplayProfile(profile_, profile_.name.empty() ? "display profile" : profile_.name);
+    // Strides up to two lenses of 8 pixels, drifting at most half a view per stride (so a
+    // workgroup's 8 lanes span at most 4 views; the Looking Glass portrait panels keep 1).
+    lensStride_ = samePhasePixelStride(profile_, 16, 0.5);
     program(Reconstruction::None); // the default mode; compile errors surface here
     eia_ = gl::createTexture(GL_TEXTURE_2D);
     glTextureStorage2D(eia_, 1, GL_RGBA8, GLsizei(profile_.panelWidth),
@@ -216,7 +221,10 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
         throw std::invalid_argument("EIA: " + std::to_string(views.viewCount()) +
                                     " rendered views, display profile '" + profile_.name +
                                     "' needs " + std::to_string(profile_.viewCount));
-    const SubpixelMapping& m = profile_.mapping;
+    const FixedSubpixelMapping m = fixedSubpixelMapping(profile_.mapping);
+    const auto fixedUniform = [](GLint location, uint64_t value) {
+        glUniform2ui(location, GLuint(value), GLuint(value >> 32)); // low word, high word
+    };
 
     // Step 1: the spatial modes' prefilter; the mode's program and its uniforms
     // (locations from eia_bindings.glsl).
@@ -230,9 +238,12 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
     glUniform2ui(eb::kLocViewSize, views.width(), views.height());
     if (mode != Reconstruction::ViewSpatial) // view-spatial's trilinear read needs no view count
         glUniform1ui(eb::kLocViewCount, profile_.viewCount);
-    glUniform1d(eb::kLocPerSubpixel, m.perSubpixel);
-    glUniform1d(eb::kLocPerRow, m.perRow);
-    glUniform1d(eb::kLocPhaseOffset, m.offset);
+    fixedUniform(eb::kLocPerSubpixel, m.perSubpixel);
+    fixedUniform(eb::kLocPerRow, m.perRow);
+    fixedUniform(eb::kLocPhaseOffset, m.offset);
+    // Invocations in lens order: pixels one stride apart side by side (eia_construct.comp).
+    const uint32_t runs = (profile_.panelWidth + lensStride_ - 1) / lensStride_;
+    glUniform2ui(eb::kLocLensOrder, lensStride_, runs);
     glUniform1i(eb::kLocInvertPhase, m.invert ? 1 : 0);
     glUniform1i(eb::kLocSubpixelsBgr, profile_.subpixelOrder == SubpixelOrder::BGR ? 1 : 0);
 
@@ -250,8 +261,8 @@ void EiaBuilder::build(const ViewTargets& views, Reconstruction mode, GpuTimer& 
 
     glBindImageTexture(eb::kImageEia, eia_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
 
-    // Step 3: one invocation per panel pixel.
-    glDispatchCompute((profile_.panelWidth + eb::kLocalSize - 1) / eb::kLocalSize,
+    // Step 3: one invocation per panel pixel (and at most a stride's worth more).
+    glDispatchCompute((lensStride_ * runs + eb::kLocalSize - 1) / eb::kLocalSize,
                       (profile_.panelHeight + eb::kLocalSize - 1) / eb::kLocalSize, 1);
     timer.end();
     // Later consumers: texture reads (display, quilt), readback, blits.
@@ -361,7 +372,9 @@ void filteredEiaCpu(const DisplayProfile& profile, const std::vector<std::vector
                                                                 ? std::vector<std::vector<glm::vec4>>()
                                                                 : prefilterCpu(views, viewWidth, viewHeight);
     const std::array<float, 256>& linear = linearFromByte();
-    auto clampedView = [&](double v) { return uint32_t(std::clamp(v, 0.0, double(N - 1))); };
+    const FixedSubpixelMapping fixed = fixedSubpixelMapping(profile.mapping);
+    constexpr uint64_t kHalf = uint64_t(1) << 63;
+    auto clampedView = [&](int v) { return uint32_t(std::clamp(v, 0, int(N) - 1)); };
     for (uint32_t l = 0; l < H; ++l) {
         const uint32_t imageRow = viewRowUnder(l, H, viewHeight);
         const float py = float((2u * l + 1u) * viewHeight) / float(2u * H);
@@ -369,18 +382,21 @@ void filteredEiaCpu(const DisplayProfile& profile, const std::vector<std::vector
             uint8_t* out = &eia[(size_t(l) * W + x) * 4];
             for (uint32_t i = 0; i < 3; ++i) {
                 const uint32_t k = 3 * x + i, channel = bgr ? 2 - i : i;
-                const double c = subpixelPhase(profile, k, l) * double(N);
-                // The view centres around c (view modes): floor(c - 1/2) and the next.
-                const double below = std::floor(c - 0.5);
-                const auto a = float(c - 0.5 - below);
-                const uint32_t v0 = clampedView(below), v1 = clampedView(below + 1.0);
+                // c = phase * N = view + fraction. The view centres around c (view modes):
+                // floor(c - 1/2) and the next, as eia_construct.comp's filtered().
+                const uint64_t phase = fixedSubpixelPhase(fixed, k, l);
+                const uint32_t view = fixedPhaseView(phase, N);
+                const uint64_t fraction = fixedPhaseViewFraction(phase, N);
+                const int below = int(view) - (fraction < kHalf ? 1 : 0);
+                const float a = fixedPhaseToFloat(fraction ^ kHalf);
+                const uint32_t v0 = clampedView(below), v1 = clampedView(below + 1);
                 const glm::vec2 p(float((2u * k + 1u) * viewWidth) / float(6u * W), py);
                 float value = 0.0f;
                 if (mode == Reconstruction::View) {
                     const size_t texel = (size_t(imageRow) * viewWidth + viewColumnUnder(k, W, viewWidth)) * 4 + channel;
                     value = mixf(linear[views[v0][texel]], linear[views[v1][texel]], a);
                 } else if (mode == Reconstruction::Spatial) {
-                    value = bilinearCpu(prefiltered[clampedView(std::floor(c))], viewWidth, viewHeight, p, channel);
+                    value = bilinearCpu(prefiltered[view], viewWidth, viewHeight, p, channel);
                 } else {
                     value = mixf(bilinearCpu(prefiltered[v0], viewWidth, viewHeight, p, channel),
                                  bilinearCpu(prefiltered[v1], viewWidth, viewHeight, p, channel), a);
@@ -398,6 +414,7 @@ void nearestEiaCpu(const DisplayProfile& profile, const std::vector<std::vector<
                    uint32_t viewWidth, uint32_t viewHeight, std::vector<uint8_t>& eia) {
     const uint32_t W = profile.panelWidth, H = profile.panelHeight;
     const bool bgr = profile.subpixelOrder == SubpixelOrder::BGR;
+    const FixedSubpixelMapping fixed = fixedSubpixelMapping(profile.mapping);
     for (uint32_t l = 0; l < H; ++l) {
         const uint32_t viewRow = viewRowUnder(l, H, viewHeight);
         for (uint32_t x = 0; x < W; ++x) {
@@ -407,7 +424,7 @@ void nearestEiaCpu(const DisplayProfile& profile, const std::vector<std::vector<
                 // floor(phase * N) at its own screen position.
                 const uint32_t k = 3 * x + i;
                 const uint32_t channel = bgr ? 2 - i : i;
-                const uint32_t view = subpixelView(profile, k, l);
+                const uint32_t view = fixedPhaseView(fixedSubpixelPhase(fixed, k, l), profile.viewCount);
                 const uint32_t viewColumn = viewColumnUnder(k, W, viewWidth);
                 out[channel] = views[view][(size_t(viewRow) * viewWidth + viewColumn) * 4 + channel];
             }

@@ -68,6 +68,7 @@ public:
 
 private:
     DisplayProfile profile_;
+    uint32_t lensStride_ = 1; // invocation order: pixels per stride (lfd::samePhasePixelStride)
     gl::Texture eia_;
     gl::Buffer encodeTable_; // srgbEncodeTable, read by the filtered modes
     gl::Sampler nearest_;  // keeps the view array complete whatever its own filter state

@@ -3,6 +3,8 @@
 
 #include "parallel_bands.h"
 
+#include "lfd/subpixel_phase.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -88,6 +90,7 @@ std::vector<uint8_t> simulateViewer(const DisplayProfile& profile,
     const double rowsPerViewPixel = double(H) / vh;
     const double halfHeight = 0.5 * std::max(rowsPerViewPixel, 1.0);
     const bool bgr = profile.subpixelOrder == SubpixelOrder::BGR;
+    const FixedSubpixelMapping fixed = fixedSubpixelMapping(profile.mapping);
 
     std::vector<uint8_t> image(size_t(vw) * vh * 4);
     auto reconstructRows = [&](uint32_t rowBegin, uint32_t rowEnd) {
@@ -104,7 +107,7 @@ std::vector<uint8_t> simulateViewer(const DisplayProfile& profile,
                     for (uint32_t k = k0; k < k1; ++k) {
                         // Circular distance of the subpixel's view coordinate from t,
                         // wrapped into [-N/2, N/2).
-                        double delta = subpixelPhase(profile, k, l) * N - t;
+                        double delta = fixedPhaseToDouble(fixedSubpixelPhase(fixed, k, l)) * N - t;
                         delta -= N * std::floor(delta / N + 0.5);
                         const uint32_t i = k % 3;
                         const uint32_t channel = bgr ? 2 - i : i;

@@ -3,6 +3,8 @@
 #include "atomic_file.h"
 #include "view_targets.h"
 
+#include "lfd/subpixel_phase.h"
+
 #include <epoxy/gl.h>
 #include <xxhash.h>
 
@@ -86,9 +88,11 @@ std::string gstdCacheKey(uint64_t packHash, double time, double turntablePeriod,
     if (options.model == GstdModel::Panel) {
         // The panel model's EIA also depends on the panel and its lenses.
         const SubpixelMapping& m = profile.mapping;
-        std::snprintf(text, sizeof(text), " panel=%ux%u mapping=%a,%a,%a,%d order=%u", profile.panelWidth,
+        // phase=: the subpixel phase's definition (fixed point, lfd/subpixel_phase.h), so a
+        // panel image cached by the double-precision phase of earlier builds is not reused.
+        std::snprintf(text, sizeof(text), " panel=%ux%u mapping=%a,%a,%a,%d order=%u phase=fixed%d", profile.panelWidth,
                       profile.panelHeight, m.perSubpixel, m.perRow, m.offset, m.invert ? 1 : 0,
-                      unsigned(profile.subpixelOrder));
+                      unsigned(profile.subpixelOrder), kSubpixelPhaseBits);
         key += text;
     }
     return key + " gl=" + glDriver;

@@ -5,6 +5,8 @@
 #include "gstd_bindings_gpu.h"
 #include "shader_library.h"
 
+#include "lfd/subpixel_phase.h"
+
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -111,13 +113,17 @@ void GstdPanelAccumulator::begin(const DisplayProfile& profile, uint32_t viewCou
 
 void GstdPanelAccumulator::computePhases()
 {
-    const SubpixelMapping& m = profile_.mapping;
+    const FixedSubpixelMapping m = fixedSubpixelMapping(profile_.mapping);
+    const auto fixedUniform = [](GLint location, uint64_t value) {
+        glUniform2ui(location, GLuint(value), GLuint(value >> 32)); // low word, high word
+    };
     glUseProgram(phases_);
     glUniform2ui(gb::kPanelLocPanelSize, width_, height_);
-    glUniform1d(gb::kPanelLocPerSubpixel, m.perSubpixel);
-    glUniform1d(gb::kPanelLocPerRow, m.perRow);
-    glUniform1d(gb::kPanelLocPhaseOffset, m.offset);
+    fixedUniform(gb::kPanelLocPerSubpixel, m.perSubpixel);
+    fixedUniform(gb::kPanelLocPerRow, m.perRow);
+    fixedUniform(gb::kPanelLocPhaseOffset, m.offset);
     glUniform1i(gb::kPanelLocInvertPhase, m.invert ? 1 : 0);
+    glUniform1f(gb::kPanelLocLensSubpixels, float(1.0 / profile_.mapping.perSubpixel));
     glBindImageTexture(gb::kPanelImagePhase, phase_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(gb::kPanelImageLens, lens_, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glDispatchCompute((width_ + gb::kPanelLocalSize - 1) / gb::kPanelLocalSize,

@@ -11,6 +11,8 @@
 #include "shader_library.h"
 #include "view_targets.h"
 
+#include "lfd/subpixel_phase.h"
+
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
@@ -244,6 +246,20 @@ TEST_F(EiaGpu, MatchesCpuReferenceExactly) {
             << (profile.subpixelOrder == SubpixelOrder::BGR ? "BGR" : "RGB")
             << (profile.mapping.invert ? " inverted" : "");
     }
+}
+
+TEST_F(EiaGpu, LensOrderCoversEveryPixelOnceOnAnyWidth) {
+    // The pass numbers its invocations in lens order (lfd::samePhasePixelStride): with a
+    // panel width that is not a multiple of the stride the last run is partial; every
+    // pixel must still be written exactly as the CPU reference writes it.
+    DisplayProfile profile = displaytest::smallProfile();
+    profile.panelWidth = 482;
+    const uint32_t stride = samePhasePixelStride(profile, 16, 0.5);
+    ASSERT_GT(stride, 1u);
+    ASSERT_NE(profile.panelWidth % stride, 0u);
+    const auto views = randomViews(profile.viewCount, profile.viewWidth, profile.viewHeight, 5);
+    const auto gpu = buildEiaGpu(profile, views, profile.viewWidth, profile.viewHeight);
+    EXPECT_EQ(countDifferences(gpu, buildEiaCpu(profile, views, profile.viewWidth, profile.viewHeight)), 0u);
 }
 
 TEST_F(EiaGpu, PrototypePanelMatchesCpuAndIsTimed) {

@@ -22,6 +22,7 @@
 
 #include "lfd/display_profile.h"
 #include "lfd/framing.h"
+#include "lfd/subpixel_phase.h"
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
@@ -171,8 +172,7 @@ double expectedSubpixel(const DisplayProfile& profile, uint32_t k, uint32_t l, u
     const double phase = subpixelPhase(profile, k, l);
     if (channel == 0) {
         const SubpixelMapping& m = profile.mapping;
-        double raw = m.perSubpixel * double(k) + m.perRow * double(l) + m.offset;
-        raw -= std::floor(raw);
+        const double raw = fixedPhaseToDouble(fixedRawSubpixelPhase(fixedSubpixelMapping(m), k, l));
         const double centre = (double(k) + 0.5 + (0.5 - raw) / m.perSubpixel) / (3.0 * profile.panelWidth);
         const uint32_t taps = uint32_t(std::ceil(f.screenWidth * kLayerWidth - 1e-9));
         const double lo = 0.5 / kLayerWidth, hi = 1.0 - lo;

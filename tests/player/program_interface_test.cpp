@@ -51,7 +51,7 @@ std::vector<ProgramInterface> interfaces()
          {{"u_phase", {}, gb::kPanelImagePhase}, {"u_lens", {}, gb::kPanelImageLens},
           {"u_panelSize", gb::kPanelLocPanelSize, {}}, {"u_perSubpixel", gb::kPanelLocPerSubpixel, {}},
           {"u_perRow", gb::kPanelLocPerRow, {}}, {"u_phaseOffset", gb::kPanelLocPhaseOffset, {}},
-          {"u_invertPhase", gb::kPanelLocInvertPhase, {}}}},
+          {"u_invertPhase", gb::kPanelLocInvertPhase, {}}, {"u_lensSubpixels", gb::kPanelLocLensSubpixels, {}}}},
         {"gstd_panel_accumulate.comp", {}, &gb::kLayoutFile, gb::kPanelLocalSize,
          {{"u_subViews", {}, gb::kPanelUnitSubViews}, {"u_accum", {}, gb::kPanelImageAccum},
           {"u_phase", {}, gb::kPanelImagePhase}, {"u_lens", {}, gb::kPanelImageLens},
@@ -73,6 +73,7 @@ std::vector<ProgramInterface> interfaces()
           {"perSubpixel", eb::kLocPerSubpixel, {}},
           {"perRow", eb::kLocPerRow, {}}, {"phaseOffset", eb::kLocPhaseOffset, {}},
           {"invertPhase", eb::kLocInvertPhase, {}}, {"subpixelsBgr", eb::kLocSubpixelsBgr, {}},
+          {"lensOrder", eb::kLocLensOrder, {}},
           {"prefiltered", {}, eb::kUnitPrefiltered}}},
         // The view mode: the only one that reads the views themselves besides mode none.
         {"eia_construct.comp", {"EIA_MODE " + std::to_string(eb::kModeView)}, &eb::kLayoutFile, eb::kLocalSize,

@@ -26,6 +26,7 @@ enum class SubpixelOrder : uint32_t { RGB = 0, BGR = 1 };
 //   phase(k, l) = fract(perSubpixel * k + perRow * l + offset)      k: subpixel column 0..3W-1
 //   if (invert) phase = 1 - phase                                    l: pixel row 0..H-1 (top = 0)
 //   view = phase * viewCount     (floor for nearest view)
+// evaluated exactly in 64-bit fixed point (lfd/subpixel_phase.h).
 // van Berkel: phase = fract((k + 0.5 + k_off - 3 l tan(tilt)) / X), X = subpixels per lens.
 struct SubpixelMapping {
     double perSubpixel = 0.0;
@@ -75,9 +76,10 @@ DisplayProfile parseDisplayProfile(const std::string& jsonText, const std::strin
 DisplayProfile withViews(DisplayProfile profile, uint32_t viewCount, uint32_t viewWidth,
                          uint32_t viewHeight);
 
-// Phase in [0,1) of subpixel column k (0..3W-1) on pixel row l (0..H-1, top = 0).
+// Phase in [0,1) of subpixel column k (0..3W-1) on pixel row l (0..H-1, top = 0): the
+// fixed-point phase of lfd/subpixel_phase.h (defined in subpixel_phase.cpp), to 53 bits.
 double subpixelPhase(const DisplayProfile& profile, uint32_t k, uint32_t l);
-// Nearest view index in [0, viewCount) of that subpixel.
+// Nearest view index in [0, viewCount) of that subpixel, from the exact fixed-point phase.
 uint32_t subpixelView(const DisplayProfile& profile, uint32_t k, uint32_t l);
 
 } // namespace lfd
