@@ -2,7 +2,7 @@
 // against a hand-computable scene (one quad on the zero-parallax plane: the same pixels in
 // every view, counted here from the frame's own projection), a scene whose footprints
 // miss every pixel centre (all point-views culled, nothing written), their invariants on
-// an ordinary scene, and equality between runs. FrameSync checks that counting adds no
+// an ordinary scene, and equality between runs of what the geometry decides. FrameSync checks that counting adds no
 // GL call and no wait.
 #include "gl_test_support.h"
 #include "render_test_util.h"
@@ -185,9 +185,16 @@ TEST_F(LfdprWorkCounters, InvariantsHoldAndRunsCountAlike)
             shown += shownPixels(v);
         EXPECT_EQ(stat(s, "work_shadings"), double(shown)) << "one shading per visible view pixel";
     }
-    for (const auto& [key, value] : s)
-        if (key.rfind("work_", 0) == 0)
-            EXPECT_EQ(value, stat(second.stats, key)) << key << " differs between two runs of one frame";
+    // What the geometry decides is the same in every run; the atomics issued and the words
+    // lowered depend on the order the invocations ran in (a plain read sees a word before or
+    // after a racing nearer write), and so do the 32-bit path's repairs and their shadings.
+    for (const char* key : {"work_points", "work_point_views", "work_point_views_culled",
+                            "work_point_views_culled_by_centres", "work_point_view_setups", "work_samples"}) {
+        EXPECT_EQ(stat(s, key), stat(second.stats, key)) << key << " differs between two runs of one frame";
+    }
+    if (stat(s, "index_repairs") == 0.0 && stat(second.stats, "index_repairs") == 0.0) {
+        EXPECT_EQ(stat(s, "work_shadings"), stat(second.stats, "work_shadings"));
+    }
 
     // Off (the default): no GPU counters are reported.
     auto plain = player::createLfdprRenderer();
