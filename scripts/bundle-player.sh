@@ -7,7 +7,8 @@
 #
 # OUTDIR/
 #   lfd-play, lfd-bench       launchers: set the library path and run the tools
-#   gpu-bench.sh              the LFDPR bench table over packs/ (scripts/gpu-bench.sh)
+#   gpu-bench.sh              the LFDPR bench table over packs/ (scripts/gpu-bench.sh), with
+#                             gpu-bench-8k.sh, gpu_bench_8k_tables.py and profiles/ (the 8K ones)
 #   libexec/                  the tools, stripped
 #   lib/                      every shared library they need beyond glibc and the GL driver
 #   lib/glvnd/                the GL vendor-neutral loaders (libEGL, libGL, libOpenGL,
@@ -89,6 +90,9 @@ EOF
   chmod +x "$tmp/$tool"
 done
 cp scripts/gpu-bench.sh "$tmp/gpu-bench.sh"
+cp scripts/gpu-bench-8k.sh scripts/gpu_bench_8k_tables.py "$tmp/"
+mkdir -p "$tmp/profiles"
+cp samples/profiles/looking_glass_32_8k.json samples/profiles/looking_glass_65_8k.json "$tmp/profiles/"
 cp player/bench/bench_chart.py "$tmp/bench_chart.py"
 for pack in "$@"; do
   cp "$pack" "$tmp/packs/"

@@ -10,18 +10,26 @@
 # bundle, out/gpu-bench in the tree)]. Per scene OUTDIR/<scene>/bench.{json,csv}; the table
 # in OUTDIR/table.md (printed at the end; needs python3, else lfd-bench's own tables are
 # printed). LFD_BENCH_RENDERERS times other renderers, LFD_BENCH_WARMUP sets the warm-up
-# frames (default 5). Then anisotropic filtering (OUTDIR/aniso.md) and image-based lighting's
-# cost against the fixed light (OUTDIR/lighting.md).
+# frames (default 5). Then the 8K profiles (gpu-bench-8k.sh: OUTDIR/8k.md, the work counters
+# in OUTDIR/8k-work.md, prototype included), anisotropic filtering (OUTDIR/aniso.md) and
+# image-based lighting's cost against the fixed light (OUTDIR/lighting.md).
+# Budget: no run after the prototype table starts past LFD_BENCH_BUDGET_S seconds from the
+# start (default 420: the whole call stays under 8 minutes on an H200; what is left out is
+# listed). LFD_BENCH_SCENES (e.g. "car dense DamagedHelmet") keeps only those packs;
+# LFD_BENCH_8K=0 skips the 8K part (LFD_BENCH_8K_* knobs: gpu-bench-8k.sh). A dry run on
+# llvmpipe: LFD_BENCH_WARMUP=0 LFD_BENCH_SCENES=car bash gpu-bench.sh 1 OUTDIR.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 frames="${1:-20}"
 renderers="${LFD_BENCH_RENDERERS:-mvr,mvr-layered,lfdpr,lfdpr-paper}"
 warmup="${LFD_BENCH_WARMUP:-5}"
+deadline="${LFD_BENCH_BUDGET_S:-420}"
 
 if [ -x "$here/libexec/lfd-bench" ]; then
   # Bundle: prebuilt packs.
   bench="$here/lfd-bench"
   out="${2:-$PWD/gpu-bench-out}"
+  profiles="$here/profiles"
   packs=("$here"/packs/*.lfdpack)
   [ -e "${packs[0]}" ] || { echo "gpu-bench: no packs in $here/packs (give them to bundle-player.sh)" >&2; exit 2; }
 else
@@ -30,10 +38,19 @@ else
   [ -x build/player/lfd-bench ] || bash scripts/build.sh
   bench=build/player/lfd-bench
   out="${2:-out/gpu-bench}"
+  profiles="$PWD/samples/profiles"
   baked=$(bash scripts/bake-bench-scenes.sh "$out") # a failed bake stops here (set -e)
   mapfile -t packs <<<"$baked"
 fi
 mkdir -p "$out"
+if [ -n "${LFD_BENCH_SCENES:-}" ]; then
+  kept=()
+  for pack in "${packs[@]}"; do
+    case " $LFD_BENCH_SCENES " in *" $(basename "$pack" .lfdpack) "*) kept+=("$pack") ;; esac
+  done
+  [ "${#kept[@]}" -gt 0 ] || { echo "gpu-bench: no pack among LFD_BENCH_SCENES=$LFD_BENCH_SCENES" >&2; exit 2; }
+  packs=("${kept[@]}")
+fi
 
 # One run per scene (and dense again at 96 views), each into its own folder.
 runs=()
@@ -95,10 +112,15 @@ PY
 mv "$out/table.md.tmp" "$out/table.md"
 cat "$out/table.md"
 
+# The 8K profiles, and the work counters at every profile (docs/player/8k-panels.md).
+if [ "${LFD_BENCH_8K:-1}" != 0 ]; then
+  bash "$here/gpu-bench-8k.sh" "$bench" "$profiles" "$out" "$frames" "$warmup" "$deadline" "${packs[@]}"
+fi
+
 # --aniso 16 on the textured scenes (docs/player/reconstruction.md "Anisotropic filtering"): mvr
 # against lfdpr with each of its filters (--lfdpr-aniso hardware, a GPU's default, and taps),
 # lfdpr's EIA RMSE against mvr's (issue 23's target: 0.01). LFD_BENCH_ANISO=0 skips it.
-if [ "${LFD_BENCH_ANISO:-1}" != 0 ]; then
+if [ "${LFD_BENCH_ANISO:-1}" != 0 ] && [ "$SECONDS" -lt "$deadline" ]; then
   aniso=()
   for pack in "${packs[@]}"; do
     scene=$(basename "$pack" .lfdpack)
@@ -134,7 +156,7 @@ fi
 # Image-based lighting's cost (docs/lighting.md "Cost"): the runs above light with the
 # defaults (the neutral studio, PBR Neutral); each scene again with the fixed light and no
 # tone mapper, mvr and lfdpr, and the added share per renderer. LFD_BENCH_LIGHTING=0 skips it.
-if [ "${LFD_BENCH_LIGHTING:-1}" != 0 ]; then
+if [ "${LFD_BENCH_LIGHTING:-1}" != 0 ] && [ "$SECONDS" -lt "$deadline" ]; then
   lighting=()
   for pack in "${packs[@]}"; do
     scene=$(basename "$pack" .lfdpack)

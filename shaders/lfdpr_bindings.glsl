@@ -229,6 +229,15 @@ struct LfdprVisibilityCountersGpu {
     uint splatGroupsX;   // the splat's indirect dispatch (glDispatchComputeIndirect at
     uint splatGroupsY;   // offsetof(LfdprVisibilityCountersGpu, splatGroupsX)): workgroups of
     uint splatGroupsZ;   // LFDPR_GROUP_SIZE points, x at most 65535
+    // Work counters (docs/player/8k-panels.md), written only by programs compiled with
+    // LFDPR_COUNT_WORK (LfdprOptions::countWork; lfdpr_work_counters.glsl), else 0:
+    uint workCulled;     // (point, view) pairs skipped before the per-view triangle setup
+    uint workSamples;    // pixel centres inside the cell, the triangle and the depth range
+    uint workAtomics;    // of those, the atomicMin issued (the plain read found the word farther)
+    uint workLowered;    // of those, the atomics that lowered the word
+    uint workShadings;   // view pixels shaded (repair passes included)
+    uint workCulledCentres; // of workCulled, those whose cell and triangle columns overlap but
+                            // whose cell holds no pixel centre there (the centre test)
 };
 
 // The 32-bit path's repair, made on the GPU from the shading's first pass

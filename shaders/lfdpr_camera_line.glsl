@@ -134,13 +134,10 @@ void lfdSetCanonicalEdge(inout LfdViewTriangle t, int k, vec2 a, vec2 b)
     t.edgeOwnsTies[k] = counterClockwise.y < 0.0 || (counterClockwise.y == 0.0 && counterClockwise.x > 0.0);
 }
 
-// s0..s2 are snapped here (lfdSnapToSubpixels; the snap is idempotent, so a caller that
-// snapped them already for its pixel bounds gets the same triangle).
-LfdViewTriangle lfdViewTriangle(vec2 s0, vec2 s1, vec2 s2, vec3 invW)
+// The triangle of vertices already on the sub-pixel grid (the splat snaps their window y
+// once per point and x once per view: docs/player/8k-panels.md "Splat culling").
+LfdViewTriangle lfdViewTriangleSnapped(vec2 s0, vec2 s1, vec2 s2, vec3 invW)
 {
-    s0 = lfdSnapToSubpixels(s0);
-    s1 = lfdSnapToSubpixels(s1);
-    s2 = lfdSnapToSubpixels(s2);
     LfdViewTriangle t;
     t.s0 = s0;
     t.s1 = s1;
@@ -152,6 +149,13 @@ LfdViewTriangle lfdViewTriangle(vec2 s0, vec2 s1, vec2 s2, vec3 invW)
     lfdSetCanonicalEdge(t, 1, s2, s0);
     lfdSetCanonicalEdge(t, 2, s0, s1);
     return t;
+}
+
+// s0..s2 are snapped here (lfdSnapToSubpixels; the snap is idempotent, so a caller that
+// snapped them already for its pixel bounds gets the same triangle).
+LfdViewTriangle lfdViewTriangle(vec2 s0, vec2 s1, vec2 s2, vec3 invW)
+{
+    return lfdViewTriangleSnapped(lfdSnapToSubpixels(s0), lfdSnapToSubpixels(s1), lfdSnapToSubpixels(s2), invW);
 }
 
 // Canonical edge k's value at p (= lfdCanonicalEdge of the edge, bit for bit: lfdEdge's

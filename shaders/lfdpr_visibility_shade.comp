@@ -70,6 +70,7 @@ vec4 lfdSampleFootprint(sampler2D t, vec2 uv, vec2 duvdx, vec2 duvdy)
 #include "lfdpr_pixel_access.glsl"
 #include "lfdpr_shade_chunks.glsl"
 #include "lfdpr_camera_line.glsl"
+#include "lfdpr_work_counters.glsl"
 
 layout(local_size_x = LFDPR_SHADE_TILE, local_size_y = LFDPR_SHADE_TILE) in;
 
@@ -214,18 +215,17 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprVisibilityRecordGpu re
 
     // Step 4: shade. (A repair pass shades again the listed chunks, where a pixel shaded
     // already gets the same colour.)
+    LFDPR_COUNT(shadings, 1u);
     imageStore(u_views, ivec3(xy, view), shadePixel(t, view, vt, edges));
 }
 
-void main()
+// One invocation's work (main): its pixel of the workgroup's tile chunk entry `slot`.
+void shadeEntry(uint slot)
 {
     // Step 1: this workgroup's tile chunk and its views with pixels of the group, from
     // the group's list (lfdpr_visibility_shade_list.comp).
     uvec2 size = uvec2(u_lfd.viewSize.xy);
     uvec2 tiles = lfdShadeTiles(size);
-    uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;
-    if (slot >= groupDispatch[u_group].w)
-        return;
     uint base = (u_group * lfdShadeEntryCount(tiles, u_lfd.counts.x) + slot) * uint(LFDPR_SHADE_ENTRY_WORDS);
     uint chunkTile = groupTiles[base];
     // This workgroup's views of the chunk: slice gl_WorkGroupID.z (lfdpr_work_shape.glsl).
@@ -255,4 +255,12 @@ void main()
         // The winner again (step 2 found it is the group's; nothing changed it since).
         shadeViewPixel(view, xy, pixel, lfdRecord(lfdPixelWinner(pixel)), chunkTile);
     }
+}
+
+void main()
+{
+    uint slot = gl_WorkGroupID.y * LFDPR_SHADE_DISPATCH_WIDTH + gl_WorkGroupID.x;
+    if (slot < groupDispatch[u_group].w)
+        shadeEntry(slot);
+    lfdWorkFlush(); // uniform control flow: every invocation of the workgroup gets here
 }

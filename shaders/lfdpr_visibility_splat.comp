@@ -16,6 +16,12 @@
 // Camera-line coherence: the triangle's vertices and the cell's corners are projected
 // once per point (lfdpr_camera_line.glsl); per view only their window x moves, by one
 // multiply-add each. Facing, coverage and depth are then evaluated per view as usual.
+// Views in which the cell holds no pixel centre are culled before the per-view triangle
+// setup (docs/player/8k-panels.md "Splat culling"): first by the cell's columns alone, then
+// by the columns it shares with the triangle, then, on the GPU work shape and for boxes of
+// up to 32 pixels, by testing the box's centres against the cell, whose result the pixel
+// loop reuses (llvmpipe runs a lane's skipped setup anyway unless its whole SIMD row
+// skips it, and measured the extra loop slower: the CPU shape tests the cell per pixel).
 //
 // The depth pass also marks, for the point's shading group, the tile chunks and views it
 // wrote pixels in (LFDPR_SSBO_CHUNK_MASKS), from which lfdpr_visibility_shade_list.comp lists the
@@ -43,6 +49,7 @@
 #include "lfdpr_scene_access.glsl"
 #include "lfdpr_camera_line.glsl"
 #include "lfdpr_shade_chunks.glsl"
+#include "lfdpr_work_counters.glsl"
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
@@ -156,18 +163,123 @@ ivec2 pixelSpan(vec4 cell, vec3 triangle, int size)
     return ivec2(max(int(ceil(lo - 0.5)), 0), min(int(floor(hi - 0.5)), size - 1));
 }
 
+// Whether the cell's corner coordinates (x or y of a, b, c, d) span a pixel centre inside
+// 0..size - 1 (pixelSpan's test with the cell alone: its span holds pixelSpan's).
+bool cellSpansCentre(vec4 cell, int size)
+{
+    float lo = min(min(cell.x, cell.y), min(cell.z, cell.w));
+    float hi = max(max(cell.x, cell.y), max(cell.z, cell.w));
+    return max(int(ceil(lo - 0.5)), 0) <= min(int(floor(hi - 0.5)), size - 1);
+}
+
+// The point projected once (camera-line coherence): what every view of it shares.
+// Window x of the cell's corners a, b, c, d (vec4) and of the triangle's vertices (vec3) in
+// view e is x0 + e * xPer; y is the same in every view (the triangle's on the sub-pixel grid).
+struct LfdSplatPoint {
+    vec4 cellX0, cellXPer, cellY;
+    vec3 triX0, triXPer, triY;
+    vec3 invW;
+    ivec2 rows; // pixel rows of the cell and the triangle (the same in every view)
+};
+
+// Steps 1-3 of main: the point's triangle and cell projected once; false when any of them
+// lies behind a camera plane (the near plane clips such triangles) or no pixel row holds
+// both.
+bool setupSplatPoint(LfdprVisibilityPointGpu point, LfdprVisibilityRecordGpu r, LfdprVisibilityDrawGpu draw,
+                     vec2 viewSize, out LfdSplatPoint sp)
+{
+    LfdLinePoint v0, v1, v2, ca, cb, cc, cd;
+    if (!projectSplat(point, r, draw, viewSize, v0, v1, v2, ca, cb, cc, cd))
+        return false;
+    sp.cellX0 = vec4(ca.x0, cb.x0, cc.x0, cd.x0);
+    sp.cellXPer = vec4(ca.xPerOffset, cb.xPerOffset, cc.xPerOffset, cd.xPerOffset);
+    sp.cellY = vec4(ca.y, cb.y, cc.y, cd.y);
+    sp.triX0 = vec3(v0.x0, v1.x0, v2.x0);
+    sp.triXPer = vec3(v0.xPerOffset, v1.xPerOffset, v2.xPerOffset);
+    // The triangle's bounds are those of its vertices on the sub-pixel grid, where
+    // lfdViewTriangle puts them for the coverage test.
+    sp.triY = vec3(lfdSnapToSubpixels(v0.y), lfdSnapToSubpixels(v1.y), lfdSnapToSubpixels(v2.y));
+    sp.invW = vec3(v0.invW, v1.invW, v2.invW);
+    sp.rows = pixelSpan(sp.cellY, sp.triY, int(viewSize.y));
+    return sp.rows.x <= sp.rows.y;
+}
+
+#ifdef LFDPR_WORK_GPU
+#define LFDPR_CENTRE_TEST 1 // the centre test before setup (above)
+#endif
+
+// Whether cellCentres decides `box` (columns x..z, rows y..w): on the GPU work shape, boxes
+// of up to 32 pixels; otherwise splatIntoView tests every centre against the cell itself.
+bool centresDecided(ivec4 box)
+{
+#ifdef LFDPR_CENTRE_TEST
+    return (box.z - box.x + 1) * (box.w - box.y + 1) <= 32;
+#else
+    return false;
+#endif
+}
+
+// Pixel centres of `box` inside the cell's window quad (a, b, c, d), as bits
+// (y - box.y) * columns + (x - box.x) (a box centresDecided decides).
+uint cellCentres(ivec4 box, vec2 a, vec2 b, vec2 c, vec2 d)
+{
+    int columns = box.z - box.x + 1;
+    uint bits = 0u;
+    for (int y = box.y; y <= box.w; ++y)
+        for (int x = box.x; x <= box.z; ++x)
+            if (lfdInsideQuad(a, b, c, d, vec2(x, y) + 0.5))
+                bits |= 1u << uint((y - box.y) * columns + (x - box.x));
+    return bits;
+}
+
+// The word write of one covered sample (step 6), with the work counters' atomics.
+void writeSample(uint pixel, uint key, uint record, uint index)
+{
+#if defined(LFDPR_INT64)
+    // A plain read first: a word already nearer (or as near with a lower record) makes the
+    // atomic a no-op, so it is skipped - most of them where depth complexity is high. A
+    // stale read is never nearer than the word (words only decrease), so nothing is
+    // skipped that would have won.
+    uint64_t word = (uint64_t(key) << 32) | uint64_t(record);
+    if (word < viewWords[pixel]) {
+        LFDPR_COUNT(atomics, 1u);
+#ifdef LFDPR_COUNT_WORK
+        LFDPR_COUNT(lowered, atomicMin(viewWords[pixel], word) > word ? 1u : 0u);
+#else
+        atomicMin(viewWords[pixel], word);
+#endif
+    }
+#elif defined(LFDPR_INDEX_PASS)
+    if (viewDepth[pixel] == key)
+        atomicMin(viewIndex[pixel], record);
+#else
+    if (key < viewDepth[pixel]) {
+        LFDPR_COUNT(atomics, 1u);
+        if (key < atomicMin(viewDepth[pixel], key)) {
+            LFDPR_COUNT(lowered, 1u);
+            viewIndex[pixel] = record;
+        }
+    }
+    LFDPR_AFTER_INDEX_WRITE(index, pixel, record);
+#endif
+}
+
 // Splats the cell (window quad a, b, c, d) into one view: every pixel centre in `box`
-// (columns x..z, rows y..w) inside the quad that the view's triangle t owns, depth-tested
-// at t's plane within keyRange (near, far). `record` is what the view words hold; `index`
-// the point's (the test hook's races key on it). Returns whether any pixel was written.
-bool splatIntoView(uint view, uint viewCount, int viewWidth, ivec4 box, vec2 a, vec2 b, vec2 c, vec2 d,
-                   LfdViewTriangle t, uvec2 keyRange, uint record, uint index)
+// (columns x..z, rows y..w) inside the quad (bits of `centres` where `decided`, cellCentres)
+// that the view's triangle t owns, depth-tested at t's plane within keyRange (near, far).
+// `record` is what the view words hold; `index` the point's (the test hook's races key on
+// it). Returns whether any pixel was written.
+bool splatIntoView(uint view, uint viewCount, int viewWidth, ivec4 box, bool decided, uint centres, vec2 a,
+                   vec2 b, vec2 c, vec2 d, LfdViewTriangle t, uvec2 keyRange, uint record, uint index)
 {
     bool wrote = false;
+    int columns = box.z - box.x + 1;
     for (int y = box.y; y <= box.w; ++y) {
         for (int x = box.x; x <= box.z; ++x) {
             vec2 p = vec2(x, y) + 0.5;
-            if (!lfdInsideQuad(a, b, c, d, p))
+            bool inCell = decided ? (centres & (1u << uint((y - box.y) * columns + (x - box.x)))) != 0u
+                                  : lfdInsideQuad(a, b, c, d, p);
+            if (!inCell)
                 continue;
             vec3 edges = lfdEdgeValues(t, p);
             if (!lfdOwnsSample(t, edges))
@@ -175,27 +287,102 @@ bool splatIntoView(uint view, uint viewCount, int viewWidth, ivec4 box, vec2 a, 
             uint key = lfdPlaneDepthKey(t, edges);
             if (key < keyRange.x || key > keyRange.y)
                 continue; // clipped by the near or far plane
-            uint pixel = lfdViewWord(view, uint(x), uint(y), uint(viewWidth), viewCount);
             wrote = true;
-#if defined(LFDPR_INT64)
-            // A plain read first: a word already nearer (or as near with a lower
-            // record) makes the atomic a no-op, so it is skipped - most of them where
-            // depth complexity is high. A stale read is never nearer than the word
-            // (words only decrease), so nothing is skipped that would have won.
-            uint64_t word = (uint64_t(key) << 32) | uint64_t(record);
-            if (word < viewWords[pixel])
-                atomicMin(viewWords[pixel], word);
-#elif defined(LFDPR_INDEX_PASS)
-            if (viewDepth[pixel] == key)
-                atomicMin(viewIndex[pixel], record);
-#else
-            if (key < viewDepth[pixel] && key < atomicMin(viewDepth[pixel], key))
-                viewIndex[pixel] = record;
-            LFDPR_AFTER_INDEX_WRITE(index, pixel, record);
-#endif
+            LFDPR_COUNT(samples, 1u);
+            writeSample(lfdViewWord(view, uint(x), uint(y), uint(viewWidth), viewCount), key, record, index);
         }
     }
     return wrote;
+}
+
+// Steps 4-6 of main for one view: the culls before any per-view setup (the cell's columns,
+// those it shares with the triangle, its pixel centres), then the triangle's setup, facing
+// and the splat. Returns the columns written (x > y: none).
+ivec2 splatView(uint view, uint viewCount, LfdSplatPoint sp, ivec2 viewPixels, bool doubleSided, bool mirrored,
+                uvec2 keyRange, uint record, uint index)
+{
+    // Step 4: this view's window x of the cell's corners; no pixel centre column, no setup.
+    float e = lfdViewOffset(view);
+    vec4 cellX = sp.cellX0 + e * sp.cellXPer;
+#ifdef LFDPR_CENTRE_TEST // (llvmpipe: one test below rather than two masked branches)
+    if (!cellSpansCentre(cellX, viewPixels.x)) {
+        LFDPR_COUNT(culled, 1u);
+        return ivec2(0, -1);
+    }
+#endif
+    vec3 triX = sp.triX0 + e * sp.triXPer;
+    triX = vec3(lfdSnapToSubpixels(triX.x), lfdSnapToSubpixels(triX.y), lfdSnapToSubpixels(triX.z));
+    ivec2 columns = pixelSpan(cellX, triX, viewPixels.x);
+    ivec4 box = ivec4(columns.x, sp.rows.x, columns.y, sp.rows.y);
+    vec2 a = vec2(cellX.x, sp.cellY.x), b = vec2(cellX.y, sp.cellY.y);
+    vec2 c = vec2(cellX.z, sp.cellY.z), d = vec2(cellX.w, sp.cellY.w);
+    if (columns.x > columns.y) {
+        LFDPR_COUNT(culled, 1u);
+        return ivec2(0, -1);
+    }
+    bool decided = centresDecided(box);
+    uint centres = decided ? cellCentres(box, a, b, c, d) : 0u;
+    if (decided && centres == 0u) {
+        LFDPR_COUNT(culled, 1u);
+        LFDPR_COUNT(culledCentres, 1u);
+        return ivec2(0, -1);
+    }
+
+    // Step 5: the triangle in this view; facing as the rasteriser decides it.
+    LfdViewTriangle t = lfdViewTriangleSnapped(vec2(triX.x, sp.triY.x), vec2(triX.y, sp.triY.y),
+                                               vec2(triX.z, sp.triY.z), sp.invW);
+    if (t.orientation == 0.0 || (!doubleSided && (t.orientation > 0.0) == mirrored))
+        return ivec2(0, -1); // degenerate, or a single-sided back face
+
+    // Step 6: covered pixels, their plane depth, the atomic depth test.
+    bool wrote =
+        splatIntoView(view, viewCount, viewPixels.x, box, decided, centres, a, b, c, d, t, keyRange, record, index);
+    return wrote ? columns : ivec2(0, -1);
+}
+
+// One invocation's work (main): the point `index` into the views of its slice.
+void splatPoint(uint index, uint slice, uint viewCount)
+{
+    // Step 1: the point, its triangle and the cell's corners in the triangle plane.
+    LfdprVisibilityPointGpu point = points[index];
+    uint record = point.record; // what the view words hold
+    LfdprVisibilityRecordGpu r = records[record];
+    LfdprVisibilityDrawGpu draw = draws[r.draw];
+    bool doubleSided = (materials[draw.material].flags & LFD_MATERIAL_DOUBLE_SIDED) != 0u;
+    bool mirrored = determinant(mat3(nodes[draw.node].sceneFromObject)) < 0.0;
+
+    // This invocation's views: one slice, inside one view chunk (LFDPR_SPLAT_VIEWS divides
+    // LFDPR_VIEW_CHUNK), whose marks it gathers.
+    uint sliceFirst = slice * uint(LFDPR_SPLAT_VIEWS);
+    uint firstView = sliceFirst - sliceFirst % uint(LFDPR_VIEW_CHUNK); // the chunk's first view
+    uint endView = min(sliceFirst + uint(LFDPR_SPLAT_VIEWS), viewCount);
+
+    // Steps 2-3: project once (camera-line coherence); the rows are the same in every view.
+    // Geometry outside the shared depth range is clipped in every view alike.
+    vec2 viewSize = u_lfd.viewSize.xy;
+    LfdSplatPoint sp;
+    if (!setupSplatPoint(point, r, draw, viewSize, sp)) {
+        LFDPR_COUNT(culled, endView - sliceFirst);
+        return;
+    }
+    ivec2 viewPixels = ivec2(viewSize);
+    uvec2 keyRange = uvec2(lfdDepthKey(1.0 / u_line.wRange.x), lfdDepthKey(1.0 / u_line.wRange.y));
+
+    int markLo = viewPixels.x, markHi = -1; // tile columns written in this view chunk
+    uvec2 markViews = uvec2(0u);
+    for (uint view = sliceFirst; view < endView; ++view) {
+        ivec2 columns = splatView(view, viewCount, sp, viewPixels, doubleSided, mirrored, keyRange, record, index);
+#ifndef LFDPR_INDEX_PASS
+        // Step 7: gather this view's tiles for the chunk's marks.
+        if (columns.x <= columns.y)
+            gatherMarks(view - firstView, columns.x, columns.y, markLo, markHi, markViews);
+#endif
+    }
+#ifndef LFDPR_INDEX_PASS
+    uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
+    lfdMarkChunk(draw.group, firstView / uint(LFDPR_VIEW_CHUNK), markLo, markHi,
+                 uvec2(sp.rows) / uint(LFDPR_SHADE_TILE), markViews, tiles, lfdShadeEntryCount(tiles, viewCount));
+#endif
 }
 
 void main()
@@ -207,75 +394,9 @@ void main()
     uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     uint slice = workgroup % slices;
     uint index = (workgroup / slices) * uint(LFDPR_GROUP_SIZE) + gl_LocalInvocationIndex;
-    if (index >= min(vis.pointCount, u_lfd.counts.y))
-        return;
-
-    // Step 1: the point, its triangle and the cell's corners in the triangle plane.
-    LfdprVisibilityPointGpu point = points[index];
-    uint record = point.record; // what the view words hold
-    LfdprVisibilityRecordGpu r = records[record];
-    LfdprVisibilityDrawGpu draw = draws[r.draw];
-    bool doubleSided = (materials[draw.material].flags & LFD_MATERIAL_DOUBLE_SIDED) != 0u;
-    bool mirrored = determinant(mat3(nodes[draw.node].sceneFromObject)) < 0.0;
-
-    // Step 2: project once (camera-line coherence). Geometry outside the shared depth
-    // range is clipped in every view alike.
-    vec2 viewSize = u_lfd.viewSize.xy;
-    LfdLinePoint v0, v1, v2, ca, cb, cc, cd;
-    if (!projectSplat(point, r, draw, viewSize, v0, v1, v2, ca, cb, cc, cd))
-        return; // behind a camera plane (the near plane clips such triangles)
-
-    // Step 3: the rows the splat covers are the same in every view.
-    // The triangle's bounds are those of its vertices on the sub-pixel grid, where
-    // lfdViewTriangle puts them for the coverage test.
-    ivec2 viewPixels = ivec2(viewSize);
-    vec3 snappedY = vec3(lfdSnapToSubpixels(v0.y), lfdSnapToSubpixels(v1.y), lfdSnapToSubpixels(v2.y));
-    ivec2 rows = pixelSpan(vec4(ca.y, cb.y, cc.y, cd.y), snappedY, viewPixels.y);
-    int rowLo = rows.x, rowHi = rows.y;
-    if (rowLo > rowHi)
-        return;
-    uint nearKey = lfdDepthKey(1.0 / u_line.wRange.x), farKey = lfdDepthKey(1.0 / u_line.wRange.y);
-    vec3 invW = vec3(v0.invW, v1.invW, v2.invW);
-
-    // This invocation's views: one slice, inside one view chunk (LFDPR_SPLAT_VIEWS divides
-    // LFDPR_VIEW_CHUNK), whose marks it gathers.
-    uint sliceFirst = slice * uint(LFDPR_SPLAT_VIEWS);
-    uint firstView = sliceFirst - sliceFirst % uint(LFDPR_VIEW_CHUNK); // the chunk's first view
-    {
-        uint endView = min(sliceFirst + uint(LFDPR_SPLAT_VIEWS), viewCount);
-        int markLo = viewPixels.x, markHi = -1; // tile columns written in this view chunk
-        uvec2 markViews = uvec2(0u);
-        for (uint view = sliceFirst; view < endView; ++view) {
-            // Step 4: this view's window positions of the cell; the columns it covers.
-            float e = lfdViewOffset(view);
-            vec2 a = lfdWindowInView(ca, e), b = lfdWindowInView(cb, e);
-            vec2 c = lfdWindowInView(cc, e), d = lfdWindowInView(cd, e);
-            vec2 s0 = lfdSnapToSubpixels(lfdWindowInView(v0, e)), s1 = lfdSnapToSubpixels(lfdWindowInView(v1, e));
-            vec2 s2 = lfdSnapToSubpixels(lfdWindowInView(v2, e));
-            ivec2 columns = pixelSpan(vec4(a.x, b.x, c.x, d.x), vec3(s0.x, s1.x, s2.x), viewPixels.x);
-            int colLo = columns.x, colHi = columns.y;
-            if (colLo > colHi)
-                continue;
-
-            // Step 5: facing as the rasteriser decides it.
-            LfdViewTriangle t = lfdViewTriangle(s0, s1, s2, invW);
-            if (t.orientation == 0.0 || (!doubleSided && (t.orientation > 0.0) == mirrored))
-                continue; // degenerate, or a single-sided back face
-
-            // Step 6: covered pixels, their plane depth, the atomic depth test.
-            bool wrote = splatIntoView(view, viewCount, viewPixels.x, ivec4(colLo, rowLo, colHi, rowHi), a, b, c, d, t,
-                                       uvec2(nearKey, farKey), record, index);
-
-#ifndef LFDPR_INDEX_PASS
-            // Step 7: gather this view's tiles for the chunk's marks.
-            if (wrote)
-                gatherMarks(view - firstView, colLo, colHi, markLo, markHi, markViews);
+    if (index < min(vis.pointCount, u_lfd.counts.y))
+        splatPoint(index, slice, viewCount);
+#if defined(LFDPR_COUNT_WORK) && !defined(LFDPR_INDEX_PASS)
+    lfdWorkFlush(); // uniform control flow: every invocation of the workgroup gets here
 #endif
-        }
-#ifndef LFDPR_INDEX_PASS
-        uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
-        lfdMarkChunk(draw.group, firstView / uint(LFDPR_VIEW_CHUNK), markLo, markHi,
-                     uvec2(rowLo, rowHi) / uint(LFDPR_SHADE_TILE), markViews, tiles, lfdShadeEntryCount(tiles, viewCount));
-#endif
-    }
 }

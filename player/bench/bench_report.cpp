@@ -1,5 +1,7 @@
 #include "bench_report.h"
 
+#include "bench_work.h"
+
 #include "frame_stages.h"
 #include "atomic_file.h"
 #include "frame_stats.h"
@@ -202,6 +204,8 @@ std::string benchTable(const BenchReport& report)
       << (vsMvr ? " (mvr total / lfdpr total; > 1: lfdpr is faster)" : "") << "\n";
     s << "lfdpr/mvr-layered: "
       << (vsLayered ? format("%.2fx", *vsLayered) : "n/a (lfdpr or mvr-layered not run)") << "\n";
+    if (const std::string work = benchWorkTable(report); !work.empty())
+        s << "\n" << work;
     return s.str();
 }
 
@@ -277,7 +281,8 @@ std::string benchCsv(const BenchReport& report)
          "total_min_ms,total_max_ms,points,speedup_vs_mvr,speedup_vs_mvr_layered,eia_rmse,eia_psnr,eia_ssim,"
          "view_rmse,view_psnr,view_ssim,views_rmse,views_psnr,views_ssim,eia_flip,view_flip,resolve_ms,"
          "wall_ms_per_frame,dispatches_per_frame,draws_per_frame,barriers_per_frame,waits_per_frame,"
-         "frame_gpu_bytes\n";
+         "frame_gpu_bytes"
+      << benchWorkCsvHeader() << "\n";
     auto opt = [](const std::optional<double>& v) { return v ? csvNumber(*v) : std::string(); };
     for (const RendererResult& r : report.results) {
         s << r.name << ',' << (r.timed ? 1 : 0) << ',' << (r.timed ? report.options.frames : 0u);
@@ -302,7 +307,7 @@ std::string benchCsv(const BenchReport& report)
               << csvNumber(r.callsPerFrame.syncs) << ',' << r.frameGpuBytes;
         else
             s << ",,,,,,";
-        s << '\n';
+        s << benchWorkCsvRow(r) << '\n';
     }
     return s.str();
 }

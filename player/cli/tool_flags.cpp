@@ -41,6 +41,9 @@ void addLfdprFlags(CLI::App& app, SharedFlags& flags)
                  "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
     app.add_flag("--no-pixel-culling", flags.noPixelCulling,
                  "lfdpr: sample every triangle, also those that hold no view pixel centre");
+    app.add_flag("--lfdpr-work-counters", flags.lfdprWorkCounters,
+                 "lfdpr visibility pipeline: count the splat's and the shading's work on the GPU (work_* stats: "
+                 "point-views culled, samples, atomics, words lowered, shadings; docs/player/8k-panels.md)");
     app.add_option("--lfdpr-cell-scale", flags.lfdprCellScale,
                    "lfdpr visibility pipeline: point cells of N x N sampling spacings (1 = the paper's density; "
                    "the views are the same for every N)")
@@ -240,6 +243,7 @@ void applySharedFlags(const SharedFlags& flags, RendererOptions& options)
     options.lfdpr.multiviewMipmapping = flags.mvMipmapping;
     options.lfdpr.pixelCentreCulling = flags.pixelCulling;
     options.lfdpr.cellScale = flags.lfdprCellScale;
+    options.lfdpr.countWork = flags.lfdprWorkCounters;
     options.lfdpr.atomics = flags.atomics;
     options.lfdpr.pipeline = flags.pipeline;
 }

@@ -46,6 +46,7 @@ struct SharedFlags {
     // lfdpr's switches (the lfdpr-* variants of the registry start from them).
     bool lfdSampling = true, textureSplatting = true, mvMipmapping = true, pixelCulling = true;
     uint32_t lfdprCellScale = LfdprOptions{}.cellScale;     // --lfdpr-cell-scale
+    bool lfdprWorkCounters = false;                         // --lfdpr-work-counters
     LfdprOptions::Atomics atomics = LfdprOptions{}.atomics;  // --atomics
     LfdprOptions::Pipeline pipeline = LfdprOptions{}.pipeline; // --lfdpr-pipeline
     uint32_t aniso = 1;                                     // --aniso: 1, 2, 4, 8 or 16

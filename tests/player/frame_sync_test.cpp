@@ -114,6 +114,22 @@ TEST_F(FrameSync, RepairsOnTheThirtyTwoBitPathDoNotWait)
     EXPECT_EQ(calls.syncs, 0u) << describe(calls);
 }
 
+TEST_F(FrameSync, LfdprWorkCountersAddNoCallsAndNoWaits)
+{
+    // The work counters (LfdprOptions::countWork) come back with the point count through the
+    // same read-back: a frame that counts makes the same dispatches, barriers and (no) waits.
+    const Scene scene = cubeAndSphereScene();
+    player::RendererOptions off, on;
+    off.lfdpr.atomics = on.lfdpr.atomics = player::LfdprOptions::Atomics::TwoPass32;
+    on.lfdpr.countWork = true;
+    const gl::GlCallCounts plain = steadyFrameCalls("lfdpr", scene, 6, off);
+    const gl::GlCallCounts counted = steadyFrameCalls("lfdpr", scene, 6, on);
+    EXPECT_EQ(plain.dispatches, counted.dispatches) << describe(plain) << " / " << describe(counted);
+    EXPECT_EQ(plain.barriers, counted.barriers);
+    EXPECT_EQ(plain.draws, counted.draws);
+    EXPECT_EQ(counted.syncs, 0u) << describe(counted);
+}
+
 TEST_F(FrameSync, LfdprDispatchesAndBarriersDoNotGrowWithViews)
 {
     const Scene scene = cubeAndSphereScene();

@@ -667,6 +667,12 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_visibility_repair_dispatch.comp", "comp", {"LFDPR_WORK_GPU 1"}},
         {"lfdpr_visibility_clear.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
         {"lfdpr_visibility_clear.comp", "comp", {"LFDPR_WORK_GPU 1"}},
+        // The work counters (lfdpr_work_counters.glsl, --lfdpr-work-counters) on every path.
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_COUNT_WORK 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_COUNT_WORK 1", "LFDPR_INDEX_PASS 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_COUNT_WORK 1", "LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_COUNT_WORK 1", "LFD_TEXTURE_MASK 0x1u"}},
+        {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_COUNT_WORK 1", "LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
     };
     const std::filesystem::path dir = testOutputDir("shader_variants");
     size_t checked = 0;

@@ -55,6 +55,7 @@ const std::map<std::string, std::string>& sampleValues()
         {"--no-texture-splatting", ""},
         {"--no-mv-mipmapping", ""},
         {"--no-pixel-culling", ""},
+        {"--lfdpr-work-counters", ""},
         {"--lfdpr-cell-scale", "1"},
         {"--atomics", "32"},
         {"--lfdpr-pipeline", "paper"},

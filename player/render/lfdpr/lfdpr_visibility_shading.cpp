@@ -47,7 +47,8 @@ std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vect
     return groups;
 }
 
-LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces)
+LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces,
+                                               bool countWork)
     : int64_(int64), hardwareAniso_(hardwareAniso), defines_(atomicsDefines(int64)), trilinear_(gl::createSampler())
 {
     // As GpuScene's textures without anisotropy: trilinear, glTF's default REPEAT.
@@ -57,6 +58,8 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool ha
     glSamplerParameteri(trilinear_, GL_TEXTURE_WRAP_T, GL_REPEAT);
     if (gpuWork)
         defines_.emplace_back("LFDPR_WORK_GPU 1");
+    if (countWork) // the splat's and the shading's work counters (lfdpr_work_counters.glsl)
+        defines_.emplace_back("LFDPR_COUNT_WORK 1");
     auto build = [&](const char* shader, std::vector<std::string> extra) {
         std::vector<std::string> defines = defines_;
         defines.insert(defines.end(), extra.begin(), extra.end());

@@ -36,7 +36,10 @@ public:
     // hardwareAniso: LfdprOptions::AnisoFilter::Hardware (the shading samples through the
     // textures' own state; else the trilinear sampler and the shader's taps).
     // testIndexRaces: LfdprOptions::testIndexRaces (32-bit path only).
-    LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces = 0);
+    // countWork: LfdprOptions::countWork (LFDPR_COUNT_WORK: the splat and the shading count
+    // their work into the LfdprVisibilityCountersGpu block, lfdpr_work_counters.glsl).
+    LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces = 0,
+                           bool countWork = false);
     ~LfdprVisibilityShading();
     LfdprVisibilityShading(const LfdprVisibilityShading&) = delete;
     LfdprVisibilityShading& operator=(const LfdprVisibilityShading&) = delete;

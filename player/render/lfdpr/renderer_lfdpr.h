@@ -104,6 +104,11 @@ struct LfdprOptions {
     // its index where it lost the depth test, as a lost race would, so tests can exercise
     // the index repair deterministically. Never set outside tests.
     uint32_t testIndexRaces = 0;
+    // Visibility pipeline: the splat and the shading count their work on the GPU (views
+    // culled before setup, samples, atomics, words lowered, shadings; docs/player/8k-panels.md
+    // "Work counters"), read back with the point count (no added GL call or wait). Off by
+    // default: the counts cost a few adds per sample and a reduction per workgroup.
+    bool countWork = false;
 };
 
 // Introspection for tests and the benchmark: values of the most recent frame whose counts
@@ -127,6 +132,9 @@ struct LfdprFrameInfo {
     uint64_t repairs = 0;             // visibility pipeline, 32-bit: pixels whose index was repaired
     uint64_t viewBufferBytes = 0;
     uint64_t sizedPoints = 0;         // visibility pipeline: the load-time count-only run's points
+    // Visibility pipeline with LfdprOptions::countWork (else 0): the GPU's work counters
+    // (LfdprVisibilityCountersGpu work*: docs/player/8k-panels.md "Work counters").
+    uint64_t workCulled = 0, workCulledCentres = 0, workSamples = 0, workAtomics = 0, workLowered = 0, workShadings = 0;
 };
 
 class LfdprRenderer : public Renderer {

@@ -57,7 +57,7 @@ public:
         : options_(options), k_(LfdprConstants::get()), gpuWork_(lfdprGpuWorkShape(options.workShape)),
           pointGeneration_(options.pixelCentreCulling, options.cellScale, gpuWork_),
           shading_(lfdprUseInt64(options.atomics), gpuWork_, lfdprHardwareAniso(options.anisoFilter),
-                   options.testIndexRaces)
+                   options.testIndexRaces, options.countWork)
     {
         GLint64 maxBlockBytes = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
@@ -143,8 +143,6 @@ public:
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
         pointGeneration_.run(scene);
-        readback_.begin(tag);
-        readback_.copy(counters_, 0, 0, sizeof(LfdprVisibilityCountersGpu));
         timer.end();
         if (frame.pointSampling) {
             uniforms_.upload(frame);
@@ -161,6 +159,9 @@ public:
         timer.begin(stage::kResolve);
         shading_.shade(scene, targets);
         timer.end();
+        // The counters once the splat and the shading have added their work (countWork).
+        readback_.begin(tag);
+        readback_.copy(counters_, 0, 0, sizeof(LfdprVisibilityCountersGpu));
         if (!shading_.int64()) {
             readback_.copy(shading_.repairBuffer(), LfdprVisibilityShading::repairCountOffset(), kRepairsOffset,
                            sizeof(uint32_t));
@@ -193,6 +194,15 @@ public:
     }
 
     std::vector<std::pair<std::string, double>> extraStats() const override
+    {
+        std::vector<std::pair<std::string, double>> stats = baseStats();
+        if (options_.countWork)
+            appendWorkStats(stats);
+        return stats;
+    }
+
+private:
+    std::vector<std::pair<std::string, double>> baseStats() const
     {
         return {
             {"points", double(info_.points)},
@@ -229,7 +239,20 @@ public:
         };
     }
 
-private:
+    // The GPU's work counters of the last counted frame (LfdprOptions::countWork;
+    // docs/player/8k-panels.md "Work counters").
+    void appendWorkStats(std::vector<std::pair<std::string, double>>& stats) const
+    {
+        const double pointViews = double(info_.pointsStored) * double(splatViews_);
+        stats.insert(stats.end(), {{"work_point_views_culled", double(info_.workCulled)},
+                                   {"work_point_views_culled_by_centres", double(info_.workCulledCentres)},
+                                   {"work_point_view_setups", pointViews - double(info_.workCulled)},
+                                   {"work_samples", double(info_.workSamples)},
+                                   {"work_atomics", double(info_.workAtomics)},
+                                   {"work_words_lowered", double(info_.workLowered)},
+                                   {"work_shadings", double(info_.workShadings)}});
+    }
+
     // The point buffer sized for a scene's first frame (LfdprOptions::initialPointCapacity
     // 0): point generation runs once with capacity 0 - it stores nothing but counts every
     // point, by the same rule as a frame - and the count is read back, waiting: the one
@@ -281,6 +304,12 @@ private:
         trianglesCoarsened_ = c.coarsenedCount;
         info_.trianglesLarge = c.largeCount;
         info_.repairs = shading_.int64() ? 0 : slot.repairs;
+        info_.workCulled = c.workCulled;
+        info_.workCulledCentres = c.workCulledCentres;
+        info_.workSamples = c.workSamples;
+        info_.workAtomics = c.workAtomics;
+        info_.workLowered = c.workLowered;
+        info_.workShadings = c.workShadings;
         info_.pointCapacity = capacity;
         info_.overflowed = c.pointCount > capacity;
         if (!info_.overflowed)
