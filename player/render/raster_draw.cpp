@@ -1,6 +1,8 @@
 #include "raster_draw.h"
 
+#include "frame_stages.h"
 #include "gpu_scene.h"
+#include "gpu_timer.h"
 #include "scene_bindings.h"
 #include "shader_library.h"
 #include "view_targets.h"
@@ -83,6 +85,17 @@ void RasterDraw::countWork(const GpuScene& scene, const ViewTargets& targets)
 std::vector<std::pair<std::string, double>> RasterDraw::workStats() const
 {
     return {{"work_triangle_views", double(workTriangleViews_)}, {"work_bytes_cleared", double(workBytesCleared_)}};
+}
+
+void RasterRenderer::render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets, GpuTimer& timer)
+{
+    timer.begin(stage::kViewGeneration);
+    targets.clear(kBackground);
+    draw_.countWork(scene, targets);
+    draw_.beginFrame(scene, frame);
+    drawViews(scene, targets);
+    draw_.endFrame();
+    timer.end();
 }
 
 } // namespace lfd::player

@@ -32,6 +32,22 @@ private:
     uint64_t workTriangleViews_ = 0, workBytesCleared_ = 0;
 };
 
+// The raster renderers' frame: one "view_generation" stage that clears the targets
+// (colour and the depth array they draw with), counts the work, sets up the pass, lets the
+// renderer issue its draws (drawViews) and restores the state.
+class RasterRenderer : public Renderer {
+public:
+    explicit RasterRenderer(const char* vertexShader) : draw_(vertexShader) {}
+    bool drawsWithDepthTargets() const final { return true; }
+    void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets, GpuTimer& timer) final;
+    std::vector<std::pair<std::string, double>> extraStats() const final { return draw_.workStats(); }
+
+protected:
+    // Binds framebuffers and issues draw_.drawScene for every view.
+    virtual void drawViews(const GpuScene& scene, ViewTargets& targets) = 0;
+    RasterDraw draw_;
+};
+
 std::unique_ptr<Renderer> createMvrRenderer();
 std::unique_ptr<Renderer> createMvrLayeredRenderer();
 

@@ -2,9 +2,7 @@
 // (Unterguggenberger et al. 2020): one instanced draw per DrawItem with N instances, the
 // vertex shader writing gl_Layer = gl_InstanceID into the view texture array. Same
 // shading as mvr (shared fragment shader), so both give the same views.
-#include "frame_stages.h"
 #include "gl_context.h"
-#include "gpu_timer.h"
 #include "raster_draw.h"
 #include "view_targets.h"
 
@@ -39,33 +37,18 @@ const char* checkedVertexShader()
     return "mvr_layered.vert";
 }
 
-class MvrLayeredRenderer final : public Renderer {
+class MvrLayeredRenderer final : public RasterRenderer {
 public:
-    MvrLayeredRenderer() : draw_(checkedVertexShader()) {}
+    MvrLayeredRenderer() : RasterRenderer(checkedVertexShader()) {}
     std::string name() const override { return "mvr-layered"; }
-    bool drawsWithDepthTargets() const override { return true; }
 
-    void render(const GpuScene& scene, const FrameSetup& frame, ViewTargets& targets,
-                GpuTimer& timer) override
+private:
+    void drawViews(const GpuScene& scene, ViewTargets& targets) override
     {
-        timer.begin(stage::kViewGeneration);
-        targets.clear(kBackground);
-        draw_.countWork(scene, targets);
-        draw_.beginFrame(scene, frame);
         // All layers attached; each instance picks its layer in the vertex shader.
         glBindFramebuffer(GL_FRAMEBUFFER, targets.layeredFramebuffer());
         draw_.drawScene(scene, targets.viewCount());
-        draw_.endFrame();
-        timer.end();
     }
-
-    std::vector<std::pair<std::string, double>> extraStats() const override
-    {
-        return draw_.workStats();
-    }
-
-private:
-    RasterDraw draw_;
 };
 
 } // namespace
