@@ -17,6 +17,7 @@
 #include "lfd/display_profile.h"
 #include "lfd/framing.h"
 #include "lfd/scene.h"
+#include "parallel.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -144,7 +145,6 @@ TriangleStats triangleStats(const glm::vec3& p0, const glm::vec3& p1, const glm:
                             const std::vector<TextureDensity>& textures);
 
 // ---- texture_bake.cpp ------------------------------------------------------------
-class ThreadBudget; // parallel.h
 
 struct TextureBakeOptions {
     uint32_t maxSize = 16384;      // larger dimensions are reduced by powers of two

@@ -63,8 +63,8 @@ void writeDepfile(const std::filesystem::path& depfile, const std::filesystem::p
                   const std::vector<std::filesystem::path>& inputs)
 {
     try {
-        io::writeFileAtomically(depfile, depfileText(target, inputs));
-    } catch (const io::AtomicWriteError& e) {
+        writeFileAtomically(depfile, depfileText(target, inputs));
+    } catch (const AtomicWriteError& e) {
         throw BakeError(std::string("--depfile ") + e.what());
     }
 }

@@ -54,7 +54,7 @@ TEST(DepfileText, EscapesForMakeAndNinjaAndListsEachFileOnce)
 
 TEST(ProgressClock, IsDueOncePerIntervalAndNotAtTheStart)
 {
-    lfd::bake::ProgressClock clock(0.05);
+    lfd::ProgressClock clock(0.05);
     EXPECT_FALSE(clock.due()); // a fast stage prints nothing
     std::this_thread::sleep_for(std::chrono::milliseconds(60));
     EXPECT_TRUE(clock.due());

@@ -1,4 +1,4 @@
-// Atomic file replacement (player/io/atomic_file.h): the target holds the old file or the
+// Atomic file replacement (common/atomic_file.h): the target holds the old file or the
 // whole new one, and nothing is left beside it after a failure.
 #include "atomic_file.h"
 
@@ -40,8 +40,8 @@ std::string contents(const fs::path& path)
 TEST_F(AtomicFileTest, WritesAndReplacesLeavingOnlyTheTarget)
 {
     const fs::path target = dir_ / "stats.json";
-    lfd::io::writeFileAtomically(target, std::string_view("first"));
-    lfd::io::writeFileAtomically(target, std::string_view("second, longer"));
+    lfd::writeFileAtomically(target, std::string_view("first"));
+    lfd::writeFileAtomically(target, std::string_view("second, longer"));
     EXPECT_EQ(contents(target), "second, longer");
     EXPECT_EQ(entries(), 1u);
 }
@@ -49,9 +49,9 @@ TEST_F(AtomicFileTest, WritesAndReplacesLeavingOnlyTheTarget)
 TEST_F(AtomicFileTest, AThrowingWriterLeavesTheOldFileAndNoTemporary)
 {
     const fs::path target = dir_ / "clip.mp4";
-    lfd::io::writeFileAtomically(target, std::string_view("old"));
+    lfd::writeFileAtomically(target, std::string_view("old"));
     fs::path seen;
-    EXPECT_THROW(lfd::io::replaceFileAtomically(target,
+    EXPECT_THROW(lfd::replaceFileAtomically(target,
                                                 [&](const fs::path& temporary) {
                                                     seen = temporary;
                                                     std::ofstream(temporary) << "half";
@@ -67,9 +67,9 @@ TEST_F(AtomicFileTest, FailuresNameTheTargetInOneLine)
 {
     const fs::path missing = dir_ / "no_such_dir" / "out.csv";
     try {
-        lfd::io::writeFileAtomically(missing, std::string_view("x"));
+        lfd::writeFileAtomically(missing, std::string_view("x"));
         FAIL() << "writing into a missing directory must throw";
-    } catch (const lfd::io::AtomicWriteError& e) {
+    } catch (const lfd::AtomicWriteError& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find(missing.string()), std::string::npos) << what;
         EXPECT_EQ(what.find('\n'), std::string::npos) << what;
@@ -77,7 +77,7 @@ TEST_F(AtomicFileTest, FailuresNameTheTargetInOneLine)
     // A rename over a non-empty directory fails: the temporary goes too.
     const fs::path occupied = dir_ / "occupied";
     fs::create_directories(occupied / "inside");
-    EXPECT_THROW(lfd::io::writeFileAtomically(occupied, std::string_view("x")), lfd::io::AtomicWriteError);
+    EXPECT_THROW(lfd::writeFileAtomically(occupied, std::string_view("x")), lfd::AtomicWriteError);
     EXPECT_EQ(entries(), 1u);
 }
 

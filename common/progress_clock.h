@@ -4,7 +4,7 @@
 
 #include <chrono>
 
-namespace lfd::bake {
+namespace lfd {
 
 class ProgressClock {
 public:
@@ -30,4 +30,4 @@ private:
     Clock::time_point next_;
 };
 
-} // namespace lfd::bake
+} // namespace lfd

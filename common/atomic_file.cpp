@@ -7,18 +7,14 @@
 #include <string>
 #include <system_error>
 
+#include <fcntl.h>
 #include <unistd.h>
 
-namespace lfd::io {
+namespace lfd {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-[[noreturn]] void fail(const fs::path& target, const std::string& problem)
-{
-    throw AtomicWriteError("'" + target.string() + "': " + problem);
-}
 
 std::string lastError()
 {
@@ -42,15 +38,41 @@ void writeBytes(const fs::path& target, const fs::path& temporary, const void* d
 {
     const std::unique_ptr<FILE, FileCloser> out(std::fopen(temporary.c_str(), "wb"));
     if (!out)
-        fail(target, "cannot open for writing (" + lastError() + ")");
+        throw AtomicWriteError(target, "cannot open for writing (" + lastError() + ")");
     const bool written = size == 0 || std::fwrite(data, 1, size, out.get()) == size;
     if (!written || std::fflush(out.get()) != 0)
-        fail(target, "write failed (" + lastError() + ")");
+        throw AtomicWriteError(target, "write failed (" + lastError() + ")");
+}
+
+// Flushes the written temporary to stable storage (fsync reaches the file's data through
+// any descriptor of it).
+void syncFile(const fs::path& target, const fs::path& temporary)
+{
+    const int fd = ::open(temporary.c_str(), O_RDONLY);
+    const bool ok = fd >= 0 && ::fsync(fd) == 0;
+    const int savedErrno = errno;
+    if (fd >= 0)
+        ::close(fd);
+    if (!ok) {
+        errno = savedErrno;
+        throw AtomicWriteError(target, "cannot flush to disk (" + lastError() + ")");
+    }
+}
+
+// Makes the rename durable; best effort, a failure here cannot un-write the file.
+void syncDirectory(const fs::path& dir)
+{
+    const int fd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY);
+    if (fd >= 0) {
+        ::fsync(fd);
+        ::close(fd);
+    }
 }
 
 } // namespace
 
-void replaceFileAtomically(const fs::path& target, const std::function<void(const fs::path& temporary)>& writeTemporary)
+void replaceFileAtomically(const fs::path& target, const std::function<void(const fs::path& temporary)>& writeTemporary,
+                           const AtomicWriteOptions& options)
 {
     const fs::path temporary = temporaryBeside(target);
     auto removeTemporary = [&] {
@@ -59,6 +81,8 @@ void replaceFileAtomically(const fs::path& target, const std::function<void(cons
     };
     try {
         writeTemporary(temporary);
+        if (options.syncToDisk)
+            syncFile(target, temporary);
     } catch (...) {
         removeTemporary();
         throw;
@@ -67,8 +91,10 @@ void replaceFileAtomically(const fs::path& target, const std::function<void(cons
     fs::rename(temporary, target, ec);
     if (ec) {
         removeTemporary();
-        fail(target, "cannot move the written file into place: " + ec.message());
+        throw AtomicWriteError(target, "cannot move the written file into place: " + ec.message());
     }
+    if (options.syncToDisk)
+        syncDirectory(target.parent_path());
 }
 
 void writeFileAtomically(const fs::path& target, std::span<const uint8_t> bytes)
@@ -85,4 +111,4 @@ void writeFileAtomically(const fs::path& target, std::string_view text)
     });
 }
 
-} // namespace lfd::io
+} // namespace lfd

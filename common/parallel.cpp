@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-namespace lfd::bake {
+namespace lfd {
 
 unsigned resolveThreads(unsigned requested)
 {
@@ -90,4 +90,17 @@ void parallelFor(size_t count, ThreadBudget& threads, const std::function<void(s
         std::rethrow_exception(error);
 }
 
-} // namespace lfd::bake
+size_t bandCount(size_t count, size_t bandSize)
+{
+    bandSize = std::max<size_t>(bandSize, 1);
+    return (count + bandSize - 1) / bandSize;
+}
+
+void forEachBand(size_t count, size_t bandSize, const std::function<void(size_t index, size_t begin, size_t end)>& band)
+{
+    bandSize = std::max<size_t>(bandSize, 1);
+    parallelFor(bandCount(count, bandSize), 0,
+                [&](size_t i) { band(i, i * bandSize, std::min(count, (i + 1) * bandSize)); });
+}
+
+} // namespace lfd

@@ -1,10 +1,12 @@
-// The one way the bake stages use threads (issue 9, "Baker throughput").
+// The one way the project's CPU code uses threads (issue 9, "Baker throughput"; the
+// player's image work, issue 39).
 //
-// A pack must not depend on the thread count: baking with --threads 1, 2 or 16 gives the
-// same bytes. So every parallel stage has the same shape: it cuts its work into items
+// A result must not depend on the thread count: baking with --threads 1, 2 or 16 gives the
+// same pack bytes, and a 2-core CI machine computes the bench's error columns a 16-core
+// server does. So every parallel stage has the same shape: it cuts its work into items
 // whose results do not depend on each other (a mesh group, a range of triangles, a band
-// of texel rows, a texture), computes each item into its own slot, and the caller then
-// combines the slots in item order, exactly as a serial loop would have. Threads only
+// of texel or image rows, a texture), computes each item into its own slot, and the caller
+// then combines the slots in item order, exactly as a serial loop would have. Threads only
 // decide *when* an item is computed, never *what* it computes or where it lands.
 #pragma once
 
@@ -12,7 +14,7 @@
 #include <cstddef>
 #include <functional>
 
-namespace lfd::bake {
+namespace lfd {
 
 // Threads a stage uses when asked for `requested`: 0 means one per hardware thread
 // (std::thread::hardware_concurrency(), at least 1).
@@ -48,4 +50,12 @@ void parallelFor(size_t count, unsigned threads, const std::function<void(size_t
 // The same with helper threads taken from `threads` (and given back as they finish).
 void parallelFor(size_t count, ThreadBudget& threads, const std::function<void(size_t)>& body);
 
-} // namespace lfd::bake
+// The same loop over bands: [0, count) cut into bands of bandSize (the last one shorter),
+// band(index, begin, end) called once per band on one thread per hardware thread. Each band
+// writes only its own part of the output, or its own partial result the caller combines in
+// band order.
+void forEachBand(size_t count, size_t bandSize, const std::function<void(size_t index, size_t begin, size_t end)>& band);
+// The number of bands forEachBand cuts [0, count) into: ceil(count / bandSize).
+size_t bandCount(size_t count, size_t bandSize);
+
+} // namespace lfd

@@ -1,4 +1,4 @@
-// parallelFor and ThreadBudget (baker/parallel.h): every item runs once, the error is the
+// parallelFor and ThreadBudget (common/parallel.h): every item runs once, the error is the
 // one a serial loop stops at whatever the thread count, nested loops share one budget.
 #include "parallel.h"
 
@@ -11,7 +11,7 @@
 #include <thread>
 #include <vector>
 
-namespace lfd::bake {
+namespace lfd {
 namespace {
 
 TEST(Parallel, ResolveThreadsZeroMeansHardware)
@@ -102,4 +102,4 @@ TEST(Parallel, NestedLoopsNeverRunMoreThreadsThanTheBudget)
 }
 
 } // namespace
-} // namespace lfd::bake
+} // namespace lfd
