@@ -2,7 +2,8 @@
 // uses threads." The stages that use threads (tessellation, triangle statistics, mip
 // chains) give the same bytes for 1, 2, 3 and 8 threads, and `lfd-bake --threads N` writes
 // the same pack for every N, on scenes with several meshes and textures.
-#include "bake.h"
+#include "bake_log.h"
+#include "triangle_stats.h"
 #include "tessellation.h"
 
 #include "skip_or_fail.h"

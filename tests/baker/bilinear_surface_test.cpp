@@ -1,4 +1,4 @@
-// OpenSubdiv's bilinear surface of a welded mesh (baker/bilinear_surface.h), on which the
+// OpenSubdiv's bilinear surface of a welded mesh (baker/geometry/bilinear_surface.h), on which the
 // tessellation stage places new points: every face must evaluate to its own flat triangle
 // - checked numerically rather than trusted, also at a vertex of high valence, on a
 // non-manifold edge, in a double-sided pair and with two corners welded together - the

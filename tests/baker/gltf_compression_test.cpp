@@ -4,7 +4,10 @@
 // (the fixtures patched here) are refused with one line naming the primitive or buffer
 // view; the hand-made cases of tests/data/gltf cover the WebP fallback, KTX2 and quantised
 // normals.
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
+#include "texture_bake.h"
 #include "gltf_test_files.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,10 @@
-// glTF conformance (baker/gltf_load.h): one small file per defect class the baker must name
+// glTF conformance (baker/gltf/gltf_load.h): one small file per defect class the baker must name
 // with its JSON path (refused, or baked with a warning, by the specification's MUST or
 // SHOULD), and the valid files a lenient loader used to refuse. Each file is written here:
 // a unit triangle with unit normals and indices, broken in one place.
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
 #include "gltf_test_files.h"
 
 #include <gtest/gtest.h>

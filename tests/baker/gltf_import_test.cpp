@@ -1,7 +1,9 @@
 // glTF import stage: hand-made edge cases (tests/data/gltf, see make_cases.py), the
 // glTF files of Debian's assimp-testmodels (valid and deliberately broken ones) and the
 // third-party scenes in ../shared/scenes.
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
 
 #include "skip_or_fail.h"
 

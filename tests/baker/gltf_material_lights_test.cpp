@@ -2,7 +2,9 @@
 // (Khronos extension specifications): defaults, values, the texCoord override, required
 // and optional use, lights on nodes (instanced, unreachable, light-only nodes), and bad
 // JSON refused or warned about with its JSON path. Each case is a small file written here.
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
 #include "gltf_test_files.h"
 
 #include <gtest/gtest.h>

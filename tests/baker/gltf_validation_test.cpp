@@ -1,8 +1,10 @@
-// Strict glTF schema validation (baker/gltf_validation.h): one valid scene that uses every
+// Strict glTF schema validation (baker/gltf/gltf_validation.h): one valid scene that uses every
 // top-level property the baker reads, broken one property at a time. Each case imports the
 // broken file through importGltf and checks the outcome: refused with one line naming the
 // file and the JSON path, or baked with a warning naming the JSON path.
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
 #include "gltf_test_files.h"
 #include "gltf_validation.h"
 

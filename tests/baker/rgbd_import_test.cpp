@@ -1,4 +1,4 @@
-// RGB-D input (baker/rgbd_import.h, README "RGB-D input"): the relief's geometry against
+// RGB-D input (baker/import/rgbd_import.h, README "RGB-D input"): the relief's geometry against
 // hand-made depth maps (flat, a step, a ramp), the discontinuity and simplification
 // flags, side-by-side images against the two-file form, clear errors, and the generated
 // sample pair baked end to end within the tessellation bound.

@@ -1,7 +1,10 @@
 // lfd-make-samples: runs the built tool and checks the glTF it writes (structure,
 // textures, instancing, animation, winding, watertightness, occluded interior) and its
 // command-line errors.
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
+#include "tessellation.h"
 #include "lfd/scene_animation.h"
 #include "lfd/scene_pose.h"
 

@@ -1,6 +1,8 @@
 // Scene-bounds stage: node animation sampling, bounds over animation keys, per-mesh
 // world scale. Expected values are worked out by hand in the comments.
-#include "bake.h"
+#include "bake_log.h"
+#include "gltf_import.h"
+#include "scene_bounds.h"
 #include "lfd/scene_animation.h"
 
 #include "skip_or_fail.h"

@@ -3,7 +3,7 @@
 // keep every vertex; skinned meshes are left whole; instanced meshes are simplified for
 // their largest scale; the result is the same for any thread count; the tessellation
 // bound still holds after.
-#include "bake.h"
+#include "bake_log.h"
 #include "simplification.h"
 #include "tessellation.h"
 

@@ -2,7 +2,11 @@
 // import with their deformation (not in bind pose), the bounds contain every sampled pose,
 // the tessellation bound holds at sampled poses (split triangles carry interpolated,
 // renormalised influences and deltas), and an unsupported case warns by name.
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
+#include "scene_bounds.h"
+#include "tessellation.h"
 #include "gltf_deformation.h"
 
 #include "skinned_test_scene.h"

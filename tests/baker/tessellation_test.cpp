@@ -4,7 +4,8 @@
 // cut into ceil(length / bound) pieces; face patterns cover their face; new points lie on
 // OpenSubdiv's bilinear surface, and a mesh OpenSubdiv refuses is split all the same.
 
-#include "bake.h"
+#include "bake_log.h"
+#include "scene_bounds.h"
 #include "face_pattern.h"
 #include "tessellation.h"
 

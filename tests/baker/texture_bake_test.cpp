@@ -1,6 +1,8 @@
 // Texture stage: decoding and channel conversion, size reduction, the mip chain filter
 // (hand-worked values), errors, and peak memory of the bake (measured in a forked child).
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "texture_bake.h"
 #include "mip_chain.h"
 
 #include <OpenImageIO/imageio.h>

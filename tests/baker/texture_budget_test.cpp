@@ -1,6 +1,6 @@
 // resolvableTextureSize: textures are reduced only while their texels still outnumber
 // detail^2 x the finest view pixels that can land on every triangle using them.
-#include "bake.h"
+#include "texture_budget.h"
 
 #include <gtest/gtest.h>
 

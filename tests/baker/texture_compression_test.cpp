@@ -1,4 +1,4 @@
-// Block compression (baker/texture_compression.h): the format follows what the materials
+// Block compression (baker/texture/texture_compression.h): the format follows what the materials
 // read, each level's blocks decode close to the RGBA8 level they came from (BC4 and BC5
 // keep the channels they are for), and the bytes do not depend on the thread count.
 #include "texture_compression.h"

@@ -1,4 +1,4 @@
-// TexturePrefetcher (baker/texture_prefetch.h): textures come out in order and intact,
+// TexturePrefetcher (baker/texture/texture_prefetch.h): textures come out in order and intact,
 // are baked ahead on spare threads only, within the memory limit, and a failed bake is
 // reported when its texture is taken.
 #include "texture_prefetch.h"

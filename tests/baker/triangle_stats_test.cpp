@@ -1,7 +1,8 @@
 // Paper eqs. texelCount (n_tex = max_t A_ts * X_t * Y_t) and lfd_UVSize (size_uv =
 // A_ws / n_tex), plus A_ts / A_ws, on hand-worked triangles.
 
-#include "bake.h"
+#include "bake_log.h"
+#include "triangle_stats.h"
 
 #include <gtest/gtest.h>
 

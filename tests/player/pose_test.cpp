@@ -7,7 +7,11 @@
 #include "skinned_test_scene.h"
 #include "test_scenes.h"
 
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
+#include "triangle_stats.h"
+#include "texture_bake.h"
 #include "gpu_scene.h"
 #include "image_metrics.h"
 #include "scene_bindings.h"

@@ -1,5 +1,6 @@
-// .lfdpack version 1: write, verify and read. The on-disk layout is documented field by
-// field in formats/README.md; the constants live in pack_layout.h.
+// .lfdpack (format version 2, kFormatVersion; version 1 packs stay readable): write,
+// verify and read. The on-disk layout is documented field by field in formats/README.md;
+// the constants live in pack_layout.h.
 //
 // Every pack is untrusted input: readPack/verifyPack check magic, version, section table
 // bounds, alignment, checksums, counts, index ranges, references and finite floats

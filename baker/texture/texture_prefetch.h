@@ -9,8 +9,8 @@
 // held. Each texture is a function of its source alone, so the pack is the same bytes.
 #pragma once
 
-#include "bake.h"
 #include "parallel.h"
+#include "lfd/scene.h"
 
 #include <condition_variable>
 #include <cstdint>

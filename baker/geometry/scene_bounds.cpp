@@ -1,7 +1,9 @@
 // Scene-bounds stage: where the geometry can be, in scene space, over the rest pose and
 // the node animation. The player frames the scene (and the baker's tessellation bound
 // assumes that framing) from these bounds, so they must contain every animated pose.
-#include "bake.h"
+#include "scene_bounds.h"
+
+#include "bake_log.h"
 
 #include "lfd/scene_animation.h"
 #include "lfd/scene_pose.h"

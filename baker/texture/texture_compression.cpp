@@ -250,4 +250,12 @@ CompressedTextureReport compressTexture(Texture& texture, TextureFormat format, 
     return report;
 }
 
+CompressedTextureReport compressForUses(Texture& texture, uint32_t uses, TextureCompression compression,
+                                        ThreadBudget& threads)
+{
+    const TextureFormat format = compression == TextureCompression::None ? TextureFormat::Rgba8
+                                                                         : chooseTextureFormat(uses, opaqueAlpha(texture));
+    return compressTexture(texture, format, uses, threads);
+}
+
 } // namespace lfd::bake

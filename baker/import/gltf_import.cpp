@@ -6,7 +6,10 @@
 //
 // Memory: no image is decoded here. External image files are not even read past their
 // signature; bakeTexture decodes one texture at a time later.
-#include "bake.h"
+#include "gltf_import.h"
+
+#include "bake_log.h"
+#include "deformers.h"
 #include "gltf_accessors.h"
 #include "gltf_deformation.h"
 #include "gltf_lights.h"

@@ -1,7 +1,9 @@
 // Deformed instances: every node instance of a skinned or morphed mesh poses its own
 // vertices (the player writes them over the mesh's streams), so it needs a mesh no other
 // node shares and one contiguous vertex range (lfd::Deformer).
-#include "bake.h"
+#include "deformers.h"
+
+#include "bake_log.h"
 #include "vertex_streams_each.h"
 
 #include <algorithm>

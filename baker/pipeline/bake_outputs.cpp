@@ -1,7 +1,7 @@
 #include "bake_outputs.h"
 
 #include "atomic_file.h"
-#include "bake.h"
+#include "bake_log.h"
 
 #include <set>
 #include <string>

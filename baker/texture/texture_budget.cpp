@@ -1,6 +1,7 @@
 // Texture budget: drop mip levels finer than any view can resolve (README "Baking":
 // texture levels finer than any view can resolve are never sampled, so they are not stored).
-#include "bake.h"
+
+#include "texture_budget.h"
 
 #include <algorithm>
 #include <cmath>

@@ -41,9 +41,11 @@
 #include "tessellation.h"
 
 #include "bilinear_surface.h"
+#include "deformers.h"
 #include "face_pattern.h"
 #include "parallel.h"
 #include "progress_clock.h"
+#include "scene_bounds.h"
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 

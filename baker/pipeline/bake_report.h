@@ -1,7 +1,7 @@
 // The bake report (printed at the end of lfd-bake) and the --inspect summary.
 #pragma once
 
-#include "bake.h"
+#include "tessellation.h"
 #include "simplification.h"
 #include "lfd/pack.h"
 

@@ -10,7 +10,9 @@
 // area times the area scale of the slot's KHR_texture_transform (formats/README.md
 // "TSTA"); the stored areaTexture and texPerWorld stay in TEXCOORD_0's space.
 
-#include "bake.h"
+#include "triangle_stats.h"
+
+#include "bake_log.h"
 #include "parallel.h"
 
 #include <algorithm>

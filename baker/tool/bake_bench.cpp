@@ -13,7 +13,9 @@
 // texture_prefetch.h), and one generated texture would not show that.
 #include "bake_bench.h"
 
-#include "bake.h"
+#include "bake_log.h"
+#include "tessellation.h"
+#include "triangle_stats.h"
 #include "mip_chain.h"
 #include "parallel.h"
 #include "texture_compression.h"

@@ -8,7 +8,8 @@
 // tessellation: merge what is too small, then split what is too long.
 #pragma once
 
-#include "bake.h"
+#include "bake_log.h"
+#include "lfd/scene.h"
 
 #include <cstddef>
 #include <string>

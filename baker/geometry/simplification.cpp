@@ -8,7 +8,9 @@
 // thread count.
 #include "simplification.h"
 
+#include "deformers.h"
 #include "parallel.h"
+#include "scene_bounds.h"
 #include "vertex_streams_each.h"
 
 #include <meshoptimizer.h>

@@ -37,7 +37,7 @@
 
 #include "face_pattern.h"
 
-#include "bake.h"
+#include "bake_log.h"
 
 #include <opensubdiv/bfr/parameterization.h>
 #include <opensubdiv/bfr/tessellation.h>

@@ -14,7 +14,8 @@
 // model's 4% dielectric reflection).
 #pragma once
 
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
 
 #include <filesystem>
 

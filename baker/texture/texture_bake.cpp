@@ -13,7 +13,9 @@
 //   3. Each mip level is built from the level above inside the same buffer.
 // Peak is therefore the final buffer plus a few rows. OIIO's ImageBuf/ImageCache are not
 // used because they would hold (float) copies of the whole image.
-#include "bake.h"
+#include "texture_bake.h"
+
+#include "bake_log.h"
 #include "mip_chain.h"
 #include "texture_webp.h"
 

@@ -2,7 +2,7 @@
 // the glTF 2.0 specification; "MUST" rules are errors.
 #include "gltf_semantics.h"
 
-#include "bake.h"
+#include "bake_log.h"
 #include "gltf_accessors.h"
 #include "gltf_material_extensions.h"
 #include "gltf_resources.h"

@@ -59,4 +59,9 @@ std::vector<uint8_t> compressChain(const Texture& rgba8, TextureFormat format, u
 // replaced). RGBA8 leaves it as it is. `uses` picks BC4's channel and the PSNR channels.
 CompressedTextureReport compressTexture(Texture& texture, TextureFormat format, uint32_t uses, ThreadBudget& threads);
 
+// The bake's compression of one baked RGBA8 texture read as `uses`: kept RGBA8 with
+// TextureCompression::None, otherwise compressed into chooseTextureFormat's format.
+CompressedTextureReport compressForUses(Texture& texture, uint32_t uses, TextureCompression compression,
+                                        ThreadBudget& threads);
+
 } // namespace lfd::bake

@@ -5,7 +5,7 @@
 // BakeError instead of an out-of-bounds read.
 #pragma once
 
-#include "bake.h"
+#include "bake_log.h"
 
 #include <glm/glm.hpp>
 #include <tiny_gltf.h>
