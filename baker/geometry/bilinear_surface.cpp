@@ -8,7 +8,7 @@
 // sharpness and non-manifold handling of the smooth schemes is not involved: a face at a
 // vertex with 48 or more faces, on an edge shared by three faces, in a double-sided pair
 // or with two corners welded together is the same flat triangle (tested:
-// tests/baker/bilinear_surface_test.cpp, also under valgrind; README step 4).
+// tests/baker/geometry/bilinear_surface_test.cpp, also under valgrind; README step 4).
 //
 // Why the coordinate conversion: Bfr parameterizes a triangle of the bilinear scheme as
 // three quad sub-faces (bilinear_surface.h), while the face patterns are built in

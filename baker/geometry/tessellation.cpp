@@ -1152,7 +1152,7 @@ TessellationStats tessellateMeshes(Scene& scene, const std::vector<double>& maxE
 // pieces can exceed the bound in a pose although its original edges did not. The
 // stretch is measured again on the pieces (meshMaxWorldScale over their own edges) and
 // a mesh that stretches more than it was split for is split again, at most twice (the
-// measure converges as the pieces shrink; tests/baker/skin_bake_test.cpp checks the
+// measure converges as the pieces shrink; tests/baker/geometry/skin_bake_test.cpp checks the
 // bound at sampled poses).
 void refineDeformedMeshes(Scene& scene, double maxEdgeWorld, std::vector<float> scale, const Log& log,
                           unsigned threads, TessellationStats& stats)

@@ -1,5 +1,5 @@
 // What the glTF fuzz target runs on each input, shared with the regression test of its
-// findings (tests/baker/fuzz_regression_test.cpp): the CPU bake stages up to a
+// findings (tests/baker/import/fuzz_regression_test.cpp): the CPU bake stages up to a
 // tessellated, statistics-complete scene, as lfd-bake runs them (baker/pipeline/bake.cpp) -
 // import (Draco and meshopt decoding included), bounds, framing on the prototype display,
 // tessellation at the default 100-view-pixel edge bound, triangle statistics; embedded

@@ -1,6 +1,6 @@
 // Inputs the glTF fuzz target found (scripts/fuzz.sh), committed under
 // tests/data/fuzz/gltf and run through the same stages (tests/fuzz/gltf_fuzz_pipeline.h).
-#include "../fuzz/gltf_fuzz_pipeline.h"
+#include "../../fuzz/gltf_fuzz_pipeline.h"
 
 #include <gtest/gtest.h>
 
