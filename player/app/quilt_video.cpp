@@ -121,7 +121,7 @@ void encodeQuiltVideo(const fs::path& pattern, double fps, const fs::path& video
     if (ffmpeg.empty())
         throw VideoError("cannot write " + video.string() +
                          ": ffmpeg is missing (not on PATH; install the Debian package 'ffmpeg')");
-    io::replaceFileAtomically(video, [&](const fs::path& temporary) {
+    replaceFileAtomically(video, [&](const fs::path& temporary) {
         const fs::path log = temporary.string() + ".log";
         const int status = runProcess(ffmpeg, ffmpegArguments(pattern, fps, temporary, container), log);
         const std::string message = lastLine(log);

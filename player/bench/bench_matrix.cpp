@@ -302,9 +302,9 @@ std::string matrixTable(const std::vector<BenchReport>& reports)
 void writeMatrixTables(const fs::path& dir, const std::vector<BenchReport>& reports)
 {
     fs::create_directories(dir);
-    io::writeFileAtomically(dir / "results.csv", matrixCsv(reports));
-    io::writeFileAtomically(dir / "results.json", matrixJson(reports).dump(2) + "\n");
-    io::writeFileAtomically(dir / "table.md", matrixTable(reports));
+    writeFileAtomically(dir / "results.csv", matrixCsv(reports));
+    writeFileAtomically(dir / "results.json", matrixJson(reports).dump(2) + "\n");
+    writeFileAtomically(dir / "table.md", matrixTable(reports));
 }
 
 fs::path chartScriptPath()

@@ -6,7 +6,7 @@
 #include "atomic_file.h"
 #include "frame_stats.h"
 #include "image_metrics.h"
-#include "parallel_bands.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -450,7 +450,7 @@ std::vector<fs::path> writeBenchOutputs(const fs::path& dir, const BenchReport& 
 {
     std::vector<fs::path> written;
     // Each configuration's PNGs (a panel-size EIA compresses in about a second) on a core of
-    // their own (parallel_bands.h), listed per configuration and then in result order.
+    // their own (common/parallel.h), listed per configuration and then in result order.
     std::vector<std::vector<fs::path>> pngs(report.results.size());
     auto collect = [&] {
         for (std::vector<fs::path>& list : pngs)
@@ -463,7 +463,7 @@ std::vector<fs::path> writeBenchOutputs(const fs::path& dir, const BenchReport& 
         const FrameImages* reference = nullptr;
         if (auto it = images.find(report.options.reference); it != images.end())
             reference = &it->second;
-        metrics::forEachBand(report.results.size(), 1, [&](size_t i, size_t, size_t) {
+        forEachBand(report.results.size(), 1, [&](size_t i, size_t, size_t) {
             const RendererResult& r = report.results[i];
             const auto it = images.find(r.name);
             if (it == images.end())
@@ -482,11 +482,11 @@ std::vector<fs::path> writeBenchOutputs(const fs::path& dir, const BenchReport& 
             }
         });
         collect();
-        io::writeFileAtomically(dir / "bench.csv", benchCsv(report));
+        writeFileAtomically(dir / "bench.csv", benchCsv(report));
         written.push_back(dir / "bench.csv");
-        io::writeFileAtomically(dir / "speed_vs_error.svg", speedErrorSvg(report));
+        writeFileAtomically(dir / "speed_vs_error.svg", speedErrorSvg(report));
         written.push_back(dir / "speed_vs_error.svg");
-        io::writeFileAtomically(dir / "bench.json", benchJson(report).dump(2) + "\n");
+        writeFileAtomically(dir / "bench.json", benchJson(report).dump(2) + "\n");
         written.push_back(dir / "bench.json");
     } catch (...) {
         collect(); // what the other configurations wrote before the failure stopped them

@@ -1,7 +1,7 @@
 // Simulated viewer (see simulated_viewer.h for the model).
 #include "simulated_viewer.h"
 
-#include "parallel_bands.h"
+#include "parallel.h"
 
 #include "lfd/subpixel_phase.h"
 
@@ -122,7 +122,7 @@ std::vector<uint8_t> simulateViewer(const DisplayProfile& profile,
     };
 
     // Rows are independent: bands of them over the cores.
-    metrics::forEachBand(vh, 8, [&](size_t, size_t begin, size_t end) {
+    forEachBand(vh, 8, [&](size_t, size_t begin, size_t end) {
         reconstructRows(uint32_t(begin), uint32_t(end));
     });
     return image;

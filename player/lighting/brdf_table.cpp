@@ -2,7 +2,7 @@
 #include "brdf_table.h"
 
 #include "brdf.h"
-#include "parallel_bands.h"
+#include "parallel.h"
 #include "sampling.h"
 
 #include <algorithm>
@@ -48,7 +48,7 @@ BrdfTable splitSumBrdfTable(uint32_t size, uint32_t samples)
     table.size = size;
     table.abc.resize(size_t(size) * size * 3);
     const float last = float(size - 1);
-    metrics::forEachBand(size, 1, [&](size_t, size_t begin, size_t end) {
+    forEachBand(size, 1, [&](size_t, size_t begin, size_t end) {
         for (size_t row = begin; row < end; ++row)
             for (uint32_t column = 0; column < size; ++column) {
                 const glm::vec3 t = splitSumTerms(float(column) / last, float(row) / last, samples);

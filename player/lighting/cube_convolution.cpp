@@ -1,7 +1,7 @@
 // Direct cube convolution with a radial kernel; see cube_convolution.h.
 #include "cube_convolution.h"
 
-#include "parallel_bands.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <vector>
@@ -70,7 +70,7 @@ CubeLevel convolveCube(const CubeLevel& source, uint32_t size, const std::functi
         table[size_t(i)] = float(kernel(double(i) / kKernelIntervals));
     const SourceTexels texels = sourceTexels(source);
     CubeLevel out(size);
-    metrics::forEachBand(size_t(kCubeFaces) * size, 1, [&](size_t, size_t begin, size_t end) {
+    forEachBand(size_t(kCubeFaces) * size, 1, [&](size_t, size_t begin, size_t end) {
         for (size_t row = begin; row < end; ++row) {
             const uint32_t face = uint32_t(row / size), y = uint32_t(row % size);
             for (uint32_t x = 0; x < size; ++x)

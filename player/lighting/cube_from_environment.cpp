@@ -1,7 +1,7 @@
 // Equirectangular -> cube resampling; see cube_from_environment.h.
 #include "cube_from_environment.h"
 
-#include "parallel_bands.h"
+#include "parallel.h"
 
 #include <numbers>
 
@@ -20,7 +20,7 @@ CubeLevel cubeFromEnvironment(const Environment& environment, uint32_t size)
     }
     CubeLevel cube(size);
     const float texel = 1.0f / float(size);
-    metrics::forEachBand(size_t(kCubeFaces) * size, 4, [&](size_t, size_t begin, size_t end) {
+    forEachBand(size_t(kCubeFaces) * size, 4, [&](size_t, size_t begin, size_t end) {
         for (size_t row = begin; row < end; ++row) {
             const uint32_t face = uint32_t(row / size), y = uint32_t(row % size);
             for (uint32_t x = 0; x < size; ++x) {

@@ -2,7 +2,7 @@
 #include "lobe_tap_fit.h"
 
 #include "brdf.h"
-#include "parallel_bands.h"
+#include "parallel.h"
 #include "prefilter.h"
 #include "sampling.h"
 
@@ -136,7 +136,7 @@ LookupLobeShares::LookupLobeShares() : shares_(size_t(kAlphaSteps) * kAngleSteps
 {
     const WeightedDirections wide = wideLookupLobe();
     const WeightedDirections widest = ggxLookupLobe(1.0f);
-    metrics::forEachBand(size_t(kAlphaSteps), 1, [&](size_t, size_t begin, size_t end) {
+    forEachBand(size_t(kAlphaSteps), 1, [&](size_t, size_t begin, size_t end) {
         for (size_t a = begin; a < end; ++a) {
             const float log2Alpha = log2AlphaOfStep(int(a));
             WeightedDirections lobe;
@@ -301,7 +301,7 @@ std::vector<float> fitLobeTapTable(uint32_t size)
     // Pass 1: each row from n.v = 0.6 outwards, each texel from its neighbour's solution.
     std::vector<LobeTaps> first(size_t(size) * size);
     const uint32_t middle = uint32_t(std::lround(0.6f * last));
-    metrics::forEachBand(size, 1, [&](size_t, size_t begin, size_t end) {
+    forEachBand(size, 1, [&](size_t, size_t begin, size_t end) {
         for (uint32_t row = uint32_t(begin); row < uint32_t(end); ++row) {
             texel(first, middle, row) = fit(middle, row, {});
             for (uint32_t column = middle + 1; column < size; ++column)
@@ -312,7 +312,7 @@ std::vector<float> fitLobeTapTable(uint32_t size)
     });
     // Pass 2: every texel from itself and its four neighbours.
     std::vector<LobeTaps> second = first;
-    metrics::forEachBand(size, 1, [&](size_t, size_t begin, size_t end) {
+    forEachBand(size, 1, [&](size_t, size_t begin, size_t end) {
         for (uint32_t row = uint32_t(begin); row < uint32_t(end); ++row)
             for (uint32_t column = 0; column < size; ++column) {
                 std::vector<LobeTaps> starts = {texel(first, column, row)};

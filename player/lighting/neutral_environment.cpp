@@ -1,7 +1,7 @@
 // The neutral studio's geometry and radiances; see neutral_environment.h.
 #include "neutral_environment.h"
 
-#include "parallel_bands.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -82,7 +82,7 @@ Environment neutralEnvironment()
     environment.width = kNeutralEnvironmentWidth;
     environment.height = kNeutralEnvironmentHeight;
     environment.rgb.resize(size_t(environment.width) * environment.height * 3);
-    metrics::forEachBand(environment.height, 8, [&](size_t, size_t begin, size_t end) {
+    forEachBand(environment.height, 8, [&](size_t, size_t begin, size_t end) {
         for (size_t y = begin; y < end; ++y)
             for (uint32_t x = 0; x < environment.width; ++x) {
                 const glm::vec3 d = directionFromEquirect(

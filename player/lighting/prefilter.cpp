@@ -6,7 +6,7 @@
 #include "cube_convolution.h"
 #include "cube_least_squares.h"
 #include "cube_from_environment.h"
-#include "parallel_bands.h"
+#include "parallel.h"
 #include "sampling.h"
 
 #include <algorithm>
@@ -134,7 +134,7 @@ CubeLevel prefilterGgxLevel(const CubeMap& source, float roughness, uint32_t siz
 {
     const std::vector<LobeSample> lobe = lobeSamples(roughness, samples, source.levels[0].size, lodBias);
     CubeLevel level(size);
-    metrics::forEachBand(size_t(kCubeFaces) * size, 1, [&](size_t, size_t begin, size_t end) {
+    forEachBand(size_t(kCubeFaces) * size, 1, [&](size_t, size_t begin, size_t end) {
         for (size_t row = begin; row < end; ++row) {
             const uint32_t face = uint32_t(row / size), y = uint32_t(row % size);
             for (uint32_t x = 0; x < size; ++x) {

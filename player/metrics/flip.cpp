@@ -5,7 +5,7 @@
 // point detection on luminance), combined per pixel as colour ^ (1 - feature).
 #include "colour_spaces.h"
 #include "image_checks.h"
-#include "parallel_bands.h"
+#include "parallel.h"
 #include "separable_filter.h"
 
 #include <algorithm>
@@ -32,7 +32,7 @@ constexpr double kFeatureWidthDegrees = 0.082;
 constexpr double kQf = 0.5;
 constexpr double kMaxPpd = 10000.0; // beyond any display; keeps the kernels finite
 
-// The per-pixel steps run over the cores in bands of pixels (parallel_bands.h); each
+// The per-pixel steps run over the cores in bands of pixels (common/parallel.h); each
 // pixel's value is computed as it would be in one loop.
 constexpr size_t kBandPixels = size_t(1) << 16;
 template <typename PerPixel>

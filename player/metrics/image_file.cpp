@@ -172,8 +172,8 @@ DecodedImage decodeHdrBytes(const fs::path& path, std::span<const uint8_t> bytes
 void writeEncoded(const fs::path& path, const std::vector<uint8_t>& bytes)
 {
     try {
-        io::writeFileAtomically(path, bytes);
-    } catch (const io::AtomicWriteError& e) {
+        writeFileAtomically(path, bytes);
+    } catch (const AtomicWriteError& e) {
         throw ImageError(e.what());
     }
 }

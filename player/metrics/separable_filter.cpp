@@ -1,10 +1,10 @@
 // Separable filtering with replicated borders; see separable_filter.h. Both passes loop
 // over the taps outside and the pixels inside, so the inner loop is a contiguous
-// multiply-add the compiler vectorises; rows go to the cores in bands (parallel_bands.h:
+// multiply-add the compiler vectorises; rows go to the cores in bands (common/parallel.h:
 // each output row is computed exactly as before, whatever thread computes it).
 #include "separable_filter.h"
 
-#include "parallel_bands.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <stdexcept>

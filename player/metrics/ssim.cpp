@@ -2,7 +2,7 @@
 // image or over a mask. The window, constants and colour handling are documented in
 // image_metrics.h.
 #include "image_checks.h"
-#include "parallel_bands.h"
+#include "parallel.h"
 
 #include <algorithm>
 #include <array>
@@ -46,7 +46,7 @@ std::vector<double> gaussianTaps(int size)
     return g;
 }
 
-// Window rows per band: the bands run on the cores (parallel_bands.h), each filtering
+// Window rows per band: the bands run on the cores (common/parallel.h), each filtering
 // the `size` - 1 rows above its first window row again (a sixth more work at 64).
 constexpr size_t kBandWindowRows = 64;
 

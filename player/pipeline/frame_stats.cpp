@@ -86,8 +86,8 @@ void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
     csvPath.replace_extension(".csv");
     if (csvPath == jsonPath)
         csvPath += ".csv";
-    io::writeFileAtomically(jsonPath, statsJson(info, stages).dump(2) + "\n");
-    io::writeFileAtomically(csvPath, statsCsv(stages));
+    writeFileAtomically(jsonPath, statsJson(info, stages).dump(2) + "\n");
+    writeFileAtomically(csvPath, statsCsv(stages));
 }
 
 } // namespace lfd::player

@@ -45,7 +45,7 @@ nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageT
 std::string statsCsv(const std::map<std::string, StageTimes>& stages);
 
 // Writes `jsonPath` and its .csv sibling atomically (atomic_file.h). Throws
-// io::AtomicWriteError (a std::runtime_error) naming the file.
+// AtomicWriteError (a std::runtime_error) naming the file.
 void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
                 const std::map<std::string, StageTimes>& stages);
 

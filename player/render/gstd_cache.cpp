@@ -180,7 +180,7 @@ void GstdCache::store(const std::string& key, const ViewTargets& targets, const 
     fs::create_directories(dir_, ec);
     if (ec)
         throw std::runtime_error(dir_.string() + ": cannot create the gstd cache directory: " + ec.message());
-    io::writeFileAtomically(target, bytes); // readers never see a partial entry
+    writeFileAtomically(target, bytes); // readers never see a partial entry
 }
 
 } // namespace lfd::player

@@ -1,12 +1,20 @@
 // What the glTF fuzz target runs on each input, shared with the regression test of its
-// findings (tests/baker/fuzz_regression_test.cpp): the CPU bake stages up to a
-// tessellated, statistics-complete scene, as lfd-bake runs them (baker/main.cpp) -
+// findings (tests/baker/import/fuzz_regression_test.cpp): the CPU bake stages up to a
+// tessellated, statistics-complete scene, as lfd-bake runs them (baker/pipeline/bake.cpp) -
 // import (Draco and meshopt decoding included), bounds, framing on the prototype display,
 // tessellation at the default 100-view-pixel edge bound, triangle statistics; embedded
 // WebP images are decoded too. Throws lfd::bake::BakeError on bad input.
 #pragma once
 
-#include "bake.h"
+#include "bake_log.h"
+#include "imported_scene.h"
+#include "gltf_import.h"
+#include "scene_bounds.h"
+#include "tessellation.h"
+#include "triangle_stats.h"
+#include "texture_bake.h"
+#include "lfd/display_profile.h"
+#include "lfd/framing.h"
 
 #include <cstdint>
 #include <filesystem>

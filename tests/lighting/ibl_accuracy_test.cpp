@@ -34,7 +34,7 @@
 #include "brdf_table.h"
 #include "ibl_test_scenes.h"
 #include "neutral_environment.h"
-#include "parallel_bands.h"
+#include "parallel.h"
 #include "prefilter.h"
 #include "reference_ibl.h"
 #include "split_sum.h"
@@ -100,7 +100,7 @@ CaseErrors sphereErrors(const Scene& scene, const PbrMaterial& material)
     forEachSpherePixel(kPixels, kSilhouette, [&](glm::vec3 n) { normals.push_back(n); });
     std::vector<std::array<int, 3>> errors(normals.size());
     const glm::vec3 v(0, 0, 1);
-    metrics::forEachBand(normals.size(), 16, [&](size_t, size_t begin, size_t end) {
+    forEachBand(normals.size(), 16, [&](size_t, size_t begin, size_t end) {
         for (size_t i = begin; i < end; ++i) {
             const glm::vec3 n = normals[i];
             const auto reference = displayLevels(

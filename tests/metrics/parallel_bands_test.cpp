@@ -1,8 +1,8 @@
-// forEachBand (player/metrics/parallel_bands.h): every band exactly once with its own
+// forEachBand (common/parallel.h): every band exactly once with its own
 // range, failures rethrown, and the metrics built on it independent of how the bands are
 // spread over threads.
 #include "image_metrics.h"
-#include "parallel_bands.h"
+#include "parallel.h"
 
 #include <gtest/gtest.h>
 

@@ -91,7 +91,7 @@ TEST(Ssim, MatchesADirectEvaluationOfTheWindowedIndex)
 
 TEST(Ssim, BandsOfWindowRowsMatchTheDirectEvaluation)
 {
-    // 150 rows: 140 window rows, three bands of 64 (parallel_bands.h), each filtering the
+    // 150 rows: 140 window rows, three bands of 64 (common/parallel.h), each filtering the
     // rows above its first window again; a mask that keeps only the rows around the seams.
     const RgbImage a = noisyImage(gradientImage(31, 150), 30.0, 10);
     const RgbImage b = noisyImage(a, 15.0, 11);

@@ -95,11 +95,9 @@ Scene materialScene()
 Scene blockCompressed(Scene scene)
 {
     const std::vector<uint32_t> uses = bake::textureUses(scene);
-    bake::ThreadBudget threads(1);
+    ThreadBudget threads(1);
     for (size_t t = 0; t < scene.textures.size(); ++t)
-        bake::compressTexture(scene.textures[t],
-                              bake::chooseTextureFormat(uses[t], bake::opaqueAlpha(scene.textures[t])), uses[t],
-                              threads);
+        bake::compressForUses(scene.textures[t], uses[t], bake::TextureCompression::Bc, threads); // as bake() does
     return scene;
 }
 

@@ -8,10 +8,13 @@
 #include "test_scenes.h"
 
 #include "bake.h"
+#include "gltf_import.h"
+#include "triangle_stats.h"
 #include "gpu_scene.h"
 #include "image_metrics.h"
 #include "scene_bindings.h"
 
+#include "lfd/pack.h"
 #include "lfd/scene_animation.h"
 #include "lfd/scene_pose.h"
 
@@ -161,11 +164,17 @@ TEST_F(PoseTest, CharacterSampleFramesMatchTheCpuPosedReference)
     const std::filesystem::path dir = testOutputDir("pose_character");
     const std::string tool = std::string(LFD_BINARY_DIR) + "/samples/lfd-make-samples";
     ASSERT_EQ(std::system(("'" + tool + "' '" + dir.string() + "' --scene character --quiet").c_str()), 0);
-    bake::ImportedScene imported = bake::importGltf(dir / "character" / "character.gltf", bake::Log{});
-    Scene scene = std::move(imported.scene);
-    for (size_t t = 0; t < scene.textures.size(); ++t)
-        scene.textures[t] = bake::bakeTexture(imported.textureSources[t], {});
-    finishScene(scene);
+    // The public bake, with the geometry and textures as imported (no simplification, no
+    // tessellation, full-size RGBA8 textures).
+    bake::BakeOptions options;
+    options.input = dir / "character" / "character.gltf";
+    options.output = dir / "character.lfdpack";
+    options.simplifyPx = 0.0;
+    options.maxEdgePx = 1e6;
+    options.keepFullTextures = true;
+    options.textureCompression = bake::TextureCompression::None;
+    bake::bake(options, bake::Log{});
+    const Scene scene = readPack(options.output);
     const DisplayProfile profile = smallProfile(4, 192, 144);
     for (const char* renderer : {"mvr", "lfdpr"}) {
         metrics::Image firstView;

@@ -8,7 +8,7 @@
 #include "render_test_util.h"
 #include "test_scenes.h"
 
-#include "bake.h"
+#include "triangle_stats.h"
 
 #include "image_metrics.h"
 #include "renderer_registry.h"

@@ -21,7 +21,8 @@
 #include "render_test_util.h"
 #include "test_scenes.h"
 
-#include "bake.h"
+#include "bake_log.h"
+#include "triangle_stats.h"
 #include "image_metrics.h"
 #include "simplification.h"
 

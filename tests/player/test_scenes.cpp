@@ -1,6 +1,7 @@
 #include "test_scenes.h"
 
-#include "bake.h"
+#include "scene_bounds.h"
+#include "triangle_stats.h"
 
 #include <glm/gtc/quaternion.hpp>
 

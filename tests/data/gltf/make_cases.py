@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the tiny hand-made glTF files used by tests/baker/gltf_import_test.cpp.
+"""Writes the tiny hand-made glTF files used by tests/baker/import/gltf_import_test.cpp.
 
 Each case is a .gltf with its buffer (and images) embedded as data URIs, so a file is
 self-contained and readable. Run from this directory: python3 make_cases.py

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Writes the compressed glTF fixtures of tests/baker/gltf_compression_test.cpp from the
+# Writes the compressed glTF fixtures of tests/baker/import/gltf_compression_test.cpp from the
 # project's own gallery sample (32-pixel textures), the way pipelines ship files:
 #   gallery.glb           the sample as one GLB (gltf-transform copy): the reference
 #   gallery-draco.glb     KHR_draco_mesh_compression (gltf-transform draco)
