@@ -238,6 +238,10 @@ struct LfdprVisibilityCountersGpu {
     uint workShadings;   // view pixels shaded (repair passes included)
     uint workCulledCentres; // of workCulled, those whose cell and triangle columns overlap but
                             // whose cell holds no pixel centre there (the centre test)
+    // A whole number of 16-byte units: Mesa reports the block's GL_BUFFER_DATA_SIZE rounded up
+    // to 16 (64 for 56 bytes), and the layout test holds the allocation to what GL reports.
+    uint reserved0;
+    uint reserved1;
 };
 
 // The 32-bit path's repair, made on the GPU from the shading's first pass

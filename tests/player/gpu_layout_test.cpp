@@ -489,8 +489,14 @@ TEST_F(GpuLayoutTest, EveryBlockOfEveryProgramHasTheCppBindingAndSize)
                 GLint variables = 0, first = -1;
                 variables = resourceProperty(program, interface, i, GL_NUM_ACTIVE_VARIABLES);
                 const GLenum activeVariables = GL_ACTIVE_VARIABLES;
-                if (variables > 0)
-                    glGetProgramResourceiv(program, interface, i, 1, &activeVariables, 1, nullptr, &first);
+                if (variables > 0) {
+                    // Room for every index: Mesa writes all GL_ACTIVE_VARIABLES whatever bufSize
+                    // says (one int here overwrote the stack beside it).
+                    std::vector<GLint> indices(static_cast<size_t>(variables));
+                    glGetProgramResourceiv(program, interface, i, 1, &activeVariables, GLsizei(indices.size()), nullptr,
+                                           indices.data());
+                    first = indices[0];
+                }
                 // An unsized array of a basic type is the variable itself (array size 0, its
                 // stride the array stride); one of structs is the top-level member.
                 auto variable = [&](GLenum p) {

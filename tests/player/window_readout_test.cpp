@@ -207,7 +207,12 @@ TEST(TextOverlayLayout, TabsAlignAColumnAndOddCharactersShowAsQuestionMarks)
     float right[2] = {0, 0};
     for (size_t i = 1; i < layout.rects.size(); ++i) {
         const player::OverlayRect& r = layout.rects[i];
-        const int line = int((r.y0 - layout.box.y0) / float(12 * layout.scale));
+        // Line i's glyphs start 4 + 12 i font units below the box's top (the padding, then a
+        // 12-unit line advance); descenders reach below the next line's start, so the line is
+        // found from the glyph's top less the padding, never past the last line.
+        const int line = int((r.y0 - layout.box.y0 - float(4 * layout.scale)) / float(12 * layout.scale));
+        ASSERT_GE(line, 0);
+        ASSERT_LT(line, 2);
         right[line] = std::max(right[line], r.x1);
     }
     EXPECT_GT(right[0], 0.0f);
@@ -218,7 +223,9 @@ TEST(TextOverlayLayout, TabsAlignAColumnAndOddCharactersShowAsQuestionMarks)
     float blockRight[3] = {0, 0, 0};
     for (size_t i = 1; i < blocks.rects.size(); ++i) {
         const player::OverlayRect& r = blocks.rects[i];
-        const int line = int((r.y0 - blocks.box.y0) / float(12 * blocks.scale));
+        const int line = int((r.y0 - blocks.box.y0 - float(4 * blocks.scale)) / float(12 * blocks.scale));
+        ASSERT_GE(line, 0);
+        ASSERT_LT(line, 3);
         blockRight[line] = std::max(blockRight[line], r.x1);
     }
     EXPECT_EQ(blockRight[1], 0.0f);
