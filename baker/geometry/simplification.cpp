@@ -54,32 +54,39 @@ struct PrimitiveResult {
     size_t lockedSeamVertices = 0;
 };
 
-// One primitive, on its own (its borders, material boundaries included, stay).
-PrimitiveResult simplifyPrimitive(const Scene& scene, const Primitive& prim, double maxErrorObject)
-{
-    PrimitiveResult result;
-    const size_t n = prim.indexCount;
-    if (n < 6)
-        return result; // one triangle: nothing to merge
-    const uint32_t* in = scene.indices.data() + prim.firstIndex;
-    const VertexStreams& v = scene.vertices;
+// The primitive's vertices numbered locally, in first-use order.
+struct LocalVertices {
+    std::vector<uint32_t> sceneVertex; // local -> scene vertex
+    std::vector<uint32_t> local;       // the primitive's indices, local numbering
+};
 
-    // Local numbering of the vertices the primitive uses, in first-use order.
+LocalVertices numberLocally(const uint32_t* in, size_t n)
+{
+    LocalVertices r;
     const auto [lo, hi] = std::minmax_element(in, in + n);
     std::vector<uint32_t> localOf(size_t(*hi - *lo) + 1, kInvalid);
-    std::vector<uint32_t> sceneVertex; // local -> scene vertex
-    std::vector<uint32_t> local(n);
+    r.local.resize(n);
     for (size_t i = 0; i < n; ++i) {
         uint32_t& l = localOf[in[i] - *lo];
         if (l == kInvalid) {
-            l = uint32_t(sceneVertex.size());
-            sceneVertex.push_back(in[i]);
+            l = uint32_t(r.sceneVertex.size());
+            r.sceneVertex.push_back(in[i]);
         }
-        local[i] = l;
+        r.local[i] = l;
     }
-    std::vector<uint32_t>().swap(localOf);
+    return r;
+}
 
-    // Weld vertices equal in every attribute (a triangle soup becomes connected).
+// Vertices equal in every attribute, welded (a triangle soup becomes connected).
+struct WeldedVertices {
+    size_t count = 0;
+    std::vector<uint32_t> representative; // welded -> scene vertex (the first local one)
+    std::vector<float> positions;         // welded -> xyz
+};
+
+// Welds the local vertices and renumbers `local` to the welded ones.
+WeldedVertices weld(const VertexStreams& v, const std::vector<uint32_t>& sceneVertex, std::vector<uint32_t>& local)
+{
     // note: adding +0.0f turns -0.0f into +0.0f, so positions that compare equal weld.
     std::vector<WeldKey> keys(sceneVertex.size(), WeldKey{});
     for (size_t l = 0; l < sceneVertex.size(); ++l) {
@@ -98,27 +105,31 @@ PrimitiveResult simplifyPrimitive(const Scene& scene, const Primitive& prim, dou
                 k.uv[c] = v.uvs[s][c];
     }
     std::vector<uint32_t> weldOf(sceneVertex.size());
-    const size_t welded =
-        meshopt_generateVertexRemap(weldOf.data(), local.data(), n, keys.data(), keys.size(), sizeof(WeldKey));
-    std::vector<uint32_t> representative(welded, kInvalid); // welded -> scene vertex (first local one)
-    std::vector<float> positions(welded * 3);
+    WeldedVertices w;
+    w.count = meshopt_generateVertexRemap(weldOf.data(), local.data(), local.size(), keys.data(), keys.size(),
+                                          sizeof(WeldKey));
+    w.representative.assign(w.count, kInvalid);
+    w.positions.resize(w.count * 3);
     for (size_t l = 0; l < sceneVertex.size(); ++l) {
-        const uint32_t w = weldOf[l];
-        if (representative[w] == kInvalid) {
-            representative[w] = sceneVertex[l];
-            std::copy(keys[l].position, keys[l].position + 3, positions.begin() + ptrdiff_t(w) * 3);
+        const uint32_t i = weldOf[l];
+        if (w.representative[i] == kInvalid) {
+            w.representative[i] = sceneVertex[l];
+            std::copy(keys[l].position, keys[l].position + 3, w.positions.begin() + ptrdiff_t(i) * 3);
         }
     }
-    std::vector<WeldKey>().swap(keys);
     for (uint32_t& i : local)
         i = weldOf[i];
+    return w;
+}
 
-    // Seams: welded vertices sharing a position carry different attributes. Each copy after
-    // the first moves by its own count of float ulps in x, so meshoptimizer no longer
-    // joins the two sides: the seam becomes two borders, which LockBorder keeps in place.
-    // (meshopt_simplify 0.18 would otherwise collapse along seams, moving seam vertices,
-    // and has no per-vertex lock.) The shift only affects the quadrics, by ~1e-7 relative;
-    // the output uses the scene's own vertices.
+// Seams: welded vertices sharing a position carry different attributes. Each copy after
+// the first moves by its own count of float ulps in x, so meshoptimizer no longer
+// joins the two sides: the seam becomes two borders, which LockBorder keeps in place.
+// (meshopt_simplify 0.18 would otherwise collapse along seams, moving seam vertices,
+// and has no per-vertex lock.) The shift only affects the quadrics, by ~1e-7 relative;
+// the output uses the scene's own vertices. Returns the seam vertices so locked.
+size_t separateSeams(std::vector<float>& positions, size_t welded)
+{
     std::vector<uint32_t> positionOf(welded);
     const size_t distinct =
         meshopt_generateVertexRemap(positionOf.data(), nullptr, welded, positions.data(), welded, 3 * sizeof(float));
@@ -126,31 +137,45 @@ PrimitiveResult simplifyPrimitive(const Scene& scene, const Primitive& prim, dou
     for (size_t w = 0; w < welded; ++w)
         ++copies[positionOf[w]];
     std::vector<uint32_t> seen(distinct, 0);
+    size_t locked = 0;
     for (size_t w = 0; w < welded; ++w) {
         const uint32_t p = positionOf[w];
         if (copies[p] < 2)
             continue;
-        ++result.lockedSeamVertices;
+        ++locked;
         float& x = positions[w * 3];
         for (uint32_t k = 0; k < seen[p]; ++k)
             x = std::nextafter(x, std::numeric_limits<float>::infinity());
         ++seen[p];
     }
+    return locked;
+}
+
+// One primitive, on its own (its borders, material boundaries included, stay).
+PrimitiveResult simplifyPrimitive(const Scene& scene, const Primitive& prim, double maxErrorObject)
+{
+    PrimitiveResult result;
+    const size_t n = prim.indexCount;
+    if (n < 6)
+        return result; // one triangle: nothing to merge
+    LocalVertices vertices = numberLocally(scene.indices.data() + prim.firstIndex, n);
+    WeldedVertices welded = weld(scene.vertices, vertices.sceneVertex, vertices.local);
+    result.lockedSeamVertices = separateSeams(welded.positions, welded.count);
 
     // meshoptimizer's error is relative to the mesh extent (meshopt_simplifyScale).
-    const float extent = meshopt_simplifyScale(positions.data(), welded, 3 * sizeof(float));
+    const float extent = meshopt_simplifyScale(welded.positions.data(), welded.count, 3 * sizeof(float));
     if (!(extent > 0.0f) || !std::isfinite(extent))
         return result;
     const auto relative = float(kQuadricShare * maxErrorObject / double(extent));
     std::vector<uint32_t> out(n);
     float error = 0.0f;
-    const size_t kept = meshopt_simplify(out.data(), local.data(), n, positions.data(), welded, 3 * sizeof(float), 0,
-                                         relative, meshopt_SimplifyLockBorder, &error);
+    const size_t kept = meshopt_simplify(out.data(), vertices.local.data(), n, welded.positions.data(), welded.count,
+                                         3 * sizeof(float), 0, relative, meshopt_SimplifyLockBorder, &error);
     if (kept >= n)
         return result; // nothing merged: the primitive stays exactly as it was
     out.resize(kept);
     for (uint32_t& i : out)
-        i = representative[i];
+        i = welded.representative[i];
     result.changed = true;
     result.indices = std::move(out);
     result.errorObject = double(error) * double(extent) / kQuadricShare;
