@@ -1,24 +1,24 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang, AddressSanitizer + UndefinedBehaviorSanitizer) in
-# ./build-fuzz and runs each for a bounded time:
+# ./build-asan, the instrumented build the sanitizer suites use (scripts/sanitized-build.sh;
+# after scripts/sanitize.sh there is nothing left to compile), and runs each for a bounded
+# time:
 #   lfd_pack_fuzz  the pack reader (tests/fuzz/pack_fuzz.cpp)
 #   lfd_gltf_fuzz  glTF ingestion: import -> bounds -> tessellation -> triangle statistics
 # Seeds: the project's samples (as self-contained .gltf and as baked packs), tests/data (with
 # the Draco, meshopt, WebP and quantized GLBs of tests/data/gltf_compressed) and
 # the broken-file corpus of Debian's assimp-testmodels. Fails on any finding (crash,
 # sanitizer report, leak, timeout, out-of-memory); the input is kept in
-# build-fuzz/findings/ - commit it under tests/data/fuzz/ as a regression test.
+# build-asan/findings/ - commit it under tests/data/fuzz/ as a regression test.
 #
 # Environment: LFD_FUZZ_SECONDS (per target, default 60).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${LFD_FUZZ_SECONDS:-60}
-jobs=$(nproc 2>/dev/null || echo 2)
-build=build-fuzz
+build=build-asan
 
-CC=clang CXX=clang++ cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLFD_WERROR=ON \
-  -DLFD_BUILD_FUZZERS=ON -DLFD_BUILD_TESTS=OFF -DLFD_BUILD_PLAYER=OFF >/dev/null
-cmake --build "$build" -j "$jobs" --target lfd_pack_fuzz lfd_gltf_fuzz lfd-make-samples lfd-bake >/dev/null
+bash scripts/sanitized-build.sh --target lfd_pack_fuzz --target lfd_gltf_fuzz --target lfd-make-samples \
+  --target lfd-bake
 
 # ---- Seed corpora (rebuilt every run; the corpora libFuzzer grows stay in $build) ----
 seeds=$build/seeds

@@ -23,7 +23,7 @@
 #define POSE_SSBO_TANGENTS 12       // vec4[n], the tangent stream
 // pose_triangles.comp: the index buffer and the per-triangle statistics.
 #define POSE_SSBO_INDICES 13        // uint[]
-#define POSE_SSBO_TRIANGLE_STATS 14 // PoseTriangleStatsGpu[] (= lfd::TriangleStats)
+#define POSE_SSBO_TRIANGLE_STATS 14 // TriangleStatsGpu[] (= lfd::TriangleStats)
 
 #define POSE_LOC_FIRST_VERTEX 0     // uint: first vertex of the dispatch
 #define POSE_LOC_VERTEX_COUNT 1     // uint: vertices of the dispatch
@@ -56,12 +56,5 @@ struct PoseDeformerGpu {
     uint skinned; // 0: morph targets only
 };
 
-// lfd::TriangleStats (std430).
-struct PoseTriangleStatsGpu {
-    float areaWorld;
-    float areaTexture;
-    float texelCount;
-    float sizeUv;
-    float texPerWorld;
-    uint flags;
-};
+// lfd::TriangleStats: TriangleStatsGpu, the struct the scene's readers use.
+#include "triangle_stats_bindings.glsl"

@@ -45,7 +45,7 @@ layout(std430, binding = POSE_SSBO_INDICES) readonly buffer PoseIndices {
     uint indices[];
 };
 layout(std430, binding = POSE_SSBO_TRIANGLE_STATS) buffer PoseTriangleStats {
-    PoseTriangleStatsGpu triangleStats[];
+    TriangleStatsGpu triangleStats[];
 };
 
 layout(location = POSE_LOC_FIRST_VERTEX) uniform uint u_firstVertex;

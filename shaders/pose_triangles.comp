@@ -18,7 +18,7 @@ void main()
     const uint t = u_firstTriangle + gl_GlobalInvocationID.x;
     const vec3 p0 = posed(indices[3u * t]);
     const float area = 0.5 * length(cross(posed(indices[3u * t + 1u]) - p0, posed(indices[3u * t + 2u]) - p0));
-    PoseTriangleStatsGpu s = triangleStats[t];
+    TriangleStatsGpu s = triangleStats[t];
     // baker/triangle_stats.cpp: areas of 1e-30 or less (and NaN) are degenerate.
     const bool degenerate = !(area > 1e-30);
     s.flags = degenerate ? (s.flags | POSE_TRIANGLE_DEGENERATE) : (s.flags & ~uint(POSE_TRIANGLE_DEGENERATE));

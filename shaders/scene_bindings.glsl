@@ -110,16 +110,8 @@ struct ViewGpu {
     vec4 eyeScene; // xyz camera position in scene space, for view-dependent shading
 };
 
-// Per-triangle statistics from the baker (std430; uploaded as lfd::TriangleStats, which
-// the layout test checks member by member against this struct).
-struct TriangleStatsGpu {
-    float areaWorld;
-    float areaTexture;
-    float texelCount;
-    float sizeUv;
-    float texPerWorld;
-    uint flags;
-};
+// Per-triangle statistics from the baker: TriangleStatsGpu, shared with the pose pass.
+#include "triangle_stats_bindings.glsl"
 
 layout(std430, binding = LFD_SSBO_MATERIALS) readonly buffer MaterialBuffer {
     MaterialGpu materials[];

@@ -424,7 +424,22 @@ struct HeadlessRun {
     lfd::player::FrameOutputs outputs;
     lfd::DisplayProfile outputProfile;
     std::vector<fs::path> written; // removed again if the run fails
+    // --stats with --lfdpr-work-counters: each timed frame's work_* counters (the STEM.work.csv
+    // of frame_stats.h). Reading them waits for the frame, once per frame, outside the GPU
+    // timer's queries, so the stage times are still the GPU's.
+    bool collectWork = false;
+    std::vector<std::vector<std::pair<std::string, double>>> workPerFrame;
 };
+
+void collectFrameWork(HeadlessRun& run)
+{
+    run.session.completeLastFrame();
+    std::vector<std::pair<std::string, double>> work;
+    for (const auto& [name, value] : run.session.renderer().extraStats())
+        if (name.rfind("work_", 0) == 0)
+            work.emplace_back(name, value);
+    run.workPerFrame.push_back(std::move(work));
+}
 
 // Streaming: one untimed frame as soon as the geometry and the coarsest mips are in (time
 // to first frame), then everything is made resident before the timed frames, so no
@@ -470,6 +485,8 @@ StageMap renderFrames(HeadlessRun& run, lfd::player::GpuTimer& timer, const Pack
         const uint32_t frame = run.first + k;
         run.session.renderFrame(run.session.frameTime(frame), run.quality);
         run.glErrors.check("frame " + std::to_string(frame));
+        if (run.collectWork)
+            collectFrameWork(run);
         if (k == 0 && run.firstFrameMs < 0.0 && input.present()) {
             glFinish();
             run.firstFrameMs = msSince(input.start);
@@ -581,6 +598,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
     run.wantOutputs = !run.single.eiaOut.empty() || !run.single.quiltOut.empty() || !run.single.viewsOut.empty() ||
                       !run.single.viewerOut.empty();
     run.outputProfile = profile;
+    run.collectWork = !options.statsOut.empty() && options.rendererOptions.lfdpr.countWork && !session.quiltInput();
     try {
         const StageMap stages = renderFrames(run, timer, input);
         // Outputs: each file atomic; if one fails, remove the others written by this run.
@@ -592,6 +610,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
             info.timeToFirstFrameMs = run.firstFrameMs;
             info.timeToResidentMs = run.residentMs;
             info.frames = run.frames; // a quilt video's own frame count when --frames was not given
+            info.workPerFrame = std::move(run.workPerFrame);
             writeStats(options.statsOut, info, stages);
             run.written.push_back(options.statsOut);
         }

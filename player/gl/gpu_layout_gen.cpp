@@ -1,7 +1,7 @@
 // lfd_gpu_layout_gen: writes the C++ side of one shaders/*_bindings.glsl file at build
 // time, so a GPU layout is written once, in GLSL:
 //
-//   lfd_gpu_layout_gen INPUT.glsl OUTPUT.h NAMESPACE PREFIX
+//   lfd_gpu_layout_gen INPUT.glsl OUTPUT.h NAMESPACE PREFIX [DEPFILE]
 //
 // * every `#define NAME <integer>` becomes `inline constexpr uint32_t kName` (PREFIX
 //   stripped from NAME, the rest in camel case: LFDPR_SSBO_POINTS -> kSsboPoints), and a
@@ -17,7 +17,12 @@
 // Layouts C++ cannot mirror member for member (mat2/mat3, doubles, 64-bit integers, vec3
 // or std140 scalar arrays, nested structs) are refused with file:line, so the build fails
 // instead of a silent mismatch. Preprocessor conditionals are ignored: every declaration in
-// the file is generated. The output is only rewritten when it changes.
+// the file is generated. An `#include "OTHER.glsl"` of a file in the same folder brings its
+// structs in before this file's (as the shader preprocessor does), and they are generated
+// here too: a struct two bindings files share is written once in GLSL (e.g.
+// triangle_stats_bindings.glsl) and each generated header has its C++ twin. DEPFILE, when
+// given, lists the included files for the build's dependency scan. The output is only
+// rewritten when it changes.
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
@@ -147,9 +152,9 @@ bool isDecimal(const std::string& literal)
     return digits && dot;
 }
 
-// Splits the text into directive lines (collected as defines) and the rest (directives
-// blanked, so token lines keep their numbers).
-std::string takeDirectives(const std::string& text, std::vector<Define>& defines)
+// Splits the text into directive lines (collected as defines, and the files of #include
+// "NAME" as includes) and the rest (directives blanked, so token lines keep their numbers).
+std::string takeDirectives(const std::string& text, std::vector<Define>& defines, std::vector<std::string>& includes)
 {
     std::istringstream in(text);
     std::string out, line;
@@ -165,8 +170,15 @@ std::string takeDirectives(const std::string& text, std::vector<Define>& defines
         std::istringstream d(line.substr(first + 1));
         std::string directive, name, value;
         d >> directive;
+        if (directive == "include") {
+            const size_t open = line.find('"'), close = line.rfind('"');
+            if (open == std::string::npos || close <= open + 1)
+                fail(number, "malformed #include (expected #include \"file\")");
+            includes.push_back(line.substr(open + 1, close - open - 1));
+            continue;
+        }
         if (directive != "define")
-            continue; // #include, #ifdef, #endif, #extension: not layouts
+            continue; // #ifdef, #endif, #extension: not layouts
         d >> name;
         if (name.find('(') != std::string::npos)
             continue; // function-like macro
@@ -231,6 +243,7 @@ struct Aggregate {
     std::vector<Member> members;
     std::vector<std::string> doc;
     int line = 0;
+    std::string file; // the GLSL file it is declared in, for error messages
     uint32_t size = 0, align = 4;
 };
 
@@ -650,6 +663,7 @@ void emitStructs(std::ostringstream& o, std::vector<Aggregate>& aggregates)
     o << "\n// ---- Structs (std430) and blocks with fixed members\n";
     std::map<std::string, const Aggregate*> structs;
     for (Aggregate& a : aggregates) {
+        g_file = a.file;
         const bool arrayBlock = a.block && a.members.size() == 1 && a.members[0].unsized;
         if (arrayBlock) {
             const Member& m = a.members[0];
@@ -701,27 +715,71 @@ std::string generate(const std::string& input, const std::string& ns, const std:
     return o.str();
 }
 
+std::string readFile(const std::string& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw ParseError(path + ": error: cannot read");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// The aggregates of `path` after those of the files it includes (each file once, in the
+// order the shader preprocessor would expand them); `files` collects every file read.
+void parseFile(const std::string& path, std::vector<Define>& defines, std::vector<Aggregate>& aggregates,
+               std::vector<std::string>& files)
+{
+    if (std::find(files.begin(), files.end(), path) != files.end())
+        return;
+    files.push_back(path);
+    g_file = path;
+    std::vector<Define> own;
+    std::vector<std::string> includes;
+    const std::string code = takeDirectives(readFile(path), own, includes);
+    const std::string folder = path.substr(0, path.find_last_of("/\\") + 1);
+    for (const std::string& include : includes)
+        parseFile(folder + include, defines, aggregates, files);
+    g_file = path;
+    std::vector<Aggregate> parsed = Parser(tokenize(code), own).parse();
+    for (Aggregate& a : parsed) {
+        a.file = path;
+        aggregates.push_back(std::move(a));
+    }
+    // Only the file's own constants become C++ constants; an included file's stay in its
+    // own header.
+    if (path == files.front())
+        defines = std::move(own);
+}
+
+std::string depfileText(const std::string& outputPath, const std::vector<std::string>& files)
+{
+    std::string text = outputPath + ":";
+    for (const std::string& f : files)
+        text += " " + f;
+    return text + "\n";
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-    if (argc != 5) {
-        std::fprintf(stderr, "usage: lfd_gpu_layout_gen INPUT.glsl OUTPUT.h NAMESPACE PREFIX\n");
+    if (argc != 5 && argc != 6) {
+        std::fprintf(stderr, "usage: lfd_gpu_layout_gen INPUT.glsl OUTPUT.h NAMESPACE PREFIX [DEPFILE]\n");
         return 2;
     }
     const std::string inputPath = argv[1], outputPath = argv[2];
-    g_file = inputPath;
     try {
-        std::ifstream in(inputPath, std::ios::binary);
-        if (!in)
-            throw ParseError(inputPath + ": error: cannot read");
-        std::ostringstream text;
-        text << in.rdbuf();
         std::vector<Define> defines;
-        const std::string code = takeDirectives(text.str(), defines);
-        std::vector<Aggregate> aggregates = Parser(tokenize(code), defines).parse();
+        std::vector<Aggregate> aggregates;
+        std::vector<std::string> files;
+        parseFile(inputPath, defines, aggregates, files);
         const std::string name = inputPath.substr(inputPath.find_last_of("/\\") + 1);
         const std::string content = generate(name, argv[3], argv[4], defines, aggregates);
+        if (argc == 6) {
+            std::ofstream dep(argv[5], std::ios::binary | std::ios::trunc);
+            dep << depfileText(outputPath, files);
+        }
 
         std::ifstream old(outputPath, std::ios::binary);
         std::ostringstream oldText;

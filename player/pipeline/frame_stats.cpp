@@ -79,6 +79,28 @@ std::string statsCsv(const std::map<std::string, StageTimes>& stages)
     return csv.str();
 }
 
+std::string workCsv(const std::vector<std::vector<std::pair<std::string, double>>>& workPerFrame)
+{
+    if (workPerFrame.empty())
+        return {};
+    std::ostringstream csv;
+    csv << "frame";
+    for (const auto& [name, value] : workPerFrame.front())
+        csv << ',' << name;
+    csv << '\n';
+    char text[64];
+    for (size_t f = 0; f < workPerFrame.size(); ++f) {
+        csv << f;
+        for (const auto& [name, value] : workPerFrame[f]) {
+            // Counts are integers; %.17g keeps any that are not (none today) exact.
+            std::snprintf(text, sizeof(text), "%.17g", value);
+            csv << ',' << text;
+        }
+        csv << '\n';
+    }
+    return csv.str();
+}
+
 void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
                 const std::map<std::string, StageTimes>& stages)
 {
@@ -88,6 +110,11 @@ void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
         csvPath += ".csv";
     writeFileAtomically(jsonPath, statsJson(info, stages).dump(2) + "\n");
     writeFileAtomically(csvPath, statsCsv(stages));
+    if (!info.workPerFrame.empty()) {
+        std::filesystem::path workPath = csvPath;
+        workPath.replace_extension(".work.csv");
+        writeFileAtomically(workPath, workCsv(info.workPerFrame));
+    }
 }
 
 } // namespace lfd::player

@@ -29,6 +29,9 @@ struct RunInfo {
     // measured, e.g. quilt input), and the process's peak resident set (getrusage).
     double timeToFirstFrameMs = -1.0, timeToResidentMs = -1.0, peakHostMemoryMiB = 0.0;
     bool streaming = false;
+    // With work counters on (--lfdpr-work-counters): each timed frame's Renderer::extraStats()
+    // entries named work_*, in frame order (written as the work CSV below).
+    std::vector<std::vector<std::pair<std::string, double>>> workPerFrame;
 };
 
 // Keys: renderer, views, view_width, view_height, frames, gpu, <stage>_ms (means) for
@@ -44,7 +47,12 @@ nlohmann::json statsJson(const RunInfo& info, const std::map<std::string, StageT
 // "frame,stage,ms" header, then one row per recorded sample.
 std::string statsCsv(const std::map<std::string, StageTimes>& stages);
 
-// Writes `jsonPath` and its .csv sibling atomically (atomic_file.h). Throws
+// "frame,<counter>,..." header (the counters of the first frame, in its order), then one row
+// per frame; empty when `workPerFrame` is.
+std::string workCsv(const std::vector<std::vector<std::pair<std::string, double>>>& workPerFrame);
+
+// Writes `jsonPath` and its .csv sibling atomically (atomic_file.h), and with per-frame work
+// counters a second sibling, STEM.work.csv (workCsv). Throws
 // AtomicWriteError (a std::runtime_error) naming the file.
 void writeStats(const std::filesystem::path& jsonPath, const RunInfo& info,
                 const std::map<std::string, StageTimes>& stages);

@@ -435,6 +435,65 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
 
+// Per-frame work counters (docs/player/lfd-play.md, --stats): with --lfdpr-work-counters a
+// third file, STEM.work.csv, holds one row per timed frame; its last row is the frame the
+// JSON reports.
+TEST_F(CliTest, WorkCountersArePerFrameInTheStatsWorkCsv)
+{
+    const fs::path out = dir_ / "out";
+    fs::create_directories(out);
+    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) +
+                               " --views 4 --view-size 96x72 --frames 3 --lfdpr-work-counters";
+    for (const char* renderer : {"lfdpr", "mvr"}) {
+        const fs::path json = out / (std::string(renderer) + ".json");
+        const RunResult r = runPlay(dir_, common + " --renderer " + renderer + " --stats " + q(json));
+        ASSERT_EQ(r.status, 0) << r.err;
+        const nlohmann::json stats = nlohmann::json::parse(readText(json));
+        std::istringstream csv(readText(out / (std::string(renderer) + ".work.csv")));
+        std::string header, row;
+        std::getline(csv, header);
+        std::vector<std::string> names;
+        for (std::istringstream h(header); std::getline(h, row, ',');)
+            names.push_back(row);
+        ASSERT_GE(names.size(), 3u) << header;
+        EXPECT_EQ(names[0], "frame");
+        std::vector<std::vector<double>> rows;
+        while (std::getline(csv, row)) {
+            std::vector<double> values;
+            std::istringstream cells(row);
+            for (std::string cell; std::getline(cells, cell, ',');)
+                values.push_back(std::stod(cell));
+            ASSERT_EQ(values.size(), names.size()) << row;
+            rows.push_back(values);
+        }
+        ASSERT_EQ(rows.size(), 3u) << renderer;
+        const std::string busiest = std::string(renderer) == "mvr" ? "work_triangle_views" : "work_samples";
+        const size_t column = size_t(std::find(names.begin(), names.end(), busiest) - names.begin());
+        ASSERT_LT(column, names.size()) << header;
+        for (size_t f = 0; f < rows.size(); ++f) {
+            EXPECT_EQ(rows[f][0], double(f));
+            EXPECT_GT(rows[f][column], 0.0) << renderer << " frame " << f << " " << busiest;
+        }
+        for (size_t c = 1; c < names.size(); ++c) {
+            EXPECT_EQ(names[c].rfind("work_", 0), 0u) << names[c];
+            EXPECT_EQ(rows.back()[c], stats[names[c]].get<double>()) << renderer << " " << names[c];
+        }
+        // The test scene turns between frames, so lfdpr's point and sample counts move with it
+        // (each row is its own frame, not the last frame's counts copied); mvr draws every
+        // triangle in every view, so its counts stay.
+        if (std::string(renderer) == "lfdpr")
+            EXPECT_NE(rows.front()[column], rows.back()[column]) << "frames 0 and 2 counted alike";
+        else
+            EXPECT_EQ(rows.front()[column], rows.back()[column]);
+    }
+    // Without the counters there is no work file.
+    const RunResult plain = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+                                              " --views 4 --view-size 96x72 --renderer lfdpr --stats " +
+                                              q(out / "plain.json"));
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    EXPECT_FALSE(fs::exists(out / "plain.work.csv"));
+}
+
 TEST_F(CliTest, GstdRendererHeadlessWithFactor)
 {
     const fs::path out = dir_ / "out";

@@ -51,10 +51,12 @@ TEST(ShaderLibrary, EveryShaderFileIsEmbeddedVerbatim)
 TEST(ShaderLibrary, IncludesResolveOnceWithLineMarkers)
 {
     const gl::PreprocessedShader s = gl::preprocessShader("mvr.frag", {"LFD_TEST_DEFINE 7"});
-    // pbr_shading.glsl includes srgb.glsl, so it comes in between; material_shading.glsl
-    // includes texture_transform.glsl.
-    EXPECT_EQ(s.files, (std::vector<std::string>{"mvr.frag", "scene_bindings.glsl", "pbr_shading.glsl", "srgb.glsl",
-                                                 "material_shading.glsl", "texture_transform.glsl"}));
+    // scene_bindings.glsl includes triangle_stats_bindings.glsl and pbr_shading.glsl includes
+    // srgb.glsl, so each comes right after its includer; material_shading.glsl includes
+    // texture_transform.glsl.
+    EXPECT_EQ(s.files, (std::vector<std::string>{"mvr.frag", "scene_bindings.glsl", "triangle_stats_bindings.glsl",
+                                                 "pbr_shading.glsl", "srgb.glsl", "material_shading.glsl",
+                                                 "texture_transform.glsl"}));
     EXPECT_EQ(s.text.find("#include"), std::string::npos);
     EXPECT_NE(s.text.find("struct MaterialGpu"), std::string::npos);
     EXPECT_EQ(s.text.find("struct MaterialGpu"), s.text.rfind("struct MaterialGpu")) << "included twice";
@@ -63,7 +65,8 @@ TEST(ShaderLibrary, IncludesResolveOnceWithLineMarkers)
     EXPECT_NE(s.text.find("#line 1 1\n"), std::string::npos);
     // mvr.vert includes mvr_vertex.glsl, which includes scene_bindings.glsl.
     const gl::PreprocessedShader v = gl::preprocessShader("mvr.vert");
-    EXPECT_EQ(v.files, (std::vector<std::string>{"mvr.vert", "mvr_vertex.glsl", "scene_bindings.glsl"}));
+    EXPECT_EQ(v.files, (std::vector<std::string>{"mvr.vert", "mvr_vertex.glsl", "scene_bindings.glsl",
+                                                 "triangle_stats_bindings.glsl"}));
 }
 
 TEST(ShaderLibrary, MissingIncludeNamesFileAndLine)
