@@ -37,6 +37,12 @@ inline RunResult run(const std::string& command)
 
 inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
+#ifdef LFD_BINARY_DIR
+// The tools in this build tree (LFD_BINARY_DIR: its top folder, set by tests/CMakeLists.txt).
+inline const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
+inline const std::string kMakeSamples = std::string(LFD_BINARY_DIR) + "/samples/lfd-make-samples";
+#endif
+
 inline std::string readBytes(const std::filesystem::path& path)
 {
     std::ifstream in(path, std::ios::binary);

@@ -15,14 +15,13 @@
 #include <thread>
 
 namespace fs = std::filesystem;
+using lfd::test::kBake;
+using lfd::test::kMakeSamples;
 using lfd::test::quoted;
 using lfd::test::run;
 using lfd::test::RunResult;
 
 namespace {
-
-const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
-const std::string kMakeSamples = std::string(LFD_BINARY_DIR) + "/samples/lfd-make-samples";
 
 class BakeOutputs : public ::testing::Test {
 protected:

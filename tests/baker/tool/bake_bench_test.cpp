@@ -14,8 +14,7 @@
 
 namespace {
 
-const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
-
+using lfd::test::kBake;
 using lfd::test::run;
 using lfd::test::RunResult;
 TEST(BakeBench, SmallBenchReportsEveryFigureForOneAndTwoThreads)

@@ -24,9 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
-const std::string kMakeSamples = std::string(LFD_BINARY_DIR) + "/samples/lfd-make-samples";
-
+using lfd::test::kBake;
+using lfd::test::kMakeSamples;
 using lfd::test::quoted;
 using lfd::test::readBytes;
 using lfd::test::run;

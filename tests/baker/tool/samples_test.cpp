@@ -5,6 +5,7 @@
 #include "imported_scene.h"
 #include "gltf_import.h"
 #include "tessellation.h"
+#include "tool_run.h"
 #include "lfd/scene_animation.h"
 #include "lfd/scene_pose.h"
 
@@ -33,7 +34,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kTool = LFD_BINARY_DIR "/samples/lfd-make-samples";
+using lfd::test::kMakeSamples;
 
 struct RunResult {
     int exitCode = -1;
@@ -42,7 +43,7 @@ struct RunResult {
 
 RunResult runTool(const std::string& arguments, const fs::path& logFile)
 {
-    const std::string command = "'" + kTool + "' " + arguments + " > '" + logFile.string() + "' 2>&1";
+    const std::string command = "'" + kMakeSamples + "' " + arguments + " > '" + logFile.string() + "' 2>&1";
     const int status = std::system(command.c_str());
     RunResult result;
     result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
