@@ -72,7 +72,7 @@ inline constexpr Use kIgnored = Use::Ignored;
     X(ACCESSOR_INDEX_OOB, Error, "An index naming a vertex the primitive does not have.")                            \
     X(DRACO_ATTRIBUTE_UNKNOWN, Error, "A Draco attribute the primitive does not have.")                             \
     X(DRACO_MODE_UNSUPPORTED, Error, "A Draco-compressed primitive that is not a triangle list.")                   \
-    X(DRACO_DECODE_FAILED, Error, "A Draco stream that does not decode.")                                            \
+    X(DRACO_DECODE_FAILED, Error, "A Draco stream that does not decode, or not to what its accessors describe.")                                            \
     X(DRACO_ACCESSOR_SHARED, Error, "An accessor filled by two different Draco streams.")                            \
     /* accessors (section 3.6.2) */                                                                                  \
     X(ACCESSOR_WRONG_FORMAT, Error, "An accessor whose type or component type does not fit its use.")                \
@@ -100,7 +100,7 @@ inline constexpr Use kIgnored = Use::Ignored;
     X(MESHOPT_BOTH_EXTENSIONS, Error, "A buffer view with both EXT_ and KHR_meshopt_compression.")                   \
     X(MESHOPT_INVALID, Error, "A meshopt extension object that breaks the extension's validity rules.")              \
     X(MESHOPT_DECODED_TOO_LONG, Error, "Meshopt data that decodes to more bytes than its buffer holds.")             \
-    X(MESHOPT_DECODE_FAILED, Error, "A meshopt stream that does not decode.")                                        \
+    X(MESHOPT_DECODE_FAILED, Error, "A meshopt stream that does not decode (corrupt, truncated, unsupported codec).")                                        \
     X(COMPRESSED_DATA_OUT_OF_BOUNDS, Error, "Compressed data that does not fit its buffer.")                         \
     X(URI_NOT_FETCHED, Error, "A remote URI; the baker does not fetch it.")                                          \
     X(DATA_URI_MALFORMED, Error, "A data URI that does not decode.")                                                 \
