@@ -17,13 +17,6 @@
 namespace lfd::bake::gltf {
 namespace {
 
-const json& arrayOf(const json& document, const char* key)
-{
-    static const json empty = json::array();
-    const auto it = document.find(key);
-    return it != document.end() && it->is_array() ? *it : empty;
-}
-
 // A non-negative integer member (the schema check has reported any other), or `fallback`.
 size_t sizeOf(const json& o, const char* key, size_t fallback = 0)
 {

@@ -60,14 +60,6 @@ std::optional<std::vector<uint8_t>> decodeBase64(const std::string& text)
 }
 
 
-
-const json& arrayOf(const json& document, const char* key)
-{
-    static const json empty = json::array();
-    const auto it = document.find(key);
-    return it != document.end() && it->is_array() ? *it : empty;
-}
-
 // The buffer views a KHR_draco_mesh_compression primitive decodes.
 void dracoViews(const json& document, std::set<size_t>& viewsRead)
 {

@@ -61,6 +61,13 @@ const json* member(const json& o, const char* key)
     return it == o.end() ? nullptr : &*it;
 }
 
+const json& arrayOf(const json& o, const char* key)
+{
+    static const json empty = json::array();
+    const json* v = member(o, key);
+    return v != nullptr && v->is_array() ? *v : empty;
+}
+
 bool isInteger(const json& v)
 {
     if (v.is_number_integer() || v.is_number_unsigned())

@@ -29,6 +29,9 @@ std::string describe(const json& v);
 // The member `key` of `o`, or nullptr when `o` is no object or has no such member.
 const json* member(const json& o, const char* key);
 
+// The array member `key` of `o`, or an empty array when it is absent or no array.
+const json& arrayOf(const json& o, const char* key);
+
 // JSON has one number type; 2.0 is an integer (JSON Schema "integer").
 bool isInteger(const json& v);
 
