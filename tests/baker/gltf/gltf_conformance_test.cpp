@@ -332,6 +332,36 @@ TEST_F(GltfConformance, GlbContainerDefectsAreRefusedByName)
                   IssueCode::BUFFER_BYTE_LENGTH_MISMATCH, "buffers[0].byteLength");
 }
 
+TEST_F(GltfConformance, ContainerAndJsonFindingsByCode)
+{
+    json doc = triangleScene();
+    doc["buffers"][0].erase("uri");
+    const std::vector<uint8_t> bin = triangleBytes();
+    // No BIN chunk for the buffer without uri.
+    expectRefused(writeBytes(glb({jsonChunk(doc)}), ".glb"), IssueCode::GLB_BIN_CHUNK_MISSING, "buffers[0]");
+    // Invalid JSON; a number beyond double precision.
+    const std::string broken = "{\"asset\": ";
+    expectRefused(writeBytes(std::vector<uint8_t>(broken.begin(), broken.end()), ".gltf"), IssueCode::INVALID_JSON,
+                  "(top level)");
+    json huge = triangleScene();
+    huge["nodes"][0]["translation"] = {12345, 0, 0};
+    std::string text = huge.dump();
+    text.replace(text.find("12345"), 5, "1e400");
+    expectRefused(writeBytes(std::vector<uint8_t>(text.begin(), text.end()), ".gltf"), IssueCode::NUMBER_OUT_OF_RANGE,
+                  "nodes[0].translation[0]");
+    // Bakeable: bytes after the declared length, an unknown chunk, a BIN chunk more than 3
+    // bytes longer than the buffer.
+    std::vector<uint8_t> file = triangleGlb();
+    file.insert(file.end(), {0, 0, 0, 0});
+    expectWarned(writeBytes(file, ".glb"), IssueCode::GLB_TRAILING_BYTES, "GLB header.length");
+    expectWarned(writeBytes(glb({jsonChunk(doc), {kBin, bin, 0}, {0x12345678u, {1, 2, 3, 4}, 0}}), ".glb"),
+                 IssueCode::GLB_UNKNOWN_CHUNK, "GLB chunk 2");
+    std::vector<uint8_t> longer = bin;
+    longer.insert(longer.end(), 8, 0);
+    expectWarned(writeBytes(glb({jsonChunk(doc), {kBin, longer, 0}}), ".glb"), IssueCode::GLB_BIN_CHUNK_UNUSED_BYTES,
+                 "buffers[0].byteLength");
+}
+
 // ---- Valid files that bake ----------------------------------------------------------
 
 TEST_F(GltfConformance, BufferWithoutUriThatNothingReadsBakes)

@@ -306,4 +306,128 @@ TEST_F(GltfValidation, BinaryGltfJsonChunkIsValidated)
     EXPECT_THROW(import(path), lfd::bake::BakeError);
 }
 
+// One case for each kind of finding the other tests here do not make: the finding (code,
+// JSON path, severity) is among those of the file, wherever it comes in the list.
+TEST_F(GltfValidation, EveryKindOfFindingHasACase)
+{
+    using lfd::test::IssueSeverity;
+    constexpr IssueSeverity kError = IssueSeverity::Error, kWarning = IssueSeverity::Warning;
+    std::vector<uint8_t> keys;
+    append<float>(keys, {-1, 1});
+    const json negativeKeys = {{"byteLength", 8}, {"uri", "data:application/octet-stream;base64," + base64(keys)}};
+    const json view6 = {{"buffer", 0}, {"byteLength", 12}};
+    const struct {
+        std::vector<std::pair<const char*, json>> edits; // JSON pointer, new value (null: removed)
+        IssueCode code;
+        const char* jsonPath;
+        IssueSeverity severity;
+    } cases[] = {
+        {{{"/nodes/1", {{"children", {3}}}}, {"/nodes/2", {{"children", {3}}}}, {"/nodes/3", json::object()}},
+         IssueCode::NODE_MULTIPLE_PARENTS, "nodes[2].children[0]", kError},
+        {{{"/meshes/0/primitives/1", {{"attributes", {{"POSITION", 0}}}, {"targets", {{{"POSITION", 0}}}}}}},
+         IssueCode::MESH_PRIMITIVES_UNEQUAL_TARGETS_COUNT, "meshes[0].primitives[1].targets", kError},
+        {{{"/accessors/1/count", 2}}, IssueCode::MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT,
+         "meshes[0].primitives[0].attributes.TEXCOORD_0", kError},
+        {{{"/meshes/0/primitives/0/targets", {{{"TANGENT", 0}}}}}, IssueCode::MORPH_TARGET_ATTRIBUTE_UNKNOWN,
+         "meshes[0].primitives[0].targets[0].TANGENT", kError},
+        {{{"/bufferViews/6", view6},
+          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}}},
+          {"/meshes/0/primitives/0/attributes/_CUSTOM", 6}},
+         IssueCode::VERTEX_ATTRIBUTE_UNSIGNED_INT, "meshes[0].primitives[0].attributes._CUSTOM", kWarning},
+        {{{"/bufferViews/6", view6},
+          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5121}, {"count", 3}, {"type", "VEC4"}}},
+          {"/meshes/0/primitives/0/attributes/JOINTS_0", 6}},
+         IssueCode::SKINNING_ATTRIBUTES_UNPAIRED, "meshes[0].primitives[0].attributes", kWarning},
+        {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 16}}},
+          {"/accessors/6",
+           {{"bufferView", 6}, {"byteOffset", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}}},
+          {"/meshes/0/primitives/0/attributes/TEXCOORD_1", 6}},
+         IssueCode::VERTEX_ATTRIBUTE_MISALIGNED, "accessors[6].byteOffset", kError},
+        {{{"/accessors/6",
+           {{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+            {"sparse", {{"count", 3}, {"indices", {{"bufferView", 5}, {"byteOffset", 8}, {"componentType", 5125}}},
+                        {"values", {{"bufferView", 0}}}}}}}},
+         IssueCode::ACCESSOR_SPARSE_INDEX_OOB, "accessors[6].sparse.indices", kError},
+        {{{"/accessors/6",
+           {{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+            {"sparse", {{"count", 3}, {"indices", {{"bufferView", 5}, {"componentType", 5125}}},
+                        {"values", {{"bufferView", 0}}}}}}}},
+         IssueCode::ACCESSOR_SPARSE_INDICES_NON_INCREASING, "accessors[6].sparse.indices", kError},
+        {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 36}, {"byteStride", 8}}},
+          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
+         IssueCode::ACCESSOR_ELEMENT_LONGER_THAN_STRIDE, "accessors[6]", kWarning}, // nothing reads it
+        {{{"/bufferViews/6", {{"buffer", 0}, {"byteOffset", 2}, {"byteLength", 8}}},
+          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 1}, {"type", "SCALAR"}}}},
+         IssueCode::ACCESSOR_TOTAL_OFFSET_ALIGNMENT, "accessors[6]", kWarning},
+        // NORMAL's data read as VEC4: unit xyz, w = 0.
+        {{{"/accessors/6", {{"bufferView", 5}, {"componentType", 5126}, {"count", 2}, {"type", "VEC4"}}},
+          {"/meshes/0/primitives/0/attributes/TANGENT", 6}},
+         IssueCode::ACCESSOR_INVALID_SIGN, "accessors[6]", kWarning},
+        // The index view, without its target, also read as vertex data (tinygltf then gives it
+        // the vertex target).
+        {{{"/bufferViews/2/target", nullptr},
+          {"/accessors/6", {{"bufferView", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 1}, {"type", "VEC2"}}},
+          {"/meshes/0/primitives/0/attributes/TEXCOORD_1", 6}},
+         IssueCode::BUFFER_VIEW_TARGET_MISMATCH, "bufferViews[2].target", kError},
+        {{{"/bufferViews/3/extensions",
+           {{"EXT_meshopt_compression", json::object()}, {"KHR_meshopt_compression", json::object()}}}},
+         IssueCode::MESHOPT_BOTH_EXTENSIONS, "bufferViews[3].extensions", kError},
+        {{{"/buffers/0/uri", "data:application/octet-stream;base64,@@@@"}}, IssueCode::DATA_URI_MALFORMED,
+         "buffers[0].uri", kError},
+        {{{"/images/0/uri", "data:image/png;base64,"}}, IssueCode::DATA_URI_EMPTY, "images[0].uri", kError},
+        {{{"/buffers/0/uri", "data:text/plain;base64,AAAA"}}, IssueCode::DATA_URI_MEDIA_TYPE_INVALID, "buffers[0].uri",
+         kError},
+        {{{"/images/0", {{"bufferView", 6}, {"mimeType", "image/png"}}},
+          {"/bufferViews/6", {{"buffer", 0}, {"byteLength", 8}, {"byteStride", 4}}}},
+         IssueCode::IMAGE_BUFFER_VIEW_WITH_BYTESTRIDE, "images[0].bufferView", kError},
+        {{{"/images/0", {{"bufferView", 6}}}, {"/bufferViews/6", {{"buffer", 0}, {"byteLength", 8}}}},
+         IssueCode::IMAGE_MIME_TYPE_MISSING, "images[0].mimeType", kWarning},
+        {{{"/images/0/mimeType", "image/jpeg"}}, IssueCode::IMAGE_MIME_TYPE_MISMATCH, "images[0].mimeType", kWarning},
+        {{{"/animations/0/channels/0/target/path", "weights"}},
+         IssueCode::ANIMATION_CHANNEL_TARGET_NODE_WEIGHTS_NO_MORPHS, "animations[0].channels[0].target.path", kError},
+        {{{"/bufferViews/3/byteStride", 4}}, IssueCode::ANIMATION_SAMPLER_ACCESSOR_WITH_BYTESTRIDE,
+         "animations[0].samplers[0].input", kError},
+        {{{"/buffers/1", negativeKeys},
+          {"/bufferViews/6", {{"buffer", 1}, {"byteLength", 8}}},
+          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"},
+                            {"min", {-1}}, {"max", {1}}}},
+          {"/animations/0/samplers/0/input", 6}},
+         IssueCode::ANIMATION_KEY_TIME_INVALID, "accessors[6]", kError},
+        {{{"/accessors/3/count", 1}, {"/animations/0/samplers/0/interpolation", "CUBICSPLINE"}},
+         IssueCode::ANIMATION_CUBICSPLINE_TOO_FEW_KEYS, "animations[0].samplers[0].input", kError},
+        {{{"/accessors/4/count", 1}}, IssueCode::ANIMATION_SAMPLER_OUTPUT_COUNT_MISMATCH,
+         "animations[0].samplers[0].output", kError},
+        {{{"/cameras", {{{"type", "perspective"}, {"perspective", {{"yfov", 1}, {"znear", 2}, {"zfar", 1}}}}}}},
+         IssueCode::CAMERA_ZFAR_NOT_GREATER, "cameras[0].perspective", kWarning},
+        {{{"/nodes/1", json::object()}, {"/nodes/2", json::object()},
+          {"/skins", {{{"joints", {0, 1, 2}}, {"inverseBindMatrices", 3}, {"skeleton", 1}}}}},
+         IssueCode::SKIN_TOO_FEW_MATRICES, "skins[0].inverseBindMatrices", kWarning},
+        {{{"/nodes/1", json::object()}, {"/skins", {{{"joints", {0, 1}}}}}},
+         IssueCode::SKIN_NO_COMMON_ROOT, "skins[0].joints", kWarning},
+        {{{"/nodes/1", json::object()}, {"/skins", {{{"joints", {0}}, {"skeleton", 1}}}}},
+         IssueCode::SKIN_SKELETON_INVALID, "skins[0].skeleton", kWarning},
+        {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 64}, {"byteStride", 64}}},
+          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 1}, {"type", "MAT4"}}},
+          {"/skins", {{{"joints", {0}}, {"inverseBindMatrices", 6}}}}},
+         IssueCode::SKIN_IBM_ACCESSOR_WITH_BYTESTRIDE, "skins[0].inverseBindMatrices", kWarning},
+    };
+    for (const auto& c : cases) {
+        SCOPED_TRACE(lfd::test::codeName(c.code));
+        json doc = validScene();
+        for (const auto& [pointer, value] : c.edits) {
+            const json::json_pointer ptr(pointer);
+            if (value.is_null())
+                doc.at(ptr.parent_pointer()).erase(ptr.back());
+            else
+                doc[ptr] = value;
+        }
+        const std::vector<lfd::test::SchemaIssue> issues = lfd::test::gltfFindings(write(doc));
+        bool found = false;
+        for (const auto& i : issues)
+            found = found || (i.code == c.code && i.path == c.jsonPath && i.severity == c.severity);
+        EXPECT_TRUE(found) << "expected " << lfd::test::codeName(c.code) << " at " << c.jsonPath
+                           << lfd::test::listFindings(issues);
+    }
+}
+
 } // namespace
