@@ -55,7 +55,7 @@ public:
             if (!readChunk(index, *end, offset, sawBin, out))
                 return out;
         if (out.json.empty() && !hasError())
-            error("GLB", "has no JSON chunk");
+            report(IssueCode::GLB_CHUNK_INVALID, "GLB", "has no JSON chunk");
         return out;
     }
 
@@ -64,27 +64,27 @@ public:
     std::optional<size_t> readHeader()
     {
         if (bytes_.size() < 12) {
-            error("GLB header", "the file ends after " + std::to_string(bytes_.size()) + " bytes, inside the 12-byte header");
+            report(IssueCode::GLB_HEADER_INVALID, "GLB header", "the file ends after " + std::to_string(bytes_.size()) + " bytes, inside the 12-byte header");
             return std::nullopt;
         }
         const uint32_t version = readU32(bytes_, 4), length = readU32(bytes_, 8);
         if (version != 2) {
-            error("GLB header.version", std::to_string(version) + " is not 2" +
+            report(IssueCode::GLB_HEADER_INVALID, "GLB header.version", std::to_string(version) + " is not 2" +
                                             (version == 1 ? " (GLB version 1 is glTF 1.0, which this baker does not read)" : ""));
             return std::nullopt;
         }
         size_t end = bytes_.size();
         if (length < 12) {
-            error("GLB header.length", std::to_string(length) + " is smaller than the header");
+            report(IssueCode::GLB_HEADER_INVALID, "GLB header.length", std::to_string(length) + " is smaller than the header");
             return std::nullopt;
         }
         if (length > bytes_.size()) {
-            error("GLB header.length", std::to_string(length) + " exceeds the file's " + std::to_string(bytes_.size()) +
+            report(IssueCode::GLB_HEADER_INVALID, "GLB header.length", std::to_string(length) + " exceeds the file's " + std::to_string(bytes_.size()) +
                                            " bytes (truncated file)");
             return std::nullopt;
         }
         if (length < bytes_.size()) {
-            warn("GLB header.length", std::to_string(bytes_.size() - length) +
+            report(IssueCode::GLB_TRAILING_BYTES, "GLB header.length", std::to_string(bytes_.size() - length) +
                                           " bytes of extra data after the declared length: ignored");
             end = length;
         }
@@ -97,59 +97,55 @@ public:
     {
         const std::string where = "GLB chunk " + std::to_string(index);
         if (end - offset < 8) {
-            error(where, "the file ends inside the chunk's 8-byte header");
+            report(IssueCode::GLB_CHUNK_INVALID, where, "the file ends inside the chunk's 8-byte header");
             return false;
         }
         const uint32_t chunkLength = readU32(bytes_, offset), type = readU32(bytes_, offset + 4);
         const std::string named = where + (type == kChunkJson ? " (JSON)" : type == kChunkBin ? " (BIN)" : "");
         if (chunkLength > end - offset - 8) {
-            error(named, "chunkLength " + std::to_string(chunkLength) + " runs past the end of the GLB (" +
+            report(IssueCode::GLB_CHUNK_INVALID, named, "chunkLength " + std::to_string(chunkLength) + " runs past the end of the GLB (" +
                              std::to_string(end - offset - 8) + " bytes left)");
             return false;
         }
         // Section 4.4.3.1: "The start and the end of each chunk MUST be aligned to a
         // 4-byte boundary".
         if (chunkLength % 4 != 0)
-            error(named, "chunkLength " + std::to_string(chunkLength) + " is not a multiple of 4");
+            report(IssueCode::GLB_CHUNK_INVALID, named, "chunkLength " + std::to_string(chunkLength) + " is not a multiple of 4");
         const auto data = bytes_.begin() + std::ptrdiff_t(offset + 8);
         if (index == 0 && type != kChunkJson) {
-            error(where, "the first chunk is of type " + hex(type) + ", not JSON");
+            report(IssueCode::GLB_CHUNK_INVALID, where, "the first chunk is of type " + hex(type) + ", not JSON");
             return false;
         }
         if (type == kChunkJson) {
             if (index != 0) {
-                error(named, "a second JSON chunk");
+                report(IssueCode::GLB_CHUNK_INVALID, named, "a second JSON chunk");
             } else if (chunkLength == 0) {
-                error(named, "empty JSON chunk");
+                report(IssueCode::GLB_CHUNK_INVALID, named, "empty JSON chunk");
                 return false;
             } else {
                 out.json.assign(data, data + std::ptrdiff_t(chunkLength));
             }
         } else if (type == kChunkBin) {
             if (sawBin)
-                error(named, "a second BIN chunk (a GLB has at most one)");
+                report(IssueCode::GLB_CHUNK_INVALID, named, "a second BIN chunk (a GLB has at most one)");
             else if (index != 1)
-                error(named, "the BIN chunk is not the second chunk");
+                report(IssueCode::GLB_CHUNK_INVALID, named, "the BIN chunk is not the second chunk");
             else if (chunkLength == 0)
-                error(named, "empty BIN chunk");
+                report(IssueCode::GLB_CHUNK_INVALID, named, "empty BIN chunk");
             else
                 out.bin.emplace(data, data + std::ptrdiff_t(chunkLength));
             sawBin = true;
         } else {
-            warn(where, "unknown chunk type " + hex(type) + ": ignored");
+            report(IssueCode::GLB_UNKNOWN_CHUNK, where, "unknown chunk type " + hex(type) + ": ignored");
         }
         offset += 8 + size_t(chunkLength);
         return true;
     }
 
 private:
-    void error(const std::string& where, const std::string& what)
+    void report(IssueCode code, const std::string& where, const std::string& what)
     {
-        issues_.push_back({SchemaIssue::Severity::Error, where, what});
-    }
-    void warn(const std::string& where, const std::string& what)
-    {
-        issues_.push_back({SchemaIssue::Severity::Warning, where, what});
+        issues_.push_back(makeIssue(code, where, what));
     }
     bool hasError() const
     {
@@ -183,8 +179,8 @@ GltfContainer readGltfContainer(const std::filesystem::path& path, const std::st
     }
     // Section 3.3 "JSON encoding": "JSON MUST use UTF-8 encoding without BOM".
     if (startsWithBom(out.json)) {
-        issues.push_back({SchemaIssue::Severity::Error, out.binary ? "GLB chunk 0 (JSON)" : "(top level)",
-                          "starts with a UTF-8 byte-order mark, which glTF JSON must not have"});
+        issues.push_back(makeIssue(IssueCode::JSON_BYTE_ORDER_MARK, out.binary ? "GLB chunk 0 (JSON)" : "(top level)",
+                                   "starts with a UTF-8 byte-order mark, which glTF JSON must not have"));
         out.json.erase(0, 3);
     }
     return out;

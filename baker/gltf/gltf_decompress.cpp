@@ -5,6 +5,7 @@
 #include "gltf_draco.h"
 #include "gltf_meshopt.h"
 #include "parallel.h"
+#include "validation/context.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,17 +16,6 @@
 
 namespace lfd::bake::gltf {
 namespace {
-
-using json = nlohmann::json;
-
-std::string at(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
-
-const json& arrayOf(const json& document, const char* key)
-{
-    static const json empty = json::array();
-    const auto it = document.find(key);
-    return it != document.end() && it->is_array() ? *it : empty;
-}
 
 // A non-negative integer member (the schema check has reported any other), or `fallback`.
 size_t sizeOf(const json& o, const char* key, size_t fallback = 0)
@@ -68,9 +58,9 @@ private:
             return std::nullopt;
         const size_t size = buffers_[b].size();
         if (offset > size || length > size - offset) {
-            issues_.push_back({kError, path,
+            issues_.push_back(makeIssue(IssueCode::COMPRESSED_DATA_OUT_OF_BOUNDS, path,
                                what + " (byteOffset " + std::to_string(offset) + ", byteLength " + std::to_string(length) +
-                                   ") does not fit buffers[" + std::to_string(b) + "] (" + std::to_string(size) + " bytes)"});
+                                   ") does not fit buffers[" + std::to_string(b) + "] (" + std::to_string(size) + " bytes)"));
             return std::nullopt;
         }
         return std::span<const uint8_t>(buffers_[b].data() + offset, length);
@@ -140,9 +130,9 @@ void Decoder::meshoptViews()
         const size_t parent = sizeOf(views[v], "buffer", SIZE_MAX);
         const size_t parentLength = parent < buffers_.size() ? buffers_[parent].size() : 0;
         if (sizeOf(views[v], "byteOffset") + ext->byteStride * ext->count > parentLength) {
-            issues_.push_back({kError, path, "decodes to " + std::to_string(ext->byteStride * ext->count) +
+            issues_.push_back(makeIssue(IssueCode::MESHOPT_DECODED_TOO_LONG, path, "decodes to " + std::to_string(ext->byteStride * ext->count) +
                                                  " bytes, more than its buffers[" + std::to_string(parent) + "] holds (" +
-                                                 std::to_string(parentLength) + " bytes)"});
+                                                 std::to_string(parentLength) + " bytes)"));
             continue;
         }
         const std::string extPath = path + ".extensions." + ext->extension;
@@ -154,7 +144,8 @@ void Decoder::meshoptViews()
     for (Item& item : items) {
         json& view = doc_["bufferViews"][item.view];
         if (!item.why.empty()) {
-            issues_.push_back({kError, at("bufferViews", item.view) + ".extensions." + item.ext.extension, item.why});
+            issues_.push_back(makeIssue(IssueCode::MESHOPT_DECODE_FAILED,
+                                        at("bufferViews", item.view) + ".extensions." + item.ext.extension, item.why));
             continue;
         }
         // The view keeps its own layout (byteLength, byteStride, target) over the decoded bytes.
@@ -174,9 +165,9 @@ std::optional<std::vector<DracoTarget>> Decoder::dracoTargets(const json& primit
     // The extension: "the mode of primitive must be either TRIANGLES or TRIANGLE_STRIP".
     // The decoder returns triangle lists, whose index count a strip's accessor cannot match.
     if (const size_t mode = sizeOf(primitive, "mode", 4); mode != 4) {
-        issues_.push_back({kError, path + ".mode",
+        issues_.push_back(makeIssue(IssueCode::DRACO_MODE_UNSUPPORTED, path + ".mode",
                            std::to_string(mode) + ": only TRIANGLES (4) primitives are decoded from Draco streams, "
-                                                  "which hold triangle lists"});
+                                                  "which hold triangle lists"));
         return std::nullopt;
     }
     const json& accessors = arrayOf(doc_, "accessors");
@@ -235,9 +226,9 @@ void Decoder::dracoPrimitives()
     for (Item& item : items) {
         const std::string extPath = item.path + ".extensions." + kDraco;
         if (!item.why.empty())
-            issues_.push_back({kError, extPath,
+            issues_.push_back(makeIssue(IssueCode::DRACO_DECODE_FAILED, extPath,
                                item.why + " (bufferViews[" + std::to_string(item.view) + "], " +
-                                   std::to_string(item.stream.size()) + " bytes)"});
+                                   std::to_string(item.stream.size()) + " bytes)"));
         else
             applyDraco(item.primitive, item.view, item.decoded, item.generatedIndices, extPath);
     }
@@ -254,9 +245,9 @@ void Decoder::applyDraco(const json::json_pointer& primitivePointer, size_t view
         const auto [it, fresh] = dracoFilled_.emplace(d.accessor, view);
         if (!fresh) {
             if (it->second != view)
-                issues_.push_back({kError, path,
+                issues_.push_back(makeIssue(IssueCode::DRACO_ACCESSOR_SHARED, path,
                                    "accessors[" + std::to_string(d.accessor) + "] is also filled by the Draco stream in " +
-                                       at("bufferViews", it->second) + ": an accessor holds one decoded stream"});
+                                       at("bufferViews", it->second) + ": an accessor holds one decoded stream"));
             continue; // the same stream decoded again (primitives sharing it): the same data
         }
         json& accessor = doc_["accessors"][d.accessor];

@@ -6,7 +6,7 @@
 #include "gltf_container.h"
 #include "gltf_decompress.h"
 #include "gltf_resources.h"
-#include "gltf_semantics.h"
+#include "gltf_validation.h"
 
 #include <nlohmann/json.hpp>
 
@@ -128,20 +128,19 @@ std::vector<std::string> unsupportedRequired(const json& document)
     return found;
 }
 
-// Fails on the first error in `issues`; moves the warnings to `warnings` otherwise.
-void failOnErrors(std::vector<SchemaIssue>& issues, const std::string& file,
-                  std::vector<SchemaIssue>& warnings)
+// Moves `issues` to `found`, then fails on the first error among them, if any.
+void failOnErrors(std::vector<SchemaIssue>& issues, const std::string& file, std::vector<SchemaIssue>& found)
 {
     size_t errors = 0;
-    const SchemaIssue* first = nullptr;
+    std::string first;
     for (const SchemaIssue& issue : issues)
         if (issue.severity == SchemaIssue::Severity::Error && errors++ == 0)
-            first = &issue;
-    if (first != nullptr)
-        fail(file, first->text() + (errors > 1 ? " (and " + std::to_string(errors - 1) + " more errors)" : ""));
+            first = issue.text();
     for (SchemaIssue& issue : issues)
-        warnings.push_back(std::move(issue));
+        found.push_back(std::move(issue));
     issues.clear();
+    if (errors > 0)
+        fail(file, first + (errors > 1 ? " (and " + std::to_string(errors - 1) + " more errors)" : ""));
 }
 
 // Bytes of one element of an accessor of `type` and `componentType` (section 3.6.2.4:
@@ -210,8 +209,8 @@ std::string clampHugeNumbers(const std::string& text)
 void outOfRangeNumbers(const json& v, const std::string& path, std::vector<SchemaIssue>& issues)
 {
     if (v.is_number_float() && std::abs(v.get<double>()) == kOutOfRange) {
-        issues.push_back({SchemaIssue::Severity::Error, path.empty() ? "(top level)" : path,
-                          "a number beyond the range of double precision"});
+        issues.push_back(makeIssue(IssueCode::NUMBER_OUT_OF_RANGE, path.empty() ? "(top level)" : path,
+                                   "a number beyond the range of double precision"));
     } else if (v.is_object()) {
         for (const auto& [key, child] : v.items())
             outOfRangeNumbers(child, path.empty() ? key : path + "." + key, issues);
@@ -308,7 +307,7 @@ tinygltf::Model parseWithTinygltf(const json& document, Memory& memory, const fs
         const size_t end = std::min(warn.find('\n', start), warn.size());
         const std::string line = firstLine(warn.substr(start, end - start));
         if (!line.empty())
-            warnings.push_back({SchemaIssue::Severity::Warning, "(tinygltf)", line});
+            warnings.push_back(makeIssue(IssueCode::TINYGLTF_WARNING, "(tinygltf)", line));
         start = end + 1;
     }
     return model;
@@ -370,8 +369,8 @@ LoadedGltf loadGltf(const fs::path& path, const std::string& file, std::vector<S
         document = json::parse(clampHugeNumbers(container.json));
         outOfRangeNumbers(document, "", issues);
     } catch (const json::exception& e) {
-        issues.push_back({SchemaIssue::Severity::Error, container.binary ? "GLB chunk 0 (JSON)" : "(top level)",
-                          std::string("not valid JSON: ") + e.what()});
+        issues.push_back(makeIssue(IssueCode::INVALID_JSON, container.binary ? "GLB chunk 0 (JSON)" : "(top level)",
+                                   std::string("not valid JSON: ") + e.what()));
         failOnErrors(issues, file, warnings);
     }
 

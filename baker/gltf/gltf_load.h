@@ -2,7 +2,7 @@
 // whole document itself, in this order, before anything is converted - the container
 // (gltf_container.h), the JSON, the schema of every property the baker reads
 // (gltf_validation.h), the buffers and images the URIs name (gltf_resources.h), then the
-// document's semantics and data (gltf_semantics.h). tinygltf only parses JSON that has
+// document's semantics and data (gltf_validation.h). tinygltf only parses JSON that has
 // passed, with every buffer's bytes handed to it from memory, so its own messages never
 // reach the user. Compressed geometry (Draco, meshopt) is decoded between the resources and
 // the semantics (gltf_decompress.h), so the semantic checks see plain accessors. Every
@@ -55,11 +55,12 @@ struct LoadedGltf {
 // gltf_decompress.h) and EXT_texture_webp (WebP images, decoded by the texture stage).
 const std::set<std::string>& supportedExtensions();
 
-// Loads `path`. When any check finds an error, throws BakeError naming `file` and the first
-// error in check order (with the number of others); otherwise returns the model and appends
-// every warning found to `warnings`. Compressed geometry is decoded on up to `threads`
-// threads (0: one per hardware thread).
-LoadedGltf loadGltf(const std::filesystem::path& path, const std::string& file, std::vector<SchemaIssue>& warnings,
+// Loads `path`, appending every finding of its checks to `issues`. When any check finds an
+// error, throws BakeError naming `file` and the first error in check order (with the number
+// of others; `issues` then holds the findings up to that check, errors included); otherwise
+// returns the model (`issues` holds warnings only). Compressed geometry is decoded on up to
+// `threads` threads (0: one per hardware thread).
+LoadedGltf loadGltf(const std::filesystem::path& path, const std::string& file, std::vector<SchemaIssue>& issues,
                     unsigned threads = 0);
 
 } // namespace lfd::bake::gltf

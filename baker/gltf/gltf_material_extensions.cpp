@@ -28,18 +28,19 @@ void readTextureTransform(const tinygltf::ExtensionMap& extensions, MaterialText
     if (ext == nullptr)
         return;
     const tinygltf::Value& rotation = ext->Get("rotation");
-    info.transform = TextureTransform::fromOffsetRotationScale(
-        vec2Property(*ext, "offset", glm::vec2(0.0f)), rotation.IsNumber() ? float(rotation.GetNumberAsDouble()) : 0.0f,
-        vec2Property(*ext, "scale", glm::vec2(1.0f)));
+    info.transform.present = true;
+    info.transform.offset = vec2Property(*ext, "offset", glm::vec2(0.0f));
+    info.transform.rotation = rotation.IsNumber() ? float(rotation.GetNumberAsDouble()) : 0.0f;
+    info.transform.scale = vec2Property(*ext, "scale", glm::vec2(1.0f));
     if (const tinygltf::Value& texCoord = ext->Get("texCoord"); texCoord.IsNumber())
         info.texCoord = texCoord.GetNumberAsInt();
 }
 
 template <class Info>
-MaterialTextureInfo textureInfo(TextureSlot slot, const char* path, bool srgb, const Info& in)
+MaterialTextureInfo textureInfo(TextureInfoKind kind, const char* path, bool srgb, const Info& in)
 {
     MaterialTextureInfo info;
-    info.slot = slot;
+    info.kind = kind;
     info.path = path;
     info.srgb = srgb;
     info.index = in.index;
@@ -50,15 +51,16 @@ MaterialTextureInfo textureInfo(TextureSlot slot, const char* path, bool srgb, c
 
 } // namespace
 
-std::array<MaterialTextureInfo, kTextureSlotCount> materialTextureInfos(const tinygltf::Material& m)
+std::array<MaterialTextureInfo, kTextureInfoCount> materialTextureInfos(const tinygltf::Material& m)
 {
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
-    return {textureInfo(TextureSlot::BaseColor, "pbrMetallicRoughness.baseColorTexture", true, pbr.baseColorTexture),
-            textureInfo(TextureSlot::MetallicRoughness, "pbrMetallicRoughness.metallicRoughnessTexture", false,
+    return {textureInfo(TextureInfoKind::BaseColor, "pbrMetallicRoughness.baseColorTexture", true,
+                        pbr.baseColorTexture),
+            textureInfo(TextureInfoKind::MetallicRoughness, "pbrMetallicRoughness.metallicRoughnessTexture", false,
                         pbr.metallicRoughnessTexture),
-            textureInfo(TextureSlot::Normal, "normalTexture", false, m.normalTexture),
-            textureInfo(TextureSlot::Occlusion, "occlusionTexture", false, m.occlusionTexture),
-            textureInfo(TextureSlot::Emissive, "emissiveTexture", true, m.emissiveTexture)};
+            textureInfo(TextureInfoKind::Normal, "normalTexture", false, m.normalTexture),
+            textureInfo(TextureInfoKind::Occlusion, "occlusionTexture", false, m.occlusionTexture),
+            textureInfo(TextureInfoKind::Emissive, "emissiveTexture", true, m.emissiveTexture)};
 }
 
 bool isUnlit(const tinygltf::Material& material)

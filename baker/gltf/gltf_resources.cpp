@@ -3,6 +3,7 @@
 
 #include "gltf_json.h"
 #include "gltf_texture_source.h"
+#include "validation/context.h"
 
 #include <nlohmann/json.hpp>
 
@@ -16,8 +17,6 @@
 namespace lfd::bake::gltf {
 namespace {
 
-using json = nlohmann::json;
-using Severity = SchemaIssue::Severity;
 
 std::string lower(std::string s)
 {
@@ -60,16 +59,6 @@ std::optional<std::vector<uint8_t>> decodeBase64(const std::string& text)
     return out;
 }
 
-std::string at(const std::string& path, const std::string& key) { return path + "." + key; }
-std::string at(const char* array, size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
-
-
-const json& arrayOf(const json& document, const char* key)
-{
-    static const json empty = json::array();
-    const auto it = document.find(key);
-    return it != document.end() && it->is_array() ? *it : empty;
-}
 
 // The buffer views a KHR_draco_mesh_compression primitive decodes.
 void dracoViews(const json& document, std::set<size_t>& viewsRead)
@@ -162,7 +151,7 @@ class Resolver {
 public:
     Resolver(const json& document, const GltfContainer& container, const std::filesystem::path& baseDir,
              std::vector<SchemaIssue>& issues)
-        : document_(document), container_(container), baseDir_(baseDir), issues_(issues)
+        : document_(document), container_(container), baseDir_(baseDir), ctx_(document, issues)
     {
     }
 
@@ -189,11 +178,6 @@ public:
     }
 
 private:
-    void report(Severity s, const std::string& path, const std::string& message)
-    {
-        issues_.push_back({s, path, message});
-    }
-
     // Exactly byteLength bytes for buffer i; `readBy` names a view reading it, if any;
     // `hasData` false for a buffer without a uri (valid; its bytes are not in the file).
     std::vector<uint8_t> buffer(const json& b, size_t i, std::optional<size_t> readBy, bool& hasData)
@@ -212,11 +196,11 @@ private:
             return zeros(); // reported by the schema check
         // A problem with a buffer something reads is an error; with one nothing reads, a
         // warning (the file stays usable).
-        const Severity s = readBy ? Severity::Error : Severity::Warning;
+        const Use use = readBy ? kRead : kIgnored;
         const std::string reader = readBy ? " (bufferViews[" + std::to_string(*readBy) + "] reads it)" : "";
         // A buffer with a problem has no usable data either.
-        auto problem = [&](const std::string& where, const std::string& message) {
-            report(s, where, message);
+        auto problem = [&](IssueCode code, const std::string& where, const std::string& message) {
+            ctx_.report(code, where, message, use);
             hasData = false;
         };
         const auto uriIt = b.find("uri");
@@ -225,7 +209,7 @@ private:
             // means" (an extension, an application): valid, but not bakeable where the
             // importer needs the bytes (it says so then). In a GLB, buffers[0] is the BIN chunk.
             if (container_.binary && i == 0)
-                return binChunk(path, *byteLength, s, reader, hasData);
+                return binChunk(path, *byteLength, use, reader, hasData);
             hasData = false;
             return zeros();
         }
@@ -233,22 +217,22 @@ private:
         const std::string uriPath = at(path, "uri");
         const Uri uri = parseUri(text);
         if (uri.kind == Uri::Kind::Remote) {
-            problem(uriPath, "remote URIs are not fetched: " + text.substr(0, 120) + reader);
+            problem(IssueCode::URI_NOT_FETCHED, uriPath, "remote URIs are not fetched: " + text.substr(0, 120) + reader);
             return zeros();
         }
         if (uri.kind == Uri::Kind::Data) {
             const std::string media = lower(uri.mediaType);
             if (!media.empty() && media != "application/octet-stream" && media != "application/gltf-buffer")
-                problem(uriPath, "data URI media type '" + uri.mediaType +
+                problem(IssueCode::DATA_URI_MEDIA_TYPE_INVALID, uriPath, "data URI media type '" + uri.mediaType +
                                        "' is not application/octet-stream or application/gltf-buffer" + reader);
             std::string why;
             std::optional<std::vector<uint8_t>> data = decodeDataUri(uri, why);
             if (!data) {
-                problem(uriPath, "malformed data URI: " + why + reader);
+                problem(IssueCode::DATA_URI_MALFORMED, uriPath, "malformed data URI: " + why + reader);
                 return zeros();
             }
             if (data->size() != *byteLength)
-                problem(at(path, "byteLength"), std::to_string(*byteLength) + " does not match the " +
+                problem(IssueCode::BUFFER_BYTE_LENGTH_MISMATCH, at(path, "byteLength"), std::to_string(*byteLength) + " does not match the " +
                                                       std::to_string(data->size()) + " bytes of its data URI" + reader);
             return sized(std::move(*data));
         }
@@ -256,11 +240,11 @@ private:
         std::optional<std::vector<uint8_t>> data = readFile(file);
         filesRead_.push_back(file);
         if (!data) {
-            problem(uriPath, "file '" + file.string() + "' not found" + reader);
+            problem(IssueCode::RESOURCE_NOT_FOUND, uriPath, "file '" + file.string() + "' not found" + reader);
             return zeros();
         }
         if (data->size() < *byteLength)
-            problem(at(path, "byteLength"), std::to_string(*byteLength) + " exceeds the " +
+            problem(IssueCode::BUFFER_BYTE_LENGTH_MISMATCH, at(path, "byteLength"), std::to_string(*byteLength) + " exceeds the " +
                                                   std::to_string(data->size()) + " bytes of '" + file.string() + "'" +
                                                   reader);
         return sized(std::move(*data));
@@ -268,20 +252,23 @@ private:
 
     // Section 4.4.3.3: a GLB's buffers[0] without uri is its BIN chunk: byteLength bytes of
     // it (zeros, and no data, where the chunk is missing or too short).
-    std::vector<uint8_t> binChunk(const std::string& path, size_t byteLength, Severity s, const std::string& reader,
+    std::vector<uint8_t> binChunk(const std::string& path, size_t byteLength, Use use, const std::string& reader,
                                   bool& hasData)
     {
         if (!container_.bin || container_.bin->size() < byteLength) {
             if (!container_.bin)
-                report(s, path, "refers to the GLB's BIN chunk, but the file has none" + reader);
+                ctx_.report(IssueCode::GLB_BIN_CHUNK_MISSING, path, "refers to the GLB's BIN chunk, but the file has none" + reader,
+                            use);
             else
-                report(s, at(path, "byteLength"), std::to_string(byteLength) + " exceeds the BIN chunk's " +
-                                                      std::to_string(container_.bin->size()) + " bytes" + reader);
+                ctx_.report(IssueCode::BUFFER_BYTE_LENGTH_MISMATCH, at(path, "byteLength"),
+                            std::to_string(byteLength) + " exceeds the BIN chunk's " +
+                                std::to_string(container_.bin->size()) + " bytes" + reader,
+                            use);
             hasData = false;
             return std::vector<uint8_t>(byteLength, 0);
         }
         if (container_.bin->size() - byteLength > 3)
-            report(Severity::Warning, at(path, "byteLength"),
+            ctx_.report(IssueCode::GLB_BIN_CHUNK_UNUSED_BYTES, at(path, "byteLength"),
                    std::to_string(byteLength) + " leaves " + std::to_string(container_.bin->size() - byteLength) +
                        " bytes of the BIN chunk unused (at most 3 bytes of padding expected)");
         std::vector<uint8_t> data = *container_.bin;
@@ -297,10 +284,10 @@ private:
             return std::nullopt;
         const std::string& text = im["uri"].get_ref<const std::string&>();
         const std::string path = at(at("images", i), "uri");
-        const Severity s = used ? Severity::Error : Severity::Warning;
+        const Use use = used ? kRead : kIgnored;
         const Uri uri = parseUri(text);
         if (uri.kind == Uri::Kind::Remote) {
-            report(s, path, "remote URIs are not fetched: " + text.substr(0, 120));
+            ctx_.report(IssueCode::URI_NOT_FETCHED, path, "remote URIs are not fetched: " + text.substr(0, 120), use);
             return std::nullopt;
         }
         if (uri.kind != Uri::Kind::Data)
@@ -308,20 +295,21 @@ private:
         std::string why;
         std::optional<std::vector<uint8_t>> data = decodeDataUri(uri, why);
         if (!data) {
-            report(s, path, "malformed data URI: " + why);
+            ctx_.report(IssueCode::DATA_URI_MALFORMED, path, "malformed data URI: " + why, use);
             return data;
         }
         if (data->empty())
-            report(s, path, "empty data URI");
+            ctx_.report(IssueCode::DATA_URI_EMPTY, path, "empty data URI", use);
         // Section 3.8.4.4: core glTF images are PNG or JPEG, named by their media type
         // (the data URI's, and mimeType when given, must agree); EXT_texture_webp adds
         // image/webp, KHR_texture_basisu image/ktx2, in files that use them.
         const std::string media = lower(uri.mediaType);
         if (!knownMediaType(document_, media))
-            report(s, path, "data URI media type '" + uri.mediaType + "' is not one of " + describeMediaTypes(document_));
+            ctx_.report(IssueCode::DATA_URI_MEDIA_TYPE_INVALID, path,
+                        "data URI media type '" + uri.mediaType + "' is not one of " + describeMediaTypes(document_), use);
         else if (im.contains("mimeType") && im["mimeType"].is_string() && lower(im["mimeType"].get<std::string>()) != media)
             // The baker decodes by content, so a disagreement it can work around is a warning.
-            report(SchemaIssue::Severity::Warning, at(at("images", i), "mimeType"),
+            ctx_.report(IssueCode::IMAGE_MIME_TYPE_MISMATCH, at(at("images", i), "mimeType"),
                    "'" + im["mimeType"].get<std::string>() + "' does not match the data URI's media type '" +
                        uri.mediaType + "': decoded by content");
         return data;
@@ -330,7 +318,7 @@ private:
     const json& document_;
     const GltfContainer& container_;
     std::filesystem::path baseDir_;
-    std::vector<SchemaIssue>& issues_;
+    ValidationContext ctx_;
     std::vector<std::filesystem::path> filesRead_;
 };
 

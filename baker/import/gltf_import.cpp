@@ -402,6 +402,20 @@ std::string slotName(const gltf::MaterialTextureInfo& info)
     return path.substr(path.find_last_of('.') + 1);
 }
 
+// The pack's texture slot of a glTF texture info (the same five, in the same order).
+TextureSlot slotOf(gltf::TextureInfoKind kind)
+{
+    static_assert(gltf::kTextureInfoCount == kTextureSlotCount);
+    switch (kind) {
+    case gltf::TextureInfoKind::BaseColor: return TextureSlot::BaseColor;
+    case gltf::TextureInfoKind::MetallicRoughness: return TextureSlot::MetallicRoughness;
+    case gltf::TextureInfoKind::Normal: return TextureSlot::Normal;
+    case gltf::TextureInfoKind::Occlusion: return TextureSlot::Occlusion;
+    case gltf::TextureInfoKind::Emissive: return TextureSlot::Emissive;
+    }
+    return TextureSlot::BaseColor;
+}
+
 int32_t& textureField(Material& m, TextureSlot slot)
 {
     switch (slot) {
@@ -465,13 +479,18 @@ Material convertMaterial(const tinygltf::Model& model, size_t index, TextureTabl
     m.unlit = gltf::isUnlit(in);
     for (const gltf::MaterialTextureInfo& info : gltf::materialTextureInfos(in)) {
         const std::string slot = label + " " + slotName(info);
+        const TextureSlot textureSlot = slotOf(info.kind);
         const int32_t texture = textures.resolve(info.index, info.texCoord, info.srgb, slot);
-        textureField(m, info.slot) = texture;
+        textureField(m, textureSlot) = texture;
         if (texture == kNone)
             continue; // a transform of an unused slot would only make the pack larger
-        m.textureTransforms[uint32_t(info.slot)] = info.transform;
-        if (!std::isfinite(info.transform.areaScale()) || !std::isfinite(info.transform.offset.x) ||
-            !std::isfinite(info.transform.offset.y))
+        // Without the extension the slot keeps the identity.
+        const gltf::TextureInfoTransform& t = info.transform;
+        TextureTransform& transform = m.textureTransforms[uint32_t(textureSlot)];
+        if (t.present)
+            transform = TextureTransform::fromOffsetRotationScale(t.offset, t.rotation, t.scale);
+        if (!std::isfinite(transform.areaScale()) || !std::isfinite(transform.offset.x) ||
+            !std::isfinite(transform.offset.y))
             fail(file, slot + " KHR_texture_transform is too large for 32-bit floats");
     }
     return m;

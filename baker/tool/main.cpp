@@ -4,6 +4,7 @@
 #include "bake_bench.h"
 #include "bake_outputs.h"
 #include "bake_report.h"
+#include "gltf_issue_codes.h"
 #include "rgbd_import.h"
 #include "texture_compression.h"
 #include "lfd/pack.h"
@@ -29,6 +30,7 @@ struct Options {
     bool quiet = false;
     bool strict = false;
     bool bench = false;
+    bool listIssueCodes = false;
     unsigned benchRun = 0; // > 0: one --bench run in this process (started by --bench)
     BenchOptions benchOptions;
     std::vector<std::filesystem::path> rgbd; // --rgbd COLOR [DEPTH]: an RGB-D image instead of glTF
@@ -140,6 +142,8 @@ void addBakeFlags(CLI::App& app, Options& o)
     addRgbdFlags(app, o);
     app.add_flag("-q,--quiet", o.quiet, "print warnings and errors only");
     app.add_flag("--strict", o.strict, "treat every warning (e.g. a glTF schema violation the baker can work around) as an error");
+    app.add_flag("--list-issue-codes", o.listIssueCodes,
+                 "print the catalogue of glTF issue codes (code, severity, meaning) as a Markdown table and exit");
     app.add_option("--threads", o.bake.threads,
                    "threads for Draco/meshopt decoding, simplification, tessellation, triangle statistics and mip chains (default 0: "
                    "one per hardware thread; 1: serial); the pack is the same bytes for any count")
@@ -176,6 +180,10 @@ int main(int argc, char** argv)
     }
 
     try {
+        if (o.listIssueCodes) {
+            std::cout << lfd::bake::gltf::issueCodeTable();
+            return 0;
+        }
         if (!o.inspect.empty())
             return inspect(o.inspect);
         if (o.benchRun > 0)

@@ -1,10 +1,11 @@
 // glTF conformance (baker/gltf/gltf_load.h): one small file per defect class the baker must name
-// with its JSON path (refused, or baked with a warning, by the specification's MUST or
-// SHOULD), and the valid files a lenient loader used to refuse. Each file is written here:
+// with its issue code and JSON path (refused, or baked with a warning, by the specification's
+// MUST or SHOULD), and the valid files a lenient loader used to refuse. Each file is written here:
 // a unit triangle with unit normals and indices, broken in one place.
 #include "bake_log.h"
 #include "imported_scene.h"
 #include "gltf_import.h"
+#include "gltf_findings.h"
 #include "gltf_test_files.h"
 
 #include <gtest/gtest.h>
@@ -23,6 +24,7 @@ using lfd::test::append;
 using lfd::test::base64;
 using lfd::test::Chunk;
 using lfd::test::glb;
+using lfd::test::IssueCode;
 using lfd::test::jsonChunk;
 using lfd::test::kBin;
 using lfd::test::kJson;
@@ -90,20 +92,29 @@ protected:
 
     static ImportedScene import(const fs::path& path) { return lfd::bake::importGltf(path, lfd::bake::Log{}); }
 
-    // Refused with one line: "<file>: <expected>..." .
-    static void expectRefused(const fs::path& path, const std::string& expected)
+    // Refused with one line, "<file>: <jsonPath>: ...", whose finding is `code`.
+    static void expectRefused(const fs::path& path, IssueCode code, const std::string& jsonPath)
     {
+        lfd::test::expectRefusedWith(path, code, jsonPath);
         try {
             import(path);
-            ADD_FAILURE() << "accepted, expected: " << expected;
+            ADD_FAILURE() << "accepted, expected: " << jsonPath;
         } catch (const BakeError& e) {
             const std::string what = e.what();
-            EXPECT_EQ(what.rfind(path.string() + ": " + expected, 0), 0u) << what;
+            EXPECT_EQ(what.rfind(path.string() + ": " + jsonPath + ": ", 0), 0u) << what;
             EXPECT_EQ(what.find('\n'), std::string::npos) << what;
         }
     }
 
-    // Baked, with a warning that starts with `expected`.
+    // Baked, with a warning `code` at `jsonPath`.
+    static ImportedScene expectWarned(const fs::path& path, IssueCode code, const std::string& jsonPath)
+    {
+        lfd::test::expectWarningWith(path, code, jsonPath);
+        return expectWarned(path, jsonPath + ": ");
+    }
+
+    // Baked, with a warning that starts with `expected` (the importer's own warnings,
+    // which have no issue code).
     static ImportedScene expectWarned(const fs::path& path, const std::string& expected)
     {
         ImportedScene r;
@@ -139,24 +150,19 @@ TEST_F(GltfConformance, TheValidTriangleBakesWithoutWarnings)
 
 TEST_F(GltfConformance, NonUnitNormalsAreNamedAndRenormalised)
 {
-    const ImportedScene r = expectWarned(write(triangleScene(triangleBytes(2.0f))),
-                                         "accessors[1]: element 0 has length 2.0, not 1 "
-                                         "(meshes[0].primitives[0].attributes.NORMAL holds unit vectors): renormalised");
+    const ImportedScene r = expectWarned(write(triangleScene(triangleBytes(2.0f))), IssueCode::ACCESSOR_NON_UNIT, "accessors[1]");
     ASSERT_EQ(r.scene.vertices.normals.size(), 3u);
     EXPECT_FLOAT_EQ(r.scene.vertices.normals[0].z, 1.0f);
 }
 
 TEST_F(GltfConformance, IndexDataWithThePrimitiveRestartValueIsRefused)
 {
-    expectRefused(write(triangleScene(triangleBytes(1.0f, 0xFFFF))),
-                  "meshes[0].primitives[0].indices: accessors[2] element 2 is 65535, the primitive-restart value, "
-                  "which glTF index data must not contain");
+    expectRefused(write(triangleScene(triangleBytes(1.0f, 0xFFFF))), IssueCode::ACCESSOR_INDEX_PRIMITIVE_RESTART, "meshes[0].primitives[0].indices");
 }
 
 TEST_F(GltfConformance, IndexOutOfRangeIsRefused)
 {
-    expectRefused(write(triangleScene(triangleBytes(1.0f, 3))),
-                  "meshes[0].primitives[0].indices: accessors[2] element 2 is 3, but the primitive has 3 vertices");
+    expectRefused(write(triangleScene(triangleBytes(1.0f, 3))), IssueCode::ACCESSOR_INDEX_OOB, "meshes[0].primitives[0].indices");
 }
 
 TEST_F(GltfConformance, IndexViewWithAByteStrideIsRefused)
@@ -164,7 +170,7 @@ TEST_F(GltfConformance, IndexViewWithAByteStrideIsRefused)
     json doc = triangleScene();
     doc["bufferViews"][2]["byteStride"] = 4;
     doc["bufferViews"][2]["byteLength"] = 8;
-    expectRefused(write(doc), "bufferViews[2].byteStride: defined for a buffer view of index data (target 34963)");
+    expectRefused(write(doc), IssueCode::BUFFER_VIEW_STRIDE_ON_INDEX_DATA, "bufferViews[2].byteStride");
 }
 
 TEST_F(GltfConformance, VertexAccessorsSharingAViewWithoutByteStrideAreRefused)
@@ -173,23 +179,21 @@ TEST_F(GltfConformance, VertexAccessorsSharingAViewWithoutByteStrideAreRefused)
     doc["bufferViews"][0]["byteLength"] = 72;
     doc["accessors"][1]["bufferView"] = 0;
     doc["accessors"][1]["byteOffset"] = 36;
-    expectRefused(write(doc), "bufferViews[0]: has no byteStride but holds 2 vertex attribute accessors: "
-                              "meshes[0].primitives[0].attributes.POSITION (accessors[0]) and "
-                              "meshes[0].primitives[0].attributes.NORMAL (accessors[1])");
+    expectRefused(write(doc), IssueCode::BUFFER_VIEW_SHARED_WITHOUT_STRIDE, "bufferViews[0]");
 }
 
 TEST_F(GltfConformance, ByteStrideLongerThanItsViewIsRefused)
 {
     json doc = triangleScene();
     doc["bufferViews"][1]["byteStride"] = 40;
-    expectRefused(write(doc), "bufferViews[1].byteStride: 40 exceeds byteLength 36");
+    expectRefused(write(doc), IssueCode::BUFFER_VIEW_STRIDE_EXCEEDS_LENGTH, "bufferViews[1].byteStride");
 }
 
 TEST_F(GltfConformance, ByteStrideNotAMultipleOf4IsRefused)
 {
     json doc = triangleScene();
     doc["bufferViews"][1]["byteStride"] = 14;
-    expectRefused(write(doc), "bufferViews[1].byteStride: 14 is not a multiple of 4");
+    expectRefused(write(doc), IssueCode::BUFFER_VIEW_INVALID_BYTE_STRIDE, "bufferViews[1].byteStride");
 }
 
 TEST_F(GltfConformance, ByteOffsetWithoutBufferViewIsRefused)
@@ -197,7 +201,7 @@ TEST_F(GltfConformance, ByteOffsetWithoutBufferViewIsRefused)
     json doc = triangleScene();
     doc["accessors"][1].erase("bufferView");
     doc["accessors"][1]["byteOffset"] = 4;
-    expectRefused(write(doc), "accessors[1].byteOffset: given without bufferView");
+    expectRefused(write(doc), IssueCode::ACCESSOR_OFFSET_WITHOUT_BUFFER_VIEW, "accessors[1].byteOffset");
 }
 
 TEST_F(GltfConformance, AccessorOverrunningItsViewIsRefused)
@@ -205,30 +209,28 @@ TEST_F(GltfConformance, AccessorOverrunningItsViewIsRefused)
     json doc = triangleScene();
     doc["accessors"][0]["count"] = 4;
     doc["accessors"][1]["count"] = 4;
-    expectRefused(write(doc), "accessors[0]: 4 elements of 12 bytes at byteOffset 0 do not fit bufferViews[0] (36 bytes)");
+    expectRefused(write(doc), IssueCode::ACCESSOR_TOO_LONG, "accessors[0]");
 }
 
 TEST_F(GltfConformance, PositionWithoutMinAndMaxIsRefused)
 {
     json doc = triangleScene();
     doc["accessors"][0].erase("min");
-    expectRefused(write(doc), "accessors[0]: is a POSITION accessor (meshes[0].primitives[0].attributes.POSITION) "
-                              "without min and max (both required)");
+    expectRefused(write(doc), IssueCode::ACCESSOR_BOUNDS_MISSING, "accessors[0]");
 }
 
 TEST_F(GltfConformance, TwoChannelsTargetingOnePropertyAreRefused)
 {
     json doc = triangleScene(triangleBytes(), true);
     doc["animations"][0]["channels"].push_back(doc["animations"][0]["channels"][0]);
-    expectRefused(write(doc), "animations[0].channels[1].target: targets node 0 translation, as channels[0] does");
+    expectRefused(write(doc), IssueCode::ANIMATION_DUPLICATE_TARGETS, "animations[0].channels[1].target");
 }
 
 TEST_F(GltfConformance, AnimatedNodeWithAMatrixIsRefused)
 {
     json doc = triangleScene(triangleBytes(), true);
     doc["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    expectRefused(write(doc),
-                  "animations[0].channels[0].target.node: nodes[0] has a matrix, so its translation cannot be animated");
+    expectRefused(write(doc), IssueCode::ANIMATION_CHANNEL_TARGET_NODE_MATRIX, "animations[0].channels[0].target.node");
 }
 
 TEST_F(GltfConformance, KeyTimesNotStoredAsFloatAreRefused)
@@ -236,7 +238,7 @@ TEST_F(GltfConformance, KeyTimesNotStoredAsFloatAreRefused)
     json doc = triangleScene(triangleBytes(), true);
     doc["accessors"][3] = {{"bufferView", 3}, {"componentType", 5123}, {"count", 2}, {"type", "SCALAR"},
                            {"min", {0}}, {"max", {1}}};
-    expectRefused(write(doc), "animations[0].samplers[0].input: accessors[3] is SCALAR/UNSIGNED_SHORT, not SCALAR/FLOAT");
+    expectRefused(write(doc), IssueCode::ACCESSOR_WRONG_FORMAT, "animations[0].samplers[0].input");
 }
 
 TEST_F(GltfConformance, KeyTimesThatDoNotIncreaseAreRefused)
@@ -245,7 +247,7 @@ TEST_F(GltfConformance, KeyTimesThatDoNotIncreaseAreRefused)
     std::memset(bin.data() + 84, 0, 4); // times 0, 0
     json doc = triangleScene(bin, true);
     doc["accessors"][3]["max"] = {0};
-    expectRefused(write(doc), "accessors[3]: key time 1 (0.0) does not increase strictly (animations[0].samplers[0].input)");
+    expectRefused(write(doc), IssueCode::ANIMATION_KEY_TIMES_NOT_INCREASING, "accessors[3]");
 }
 
 TEST_F(GltfConformance, SceneListingANonRootNodeIsRefused)
@@ -253,7 +255,7 @@ TEST_F(GltfConformance, SceneListingANonRootNodeIsRefused)
     json doc = triangleScene();
     doc["nodes"].push_back({{"children", {0}}});
     doc["scenes"][0]["nodes"] = {1, 0};
-    expectRefused(write(doc), "scenes[0].nodes[1]: node 0 is not a root node (it is a child of nodes[1])");
+    expectRefused(write(doc), IssueCode::SCENE_NON_ROOT_NODE, "scenes[0].nodes[1]");
 }
 
 TEST_F(GltfConformance, NodeCycleIsRefused)
@@ -261,7 +263,7 @@ TEST_F(GltfConformance, NodeCycleIsRefused)
     json doc = triangleScene();
     doc["nodes"][0]["children"] = {1};
     doc["nodes"].push_back({{"children", {0}}});
-    expectRefused(write(doc), "nodes[0]: is its own ancestor (the children form a cycle)");
+    expectRefused(write(doc), IssueCode::NODE_LOOP, "nodes[0]");
 }
 
 TEST_F(GltfConformance, NodeWeightsNotMatchingTheMorphTargetsAreRefused)
@@ -269,7 +271,7 @@ TEST_F(GltfConformance, NodeWeightsNotMatchingTheMorphTargetsAreRefused)
     json doc = triangleScene();
     doc["meshes"][0]["primitives"][0]["targets"] = {{{"NORMAL", 1}}};
     doc["nodes"][0]["weights"] = {0.5, 0.5};
-    expectRefused(write(doc), "nodes[0].weights: 2 weights, but meshes[0] has 1 morph targets");
+    expectRefused(write(doc), IssueCode::WEIGHTS_COUNT_MISMATCH, "nodes[0].weights");
 }
 
 TEST_F(GltfConformance, EmptyTopLevelArraysAreWarnings)
@@ -277,20 +279,20 @@ TEST_F(GltfConformance, EmptyTopLevelArraysAreWarnings)
     json doc = triangleScene();
     doc["cameras"] = json::array();
     doc["materials"] = json::array();
-    expectWarned(write(doc), "cameras: empty array");
-    expectWarned(write(doc), "materials: empty array");
+    expectWarned(write(doc), IssueCode::EMPTY_ARRAY, "cameras");
+    expectWarned(write(doc), IssueCode::EMPTY_ARRAY, "materials");
 }
 
 TEST_F(GltfConformance, ByteOrderMarkBeforeTheJsonIsRefused)
 {
     const std::string text = "\xEF\xBB\xBF" + triangleScene().dump();
     const fs::path gltf = writeBytes(std::vector<uint8_t>(text.begin(), text.end()), ".gltf");
-    expectRefused(gltf, "(top level): starts with a UTF-8 byte-order mark, which glTF JSON must not have");
+    expectRefused(gltf, IssueCode::JSON_BYTE_ORDER_MARK, "(top level)");
 
     json doc = triangleScene();
     const std::string body = "\xEF\xBB\xBF" + doc.dump();
     const fs::path bin = writeBytes(glb({{kJson, std::vector<uint8_t>(body.begin(), body.end()), ' '}}), ".glb");
-    expectRefused(bin, "GLB chunk 0 (JSON): starts with a UTF-8 byte-order mark, which glTF JSON must not have");
+    expectRefused(bin, IssueCode::JSON_BYTE_ORDER_MARK, "GLB chunk 0 (JSON)");
 }
 
 TEST_F(GltfConformance, GlbContainerDefectsAreRefusedByName)
@@ -303,32 +305,61 @@ TEST_F(GltfConformance, GlbContainerDefectsAreRefusedByName)
     std::vector<uint8_t> odd = bin;
     odd.push_back(0);
     expectRefused(writeBytes(glb({jsonChunk(doc), {kBin, odd, 0}}, false), ".glb"),
-                  "GLB chunk 1 (BIN): chunkLength 113 is not a multiple of 4");
+                  IssueCode::GLB_CHUNK_INVALID, "GLB chunk 1 (BIN)");
     // A JSON chunk followed by two BIN chunks.
     expectRefused(writeBytes(glb({jsonChunk(doc), {kBin, bin, 0}, {kBin, bin, 0}}), ".glb"),
-                  "GLB chunk 2 (BIN): a second BIN chunk (a GLB has at most one)");
+                  IssueCode::GLB_CHUNK_INVALID, "GLB chunk 2 (BIN)");
     // Two JSON chunks.
     expectRefused(writeBytes(glb({jsonChunk(doc), jsonChunk(doc), {kBin, bin, 0}}), ".glb"),
-                  "GLB chunk 1 (JSON): a second JSON chunk");
+                  IssueCode::GLB_CHUNK_INVALID, "GLB chunk 1 (JSON)");
     // The BIN chunk first.
     expectRefused(writeBytes(glb({{kBin, bin, 0}, jsonChunk(doc)}), ".glb"),
-                  "GLB chunk 0: the first chunk is of type 0x004E4942, not JSON");
+                  IssueCode::GLB_CHUNK_INVALID, "GLB chunk 0");
     // Header defects: version, declared length, truncation.
     std::vector<uint8_t> file = triangleGlb();
     file[4] = 1;
-    expectRefused(writeBytes(file, ".glb"), "GLB header.version: 1 is not 2 (GLB version 1 is glTF 1.0, which this baker does not read)");
+    expectRefused(writeBytes(file, ".glb"), IssueCode::GLB_HEADER_INVALID, "GLB header.version");
     file = triangleGlb();
     const size_t size = file.size();
     file.resize(size - 10);
-    expectRefused(writeBytes(file, ".glb"), "GLB header.length: " + std::to_string(size) + " exceeds the file's " +
-                                                std::to_string(size - 10) + " bytes (truncated file)");
+    expectRefused(writeBytes(file, ".glb"), IssueCode::GLB_HEADER_INVALID, "GLB header.length");
     const uint32_t truncated = uint32_t(file.size());
     std::memcpy(file.data() + 8, &truncated, 4); // a consistent header: the BIN chunk runs past the end
-    expectRefused(writeBytes(file, ".glb"), "GLB chunk 1 (BIN): chunkLength 112 runs past the end of the GLB (102 bytes left)");
+    expectRefused(writeBytes(file, ".glb"), IssueCode::GLB_CHUNK_INVALID, "GLB chunk 1 (BIN)");
     // The buffer claims more bytes than the BIN chunk holds.
     doc["buffers"][0]["byteLength"] = bin.size() + 8;
     expectRefused(writeBytes(glb({jsonChunk(doc), {kBin, bin, 0}}), ".glb"),
-                  "buffers[0].byteLength: 120 exceeds the BIN chunk's 112 bytes");
+                  IssueCode::BUFFER_BYTE_LENGTH_MISMATCH, "buffers[0].byteLength");
+}
+
+TEST_F(GltfConformance, ContainerAndJsonFindingsByCode)
+{
+    json doc = triangleScene();
+    doc["buffers"][0].erase("uri");
+    const std::vector<uint8_t> bin = triangleBytes();
+    // No BIN chunk for the buffer without uri.
+    expectRefused(writeBytes(glb({jsonChunk(doc)}), ".glb"), IssueCode::GLB_BIN_CHUNK_MISSING, "buffers[0]");
+    // Invalid JSON; a number beyond double precision.
+    const std::string broken = "{\"asset\": ";
+    expectRefused(writeBytes(std::vector<uint8_t>(broken.begin(), broken.end()), ".gltf"), IssueCode::INVALID_JSON,
+                  "(top level)");
+    json huge = triangleScene();
+    huge["nodes"][0]["translation"] = {12345, 0, 0};
+    std::string text = huge.dump();
+    text.replace(text.find("12345"), 5, "1e400");
+    expectRefused(writeBytes(std::vector<uint8_t>(text.begin(), text.end()), ".gltf"), IssueCode::NUMBER_OUT_OF_RANGE,
+                  "nodes[0].translation[0]");
+    // Bakeable: bytes after the declared length, an unknown chunk, a BIN chunk more than 3
+    // bytes longer than the buffer.
+    std::vector<uint8_t> file = triangleGlb();
+    file.insert(file.end(), {0, 0, 0, 0});
+    expectWarned(writeBytes(file, ".glb"), IssueCode::GLB_TRAILING_BYTES, "GLB header.length");
+    expectWarned(writeBytes(glb({jsonChunk(doc), {kBin, bin, 0}, {0x12345678u, {1, 2, 3, 4}, 0}}), ".glb"),
+                 IssueCode::GLB_UNKNOWN_CHUNK, "GLB chunk 2");
+    std::vector<uint8_t> longer = bin;
+    longer.insert(longer.end(), 8, 0);
+    expectWarned(writeBytes(glb({jsonChunk(doc), {kBin, longer, 0}}), ".glb"), IssueCode::GLB_BIN_CHUNK_UNUSED_BYTES,
+                 "buffers[0].byteLength");
 }
 
 // ---- Valid files that bake ----------------------------------------------------------
@@ -439,7 +470,7 @@ TEST_F(GltfConformance, RemoteUrisAreNotFetched)
 {
     json doc = triangleScene();
     doc["buffers"][0]["uri"] = "http://example.com/triangle.bin";
-    expectRefused(write(doc), "buffers[0].uri: remote URIs are not fetched: http://example.com/triangle.bin");
+    expectRefused(write(doc), IssueCode::URI_NOT_FETCHED, "buffers[0].uri");
 }
 
 // ---- --strict: the first line is the real defect -----------------------------------

@@ -3,6 +3,7 @@
 // third-party scenes in ../shared/scenes.
 #include "bake_log.h"
 #include "imported_scene.h"
+#include "gltf_findings.h"
 #include "gltf_import.h"
 
 #include "skip_or_fail.h"
@@ -16,6 +17,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <tuple>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -64,6 +66,15 @@ void expectRejected(const fs::path& path, const std::string& part)
         EXPECT_EQ(what.find('\n'), std::string::npos) << what;
         EXPECT_NE(what.find(part), std::string::npos) << what;
     }
+}
+
+// Refused with one line naming the file and `jsonPath`, whose finding is `code`
+// (baker/gltf/gltf_issue_codes.h).
+void expectRejected(const fs::path& path, lfd::test::IssueCode code, const std::string& jsonPath)
+{
+    SCOPED_TRACE(path.string());
+    lfd::test::expectRefusedWith(path, code, jsonPath);
+    expectRejected(path, ": " + jsonPath + ": ");
 }
 
 // Triangle t of primitive p as indices relative to the primitive's first vertex.
@@ -373,17 +384,15 @@ TEST(GltfImport, TextureTransformUnlitAndLightsOfAHandMadeFile)
 
 TEST(GltfImport, BrokenHandMadeFilesAreRejected)
 {
-    expectRejected(kCases / "sheared_matrix.gltf", "nodes[0].matrix: has shear");
-    expectRejected(kCases / "recursive_nodes.gltf", "nodes[0]: is its own ancestor (the children form a cycle)");
-    expectRejected(kCases / "accessor_out_of_bounds.gltf",
-                   "accessors[0]: 4 elements of 12 bytes at byteOffset 0 do not fit bufferViews[0] (36 bytes)");
-    expectRejected(kCases / "index_out_of_range.gltf",
-                   "meshes[0].primitives[0].indices: accessors[2] element 2 is 3, but the primitive has 3 vertices");
+    using lfd::test::IssueCode;
+    expectRejected(kCases / "sheared_matrix.gltf", IssueCode::NODE_MATRIX_NON_TRS, "nodes[0].matrix");
+    expectRejected(kCases / "recursive_nodes.gltf", IssueCode::NODE_LOOP, "nodes[0]");
+    expectRejected(kCases / "accessor_out_of_bounds.gltf", IssueCode::ACCESSOR_TOO_LONG, "accessors[0]");
+    expectRejected(kCases / "index_out_of_range.gltf", IssueCode::ACCESSOR_INDEX_OOB, "meshes[0].primitives[0].indices");
     expectRejected(kCases / "basisu_required.gltf", "requires unsupported extension KHR_texture_basisu");
     expectRejected(kCases / "missing_bin.gltf", "missing_bin_does_not_exist.bin");
     expectRejected(kCases / "malformed.gltf", "parse error");
-    expectRejected(kCases / "bad_key_times.gltf",
-                   "accessors[2]: key time 2 (1.0) does not increase strictly (animations[0].samplers[0].input)");
+    expectRejected(kCases / "bad_key_times.gltf", IssueCode::ANIMATION_KEY_TIMES_NOT_INCREASING, "accessors[2]");
     expectRejected(kCases / "does_not_exist.gltf", "file not found");
     expectRejected(kCases, "is a directory");
 }
@@ -580,28 +589,33 @@ TEST_F(AssimpModels, PrimitiveModesOfAssetGenerator)
 
 TEST_F(AssimpModels, BrokenFilesAreRejectedWithOneLineErrors)
 {
-    const std::pair<const char*, const char*> cases[] = {
-        {"IndexOutOfRange/IndexOutOfRange.gltf",
-         "meshes[0].primitives[0].indices: accessors[0] element 0 is 255, but the primitive has 24 vertices"},
-        {"IndexOutOfRange/AllIndicesOutOfRange.gltf",
-         "meshes[0].primitives[0].indices: accessors[0] element 0 is 65535, the primitive-restart value"},
-        {"MissingBin/BoxTextured.gltf", "BoxTextured0.bin"},
-        {"RecursiveNodes/RecursiveNodes.gltf", "cycle"},
-        {"BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", "not finite"},
-        {"BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf", "requires unsupported extension KHR_technique_webgl"},
-        {"TestNoRootNode/NoScene.gltf", "scene: 0 is not an index into scenes (0 elements)"},
-        {"TestNoRootNode/SceneWithoutNodes.gltf", "no triangles"},
+    using lfd::test::IssueCode;
+    // Findings of the glTF checks: by code and JSON path.
+    const std::tuple<const char*, IssueCode, const char*> findings[] = {
+        {"IndexOutOfRange/IndexOutOfRange.gltf", IssueCode::ACCESSOR_INDEX_OOB, "meshes[0].primitives[0].indices"},
+        {"IndexOutOfRange/AllIndicesOutOfRange.gltf", IssueCode::ACCESSOR_INDEX_PRIMITIVE_RESTART,
+         "meshes[0].primitives[0].indices"},
+        {"MissingBin/BoxTextured.gltf", IssueCode::RESOURCE_NOT_FOUND, "buffers[0].uri"},
+        {"RecursiveNodes/RecursiveNodes.gltf", IssueCode::NODE_LOOP, "nodes[0]"},
+        {"BoxWithInfinites-glTF-Binary/BoxWithInfinites.glb", IssueCode::ACCESSOR_NON_FINITE, "accessors[2]"},
+        {"TestNoRootNode/NoScene.gltf", IssueCode::UNRESOLVED_REFERENCE, "scene"},
         // Its truncated POSITION accessors lack the min and max glTF requires of POSITION
         // (three overrunning bufferViews nothing reads are warnings).
-        {"IncorrectVertexArrays/Cube.gltf",
-         "accessors[6]: is a POSITION accessor (meshes[1].primitives[0].attributes.POSITION) without min and max"},
+        {"IncorrectVertexArrays/Cube.gltf", IssueCode::ACCESSOR_BOUNDS_MISSING, "accessors[6]"},
         // Schema violations tinygltf would drop silently, refused with the JSON path.
-        {"wrongTypes/badArray.gltf", "meshes[0].primitives: expected an array, got an object"},
-        {"wrongTypes/badNumber.gltf", "materials[0].normalTexture.scale: expected a number, got the string"},
-        {"wrongTypes/badObject.gltf", "materials[0].pbrMetallicRoughness: expected an object, got an array"},
-        {"wrongTypes/badUint.gltf",
-         "materials[0].pbrMetallicRoughness.baseColorTexture.index: -1 is not an index into textures"},
-        {"SchemaFailures/sceneWrongType.gltf", "scene: expected an index into scenes, got the string \"hello\""},
+        {"wrongTypes/badArray.gltf", IssueCode::TYPE_MISMATCH, "meshes[0].primitives"},
+        {"wrongTypes/badNumber.gltf", IssueCode::TYPE_MISMATCH, "materials[0].normalTexture.scale"},
+        {"wrongTypes/badObject.gltf", IssueCode::TYPE_MISMATCH, "materials[0].pbrMetallicRoughness"},
+        {"wrongTypes/badUint.gltf", IssueCode::UNRESOLVED_REFERENCE,
+         "materials[0].pbrMetallicRoughness.baseColorTexture.index"},
+        {"SchemaFailures/sceneWrongType.gltf", IssueCode::TYPE_MISMATCH, "scene"},
+    };
+    for (const auto& [file, code, jsonPath] : findings)
+        expectRejected(kAssimp / file, code, jsonPath);
+    // Refusals of the importer itself (no issue code).
+    const std::pair<const char*, const char*> cases[] = {
+        {"BoxTextured-glTF-techniqueWebGL/BoxTextured.gltf", "requires unsupported extension KHR_technique_webgl"},
+        {"TestNoRootNode/SceneWithoutNodes.gltf", "no triangles"},
     };
     for (const auto& [file, part] : cases)
         expectRejected(kAssimp / file, part);

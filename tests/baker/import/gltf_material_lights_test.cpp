@@ -4,6 +4,7 @@
 // JSON refused or warned about with its JSON path. Each case is a small file written here.
 #include "bake_log.h"
 #include "imported_scene.h"
+#include "gltf_findings.h"
 #include "gltf_import.h"
 #include "gltf_test_files.h"
 
@@ -16,6 +17,7 @@
 namespace fs = std::filesystem;
 using nlohmann::json;
 using lfd::bake::BakeError;
+using lfd::test::IssueCode;
 using lfd::bake::ImportedScene;
 
 namespace {
@@ -134,6 +136,13 @@ protected:
             EXPECT_NE(what.find(part), std::string::npos) << what;
         }
     }
+
+    // Refused with one line naming `jsonPath`, whose finding is `code` (gltf_issue_codes.h).
+    void expectRefused(const json& doc, IssueCode code, const std::string& jsonPath)
+    {
+        lfd::test::expectRefusedWith(write(doc), code, jsonPath);
+        expectRefused(doc, ": " + jsonPath + ": ");
+    }
 };
 
 TEST_F(GltfMaterialLights, TextureTransformValuesAndDefaults)
@@ -196,8 +205,10 @@ TEST_F(GltfMaterialLights, TexCoordOverrideDecidesWhetherASlotIsTextured)
     const ImportedScene overridden = import(texturedTriangle(textured(transformInfo({{"texCoord", 0}}, 1))));
     EXPECT_TRUE(overridden.warnings.empty()) << overridden.warnings.front();
     EXPECT_NE(overridden.scene.materials[0].baseColorTexture, lfd::kNone);
-    const ImportedScene missing = import(texturedTriangle(textured({{"index", 0}, {"texCoord", 1}})));
-    EXPECT_TRUE(hasWarning(missing, "uses TEXCOORD_1, which the primitive does not have"));
+    const fs::path missingFile = write(texturedTriangle(textured({{"index", 0}, {"texCoord", 1}})));
+    const ImportedScene missing = lfd::bake::importGltf(missingFile, lfd::bake::Log{});
+    EXPECT_FALSE(missing.warnings.empty());
+    lfd::test::expectWarningWith(missingFile, IssueCode::TEXCOORD_MISSING, "meshes[0].primitives[0].material");
 }
 
 TEST_F(GltfMaterialLights, UnlitMaterials)
@@ -307,14 +318,21 @@ TEST_F(GltfMaterialLights, OutOfRangeLightValuesAreClampedWithWarnings)
     lights[2]["spot"]["outerConeAngle"] = 2.0;
     doc["scenes"][0]["nodes"].push_back(4);
     doc["nodes"][2]["extensions"]["KHR_lights_punctual"]["light"] = 2;
-    const ImportedScene r = import(doc);
+    const fs::path file = write(doc);
+    const ImportedScene r = lfd::bake::importGltf(file, lfd::bake::Log{});
     const std::string path = "extensions.KHR_lights_punctual.lights";
-    EXPECT_TRUE(hasWarning(r, path + "[0].color[0]: 2.0 is outside [0.0, 1.0]: clamped"));
-    EXPECT_TRUE(hasWarning(r, path + "[0].color[2]: -1.0 is outside [0.0, 1.0]: clamped"));
-    EXPECT_TRUE(hasWarning(r, path + "[0].intensity: -3.0 is outside [0.0, inf]: clamped"));
-    EXPECT_TRUE(hasWarning(r, path + "[1].range: 0.0 is not greater than 0: ignored (unlimited range)"));
-    EXPECT_TRUE(hasWarning(r, path + "[1].spot: given for a point light: ignored"));
-    EXPECT_TRUE(hasWarning(r, path + "[2].spot.outerConeAngle: 2.0 is outside [0.0, 1.5707963267948966]: clamped"));
+    const std::pair<IssueCode, std::string> warnings[] = {
+        {IssueCode::VALUE_CLAMPED, path + "[0].color[0]"},
+        {IssueCode::VALUE_CLAMPED, path + "[0].color[2]"},
+        {IssueCode::VALUE_CLAMPED, path + "[0].intensity"},
+        {IssueCode::LIGHT_RANGE_NOT_POSITIVE, path + "[1].range"},
+        {IssueCode::PROPERTY_NOT_APPLICABLE, path + "[1].spot"},
+        {IssueCode::VALUE_CLAMPED, path + "[2].spot.outerConeAngle"},
+    };
+    for (const auto& [code, at] : warnings) {
+        lfd::test::expectWarningWith(file, code, at);
+        EXPECT_TRUE(hasWarning(r, at + ": ")) << at;
+    }
     ASSERT_EQ(r.scene.lights.size(), 4u);
     EXPECT_EQ(r.scene.lights[0].color, glm::vec3(1.0f, 0.5f, 0.0f));
     EXPECT_EQ(r.scene.lights[0].intensity, 0.0f);
@@ -326,25 +344,27 @@ TEST_F(GltfMaterialLights, BadTextureTransformJsonIsRefusedWithItsPath)
 {
     const struct {
         json transform;
-        std::string error;
+        IssueCode code;
+        std::string path;
     } cases[] = {
-        {{{"offset", "left"}}, kBaseColorTransform + ".offset: expected an array, got the string \"left\""},
-        {{{"offset", json::array({1.0})}}, kBaseColorTransform + ".offset: expected 2 numbers, got 1"},
-        {{{"scale", {1.0, "2"}}}, kBaseColorTransform + ".scale[1]: expected a number, got the string \"2\""},
-        {{{"rotation", json::array({0.5})}}, kBaseColorTransform + ".rotation: expected a number, got an array"},
-        {{{"texCoord", -1}}, kBaseColorTransform + ".texCoord: expected an integer >= 0, got -1"},
-        {{{"texCoord", 0.5}}, kBaseColorTransform + ".texCoord: expected an integer, got 0.5"},
+        {{{"offset", "left"}}, IssueCode::TYPE_MISMATCH, kBaseColorTransform + ".offset"},
+        {{{"offset", json::array({1.0})}}, IssueCode::ARRAY_LENGTH_MISMATCH, kBaseColorTransform + ".offset"},
+        {{{"scale", {1.0, "2"}}}, IssueCode::TYPE_MISMATCH, kBaseColorTransform + ".scale[1]"},
+        {{{"rotation", json::array({0.5})}}, IssueCode::TYPE_MISMATCH, kBaseColorTransform + ".rotation"},
+        {{{"texCoord", -1}}, IssueCode::VALUE_OUT_OF_RANGE, kBaseColorTransform + ".texCoord"},
+        {{{"texCoord", 0.5}}, IssueCode::TYPE_MISMATCH, kBaseColorTransform + ".texCoord"},
     };
     for (const auto& c : cases) {
         SCOPED_TRACE(c.transform.dump());
-        expectRefused(texturedTriangle(textured(transformInfo(c.transform))), c.error);
+        expectRefused(texturedTriangle(textured(transformInfo(c.transform))), c.code, c.path);
     }
     // A transform too large for the pack's floats: one line naming the slot.
     expectRefused(texturedTriangle(textured(transformInfo({{"scale", {1e30, 1e30}}}))),
                   "baseColorTexture KHR_texture_transform is too large for 32-bit floats");
     // Not an object: ignored with a warning, as any extension value.
-    const ImportedScene r = import(texturedTriangle(textured(transformInfo(json::array({1, 2})))));
-    EXPECT_TRUE(hasWarning(r, kBaseColorTransform + ": expected an object, got an array: extension ignored"));
+    const fs::path file = write(texturedTriangle(textured(transformInfo(json::array({1, 2})))));
+    const ImportedScene r = lfd::bake::importGltf(file, lfd::bake::Log{});
+    lfd::test::expectWarningWith(file, IssueCode::TYPE_MISMATCH, kBaseColorTransform);
     EXPECT_TRUE(r.scene.materials[0].transform(lfd::TextureSlot::BaseColor).identity());
 }
 
@@ -356,29 +376,31 @@ TEST_F(GltfMaterialLights, BadLightJsonIsRefusedWithItsPath)
         edit(doc, doc["extensions"]["KHR_lights_punctual"]["lights"]);
         return doc;
     };
-    expectRefused(broken([](json&, json& l) { l[0]["type"] = "area"; }),
-                  lights + "[0].type: expected one of directional, point, spot, got the string \"area\"");
-    expectRefused(broken([](json&, json& l) { l[1].erase("type"); }), lights + "[1].type: required property missing");
-    expectRefused(broken([](json&, json& l) { l[2].erase("spot"); }), lights + "[2].spot: required property missing");
+    expectRefused(broken([](json&, json& l) { l[0]["type"] = "area"; }), IssueCode::VALUE_NOT_IN_LIST,
+                  lights + "[0].type");
+    expectRefused(broken([](json&, json& l) { l[1].erase("type"); }), IssueCode::MISSING_REQUIRED_PROPERTY,
+                  lights + "[1].type");
+    expectRefused(broken([](json&, json& l) { l[2].erase("spot"); }), IssueCode::MISSING_REQUIRED_PROPERTY,
+                  lights + "[2].spot");
     expectRefused(broken([](json&, json& l) { l[2]["spot"] = {{"innerConeAngle", 0.5}, {"outerConeAngle", 0.4}}; }),
-                  lights + "[2].spot: innerConeAngle 0.5 is not less than outerConeAngle 0.4");
+                  IssueCode::SPOT_CONE_INVALID, lights + "[2].spot");
+    // Angles beyond pi/2 are clamped first (a warning), then compared.
     expectRefused(broken([](json&, json& l) { l[2]["spot"] = {{"innerConeAngle", 2.0}, {"outerConeAngle", 3.0}}; }),
-                  lights + "[2].spot: innerConeAngle 1.5707963267948966 is not less than outerConeAngle "
-                           "1.5707963267948966");
-    expectRefused(broken([](json&, json& l) { l[0]["color"] = {1.0, 1.0}; }),
-                  lights + "[0].color: expected 3 numbers, got 2");
-    expectRefused(broken([](json&, json& l) { l[1]["intensity"] = "bright"; }),
-                  lights + "[1].intensity: expected a number, got the string \"bright\"");
-    expectRefused(broken([](json&, json& l) { l[1]["range"] = true; }), lights + "[1].range: expected a number, got true");
-    expectRefused(broken([](json&, json& l) { l[0] = 5; }), lights + "[0]: expected an object, got 5");
+                  IssueCode::SPOT_CONE_INVALID, lights + "[2].spot");
+    expectRefused(broken([](json&, json& l) { l[0]["color"] = {1.0, 1.0}; }), IssueCode::ARRAY_LENGTH_MISMATCH,
+                  lights + "[0].color");
+    expectRefused(broken([](json&, json& l) { l[1]["intensity"] = "bright"; }), IssueCode::TYPE_MISMATCH,
+                  lights + "[1].intensity");
+    expectRefused(broken([](json&, json& l) { l[1]["range"] = true; }), IssueCode::TYPE_MISMATCH, lights + "[1].range");
+    expectRefused(broken([](json&, json& l) { l[0] = 5; }), IssueCode::TYPE_MISMATCH, lights + "[0]");
     expectRefused(broken([](json& d, json&) { d["extensions"]["KHR_lights_punctual"]["lights"] = json::object(); }),
-                  lights + ": expected an array, got an object");
+                  IssueCode::TYPE_MISMATCH, lights);
     expectRefused(broken([](json& d, json&) { d["nodes"][2]["extensions"]["KHR_lights_punctual"]["light"] = 7; }),
-                  "nodes[2].extensions.KHR_lights_punctual.light: 7 is not an index into " + lights + " (3 elements)");
+                  IssueCode::UNRESOLVED_REFERENCE, "nodes[2].extensions.KHR_lights_punctual.light");
     expectRefused(broken([](json& d, json&) { d["nodes"][3]["extensions"]["KHR_lights_punctual"].erase("light"); }),
-                  "nodes[3].extensions.KHR_lights_punctual.light: required property missing");
-    expectRefused(broken([](json& d, json&) { d.erase("extensions"); }),
-                  "nodes[1].extensions.KHR_lights_punctual.light: 0 is not an index into " + lights + " (0 elements)");
+                  IssueCode::MISSING_REQUIRED_PROPERTY, "nodes[3].extensions.KHR_lights_punctual.light");
+    expectRefused(broken([](json& d, json&) { d.erase("extensions"); }), IssueCode::UNRESOLVED_REFERENCE,
+                  "nodes[1].extensions.KHR_lights_punctual.light");
 }
 
 } // namespace
