@@ -69,26 +69,12 @@ layout(location = EIA_LOC_LENS_ORDER) uniform uvec2 lensOrder;
 
 #include "subpixel_phase.glsl"
 
-// floor(a / b) for unsigned a, b > 0 with a < 2^31, exactly: a float quotient (within a
-// few ulps of the true one, so off by at most one below 2^24) corrected by one integer
-// multiply each way. Why not a / b: integer division has no vector instruction, so
-// llvmpipe divides lane by lane (two divisions per subpixel made them the bulk of the
-// EIA pass); this is a handful of vector operations.
-uint floorDivide(uint a, uint b)
-{
-    uint q = uint(float(a) / float(b));
-    q -= (q * b > a) ? 1u : 0u;
-    q += ((q + 1u) * b <= a) ? 1u : 0u;
-    return q;
-}
+#include "subpixel_view_texel.glsl"
 
-// The view texel under subpixel (k, l): the view pixel containing its screen position,
-// in exact integer arithmetic (floor((k + 0.5) / 3W * viewWidth) without rounding).
+// The view texel under subpixel (k, l) (subpixel_view_texel.glsl).
 ivec2 viewTexelUnder(uint k, uint l)
 {
-    const uint x = floorDivide((2u * k + 1u) * viewSize.x, 6u * panelSize.x);
-    const uint rowFromTop = floorDivide((2u * l + 1u) * viewSize.y, 2u * panelSize.y);
-    return ivec2(int(x), int(viewSize.y - 1u - rowFromTop));
+    return subpixelViewTexel(k, l, panelSize, viewSize);
 }
 
 // Nearest view: the subpixel takes its channel from view floor(phase * N).

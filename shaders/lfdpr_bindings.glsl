@@ -164,6 +164,32 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_LOC_LARGE_CLASS 13   // lfdpr_visibility_points.comp: the dispatch class (its LFDPR_SSBO_LARGE_DISPATCH entry)
 #define LFDPR_LOC_CLEAR_BACKGROUND 14 // lfdpr_visibility_clear.comp: the views' background colour
 
+// The direct subpixel splat (LfdprOptions::Direct, renderer lfdpr-direct; docs/player/direct-splat.md):
+// the splat writes panel-subpixel words instead of view words (lfdpr_direct_fanout.glsl), the
+// shading shades each covered subpixel (lfdpr_direct_shade.comp) into one channel plane per
+// colour, and the pack pass writes the RGBA8 panel (lfdpr_direct_pack.comp).
+// Per view word (lfdViewWord) + 1: its first entry in LFDPR_SSBO_DIRECT_SUBPIXELS.
+#define LFDPR_SSBO_DIRECT_OFFSETS 25
+// uint per subpixel: subpixel indices l * 3W + k, grouped by the view word they show.
+#define LFDPR_SSBO_DIRECT_SUBPIXELS 26
+// Per subpixel (l * 3W + k), as a view word: uint64 key << 32 | record, or (32-bit path) the key.
+#define LFDPR_SSBO_PANEL_WORDS 27
+// 32-bit path: uint per subpixel, the winner's record (the lowest at the nearest key, record pass).
+#define LFDPR_SSBO_PANEL_INDEX 28
+// The winners read by the shading: RG32UI 64-bit words (x record, y key), or R32UI records.
+#define LFDPR_UNIT_PANEL_WORDS 21
+#define LFDPR_UNIT_SUBPIXELS 22        // sampler2DArray (R8): the shaded subpixels, layer = channel, GL rows
+#define LFDPR_IMAGE_SUBPIXELS 1        // r8 image2DArray: the same, written by the shading
+#define LFDPR_IMAGE_PANEL 2            // rgba8 image2D: the panel image (the EIA texture)
+#define LFDPR_LOC_PANEL_SIZE 15        // uvec2: panel width, height in pixels
+#define LFDPR_LOC_PER_SUBPIXEL 16      // uvec2: lfd::FixedSubpixelMapping::perSubpixel (low word, high word)
+#define LFDPR_LOC_PER_ROW 17           // uvec2
+#define LFDPR_LOC_PHASE_OFFSET 18      // uvec2
+#define LFDPR_LOC_INVERT_PHASE 19      // bool
+#define LFDPR_LOC_SUBPIXELS_BGR 20     // bool
+#define LFDPR_LOC_LENS_SUBPIXELS 21    // float (exact-ray mode): subpixel columns per lens, 1 / perSubpixel
+#define LFDPR_DIRECT_LOCAL_SIZE 8      // x and y of the shading and pack passes: one invocation per panel pixel
+
 // Shading (lfdpr_visibility_shade_list.comp, lfdpr_visibility_shade.comp): view pixels are shaded in tiles of
 // LFDPR_SHADE_TILE x LFDPR_SHADE_TILE pixels, a tile position over a chunk of views at a
 // time. Materials fall into shading groups - group 0 every untextured material, then one

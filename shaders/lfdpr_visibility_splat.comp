@@ -53,6 +53,13 @@
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
 
+// LFDPR_DIRECT (the direct subpixel splat, lfdpr_direct_fanout.glsl): the same coverage,
+// depth and records, written to panel-subpixel words; it marks no tile chunks (its
+// shading visits every panel pixel).
+#if !defined(LFDPR_DIRECT) && !defined(LFDPR_INDEX_PASS)
+#define LFDPR_MARK_CHUNKS
+#endif
+
 // An extension point after the 32-bit path's index write, empty here: only a test build of
 // this program defines it (lfdpr_visibility_shading.cpp, LfdprOptions::testIndexRaces).
 #ifndef LFDPR_AFTER_INDEX_WRITE
@@ -68,7 +75,7 @@ layout(std430, binding = LFDPR_SSBO_RECORDS) readonly buffer Records {
 layout(std430, binding = LFDPR_SSBO_VIS_COUNTERS) readonly buffer VisCounters {
     LfdprVisibilityCountersGpu vis;
 };
-#ifndef LFDPR_INDEX_PASS
+#ifdef LFDPR_MARK_CHUNKS
 layout(std430, binding = LFDPR_SSBO_CHUNK_MASKS) buffer ChunkMasks {
     uint chunkMasks[];
 };
@@ -102,7 +109,9 @@ void lfdMarkChunk(uint group, uint chunk, int tileLo, int tileHi, uvec2 tileRows
     }
 }
 #endif
-#ifdef LFDPR_INT64
+#ifdef LFDPR_DIRECT
+#include "lfdpr_direct_fanout.glsl"
+#elif defined(LFDPR_INT64)
 layout(std430, binding = LFDPR_SSBO_VIEW_DEPTH) buffer ViewWords {
     uint64_t viewWords[];
 };
@@ -235,7 +244,9 @@ uint cellCentres(ivec4 box, vec2 a, vec2 b, vec2 c, vec2 d)
 // The word write of one covered sample (step 6), with the work counters' atomics.
 void writeSample(uint pixel, uint key, uint record, uint index)
 {
-#if defined(LFDPR_INT64)
+#if defined(LFDPR_DIRECT)
+    lfdDirectFanOut(pixel, key, record); // to the panel subpixels that show view word `pixel`
+#elif defined(LFDPR_INT64)
     // A plain read first: a word already nearer (or as near with a lower record) makes the
     // atomic a no-op, so it is skipped - most of them where depth complexity is high. A
     // stale read is never nearer than the word (words only decrease), so nothing is
@@ -372,13 +383,13 @@ void splatPoint(uint index, uint slice, uint viewCount)
     uvec2 markViews = uvec2(0u);
     for (uint view = sliceFirst; view < endView; ++view) {
         ivec2 columns = splatView(view, viewCount, sp, viewPixels, doubleSided, mirrored, keyRange, record, index);
-#ifndef LFDPR_INDEX_PASS
+#ifdef LFDPR_MARK_CHUNKS
         // Step 7: gather this view's tiles for the chunk's marks.
         if (columns.x <= columns.y)
             gatherMarks(view - firstView, columns.x, columns.y, markLo, markHi, markViews);
 #endif
     }
-#ifndef LFDPR_INDEX_PASS
+#ifdef LFDPR_MARK_CHUNKS
     uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
     lfdMarkChunk(draw.group, firstView / uint(LFDPR_VIEW_CHUNK), markLo, markHi,
                  uvec2(sp.rows) / uint(LFDPR_SHADE_TILE), markViews, tiles, lfdShadeEntryCount(tiles, viewCount));

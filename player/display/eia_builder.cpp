@@ -28,16 +28,6 @@ namespace lfd::player {
 
 namespace {
 
-// View texel (image order: row 0 = top) under subpixel column k on panel row l: the view
-// pixel containing the subpixel's screen position ((k + 0.5) / 3W, (l + 0.5) / H),
-// computed without rounding as floor((2k + 1) w / 6W) and floor((2l + 1) h / 2H).
-inline uint32_t viewColumnUnder(uint32_t k, uint32_t panelWidth, uint32_t viewWidth) {
-    return uint32_t((uint64_t(2 * k + 1) * viewWidth) / (6ull * panelWidth));
-}
-inline uint32_t viewRowUnder(uint32_t l, uint32_t panelHeight, uint32_t viewHeight) {
-    return uint32_t((uint64_t(2 * l + 1) * viewHeight) / (2ull * panelHeight));
-}
-
 // sRGB-encoded byte -> linear value (IEC 61966-2-1), as the GPU's sRGB texture view decodes.
 const std::array<float, 256>& linearFromByte() {
     static const std::array<float, 256> table = [] {

@@ -90,6 +90,18 @@ private:
     unsigned prefilter(const ViewTargets& views, Reconstruction mode);
 };
 
+// View texel (image order: row 0 = top) under subpixel column k on panel row l, as the EIA
+// pass reads it in mode none (eia_construct.comp, viewTexelUnder) and the direct subpixel
+// splat's inverse map inverts it (lfdpr_direct_fanout.h): the view
+// pixel containing the subpixel's screen position ((k + 0.5) / 3W, (l + 0.5) / H),
+// computed without rounding as floor((2k + 1) w / 6W) and floor((2l + 1) h / 2H).
+inline uint32_t viewColumnUnder(uint32_t k, uint32_t panelWidth, uint32_t viewWidth) {
+    return uint32_t((uint64_t(2 * k + 1) * viewWidth) / (6ull * panelWidth));
+}
+inline uint32_t viewRowUnder(uint32_t l, uint32_t panelHeight, uint32_t viewHeight) {
+    return uint32_t((uint64_t(2 * l + 1) * viewHeight) / (2ull * panelHeight));
+}
+
 // CPU reference of the same mapping (tests, simulated viewer): views are RGBA8 images in
 // image order (row 0 = top), all of size viewWidth x viewHeight. Mode none is bit-identical
 // to the GPU pass; the filtered modes follow the GPU's steps (the prefilter stored as

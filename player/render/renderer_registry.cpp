@@ -15,17 +15,22 @@ struct Entry {
     const char* name;
     bool variant;
     std::function<std::unique_ptr<Renderer>(const RendererOptions&)> create;
+    // An experiment: selectable by name only (lfd-play --renderer, lfd-bench --renderers),
+    // in neither the methods (the window's R cycle) nor the ablation variants (--lfdpr-variants).
+    bool experiment = false;
 };
 
 // An lfdpr variant: the caller's lfdpr options with one change.
 template <typename Configure>
-Entry lfdprVariant(const char* name, Configure configure)
+Entry lfdprVariant(const char* name, Configure configure, bool experiment = false)
 {
-    return {name, true, [configure](const RendererOptions& options) -> std::unique_ptr<Renderer> {
+    return {name, true,
+            [configure](const RendererOptions& options) -> std::unique_ptr<Renderer> {
                 LfdprOptions lfdpr = options.lfdpr;
                 configure(lfdpr);
                 return createLfdprRenderer(lfdpr);
-            }};
+            },
+            experiment};
 }
 
 const std::vector<Entry>& registry()
@@ -51,6 +56,13 @@ const std::vector<Entry>& registry()
                          o.pipeline = LfdprOptions::Pipeline::Paper;
                          o.multiviewMipmapping = false;
                      }),
+        // An experiment beyond the paper: the panel image splatted directly, without views
+        // (docs/player/direct-splat.md); equal to lfdpr's EIA at --aa none.
+        lfdprVariant(
+            "lfdpr-direct", [](LfdprOptions& o) { o.direct = LfdprOptions::Direct::Nearest; }, true),
+        // ... its exact-ray hybrid: the same visibility, each subpixel shaded along its own ray.
+        lfdprVariant(
+            "lfdpr-direct-exact", [](LfdprOptions& o) { o.direct = LfdprOptions::Direct::ExactRay; }, true),
     };
     return entries;
 }
@@ -59,7 +71,7 @@ std::vector<std::string> names(bool methods, bool variants)
 {
     std::vector<std::string> out;
     for (const Entry& e : registry())
-        if (e.variant ? variants : methods)
+        if (e.experiment ? (methods && variants) : (e.variant ? variants : methods))
             out.emplace_back(e.name);
     return out;
 }

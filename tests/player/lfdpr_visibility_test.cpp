@@ -125,27 +125,6 @@ Frame render(player::Renderer& renderer, const Scene& scene, const DisplayProfil
     return out;
 }
 
-// A block of rotated instances of the test cube and sphere: many small triangles, depth
-// and occlusion (a miniature of the dense benchmark sample).
-Scene denseTestScene()
-{
-    Scene scene = cubeAndSphereScene();
-    const std::vector<Node> originals = scene.nodes;
-    scene.nodes.clear();
-    for (int i = 0; i < 12; ++i) {
-        for (Node node : originals) {
-            if (node.mesh == kNone)
-                continue;
-            node.translation += glm::vec3(float(i % 4) - 1.5f, float(i / 4) - 1.0f, float(i % 3) - 1.0f) * 1.2f;
-            node.rotation = glm::angleAxis(0.7f * float(i), glm::vec3(0.3f, 1.0f, 0.2f)) * node.rotation;
-            node.parent = kNone;
-            scene.nodes.push_back(node);
-        }
-    }
-    finishScene(scene);
-    return scene;
-}
-
 TEST_F(LfdprVisibilityTest, ComputePointGenerationSamplesLikeTheGeometryShader)
 {
     // Same setup code (lfdpr_triangle_setup.glsl) and the same conservative rule, so every
@@ -673,6 +652,20 @@ TEST(ShaderVariants, EveryVariantCompilesWithGlslang)
         {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_COUNT_WORK 1", "LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
         {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_COUNT_WORK 1", "LFD_TEXTURE_MASK 0x1u"}},
         {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_COUNT_WORK 1", "LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
+        // The direct subpixel splat (lfdpr-direct): both atomics paths and its record pass, its
+        // shading per texture set, the pack, on both work shapes and with the counters.
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_DIRECT 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_DIRECT 1", "LFDPR_INDEX_PASS 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_DIRECT 1", "LFDPR_INT64 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_DIRECT 1", "LFDPR_COUNT_WORK 1"}},
+        {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_DIRECT 1", "LFDPR_WORK_GPU 1", "LFDPR_INT64 1", "LFDPR_COUNT_WORK 1"}},
+        {"lfdpr_direct_shade.comp", "comp", {"LFD_TEXTURE_MASK 0x0u"}},
+        {"lfdpr_direct_shade.comp", "comp", {"LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x1Fu"}},
+        {"lfdpr_direct_shade.comp", "comp", {"LFDPR_ANISO_TAPS 1", "LFD_TEXTURE_MASK 0x1Fu", "LFD_STREAMS 0x9u"}},
+        {"lfdpr_direct_shade.comp", "comp", {"LFDPR_COUNT_WORK 1", "LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
+        {"lfdpr_direct_shade.comp", "comp", {"LFDPR_DIRECT_EXACT 1", "LFD_TEXTURE_MASK 0x1Fu"}},
+        {"lfdpr_direct_shade.comp", "comp", {"LFDPR_DIRECT_EXACT 1", "LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
+        {"lfdpr_direct_pack.comp", "comp", {}},
     };
     const std::filesystem::path dir = testOutputDir("shader_variants");
     size_t checked = 0;

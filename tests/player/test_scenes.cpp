@@ -248,4 +248,25 @@ EmissiveQuads emissiveQuadsScene(float radius, float zBack)
     return q;
 }
 
+// A block of rotated instances of the test cube and sphere: many small triangles, depth
+// and occlusion (a miniature of the dense benchmark sample).
+Scene denseTestScene()
+{
+    Scene scene = cubeAndSphereScene();
+    const std::vector<Node> originals = scene.nodes;
+    scene.nodes.clear();
+    for (int i = 0; i < 12; ++i) {
+        for (Node node : originals) {
+            if (node.mesh == kNone)
+                continue;
+            node.translation += glm::vec3(float(i % 4) - 1.5f, float(i / 4) - 1.0f, float(i % 3) - 1.0f) * 1.2f;
+            node.rotation = glm::angleAxis(0.7f * float(i), glm::vec3(0.3f, 1.0f, 0.2f)) * node.rotation;
+            node.parent = kNone;
+            scene.nodes.push_back(node);
+        }
+    }
+    finishScene(scene);
+    return scene;
+}
+
 } // namespace lfd::test

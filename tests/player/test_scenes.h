@@ -36,6 +36,10 @@ Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec
 // in front. Bounds enclose everything. Deterministic.
 Scene cubeAndSphereScene();
 
+// A block of rotated instances of the test cube and sphere: many small triangles, depth
+// and occlusion (a miniature of the dense benchmark sample).
+Scene denseTestScene();
+
 // Positions only (no normals, uvs or tangents), default material: a tetrahedron-ish
 // pyramid. Exercises the "missing streams" paths.
 Scene positionsOnlyScene();

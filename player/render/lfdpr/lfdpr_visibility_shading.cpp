@@ -48,8 +48,9 @@ std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vect
 }
 
 LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces,
-                                               bool countWork)
-    : int64_(int64), hardwareAniso_(hardwareAniso), defines_(atomicsDefines(int64)), trilinear_(gl::createSampler())
+                                               bool countWork, bool direct)
+    : int64_(int64), direct_(direct), hardwareAniso_(hardwareAniso), defines_(atomicsDefines(int64)),
+      trilinear_(gl::createSampler())
 {
     // As GpuScene's textures without anisotropy: trilinear, glTF's default REPEAT.
     glSamplerParameteri(trilinear_, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
@@ -73,8 +74,12 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool ha
     if (!int64 && testIndexRaces > 0)
         splatDefines.push_back("LFDPR_AFTER_INDEX_WRITE(index, pixel, record) if ((index) % " +
                                std::to_string(testIndexRaces) + "u == 0u) viewIndex[pixel] = (record)");
+    if (direct)
+        splatDefines.push_back("LFDPR_DIRECT 1");
     splatProgram_ = build("lfdpr_visibility_splat.comp", splatDefines);
-    if (!int64)
+    if (!int64 && direct) // the direct splat's record pass runs every frame (lfdpr_direct_fanout.glsl)
+        indexProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1", "LFDPR_DIRECT 1"});
+    else if (!int64)
         indexProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1"});
     if (gpuWork) // lfdpr_visibility_clear.comp says why a GPU clears in a shader
         clearProgram_ = build("lfdpr_visibility_clear.comp", {});
@@ -202,8 +207,11 @@ void LfdprVisibilityShading::splat(unsigned counters)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewWinner, index_);
-    // The 32-bit path's index pass runs only to repair, in shade().
+    // The 32-bit path's index pass runs only to repair, in shade(); the direct splat's
+    // every frame (lfdpr_direct_fanout.glsl says why).
     splatPass(splatProgram_, counters, offsetof(LfdprVisibilityCountersGpu, splatGroupsX));
+    if (direct_ && !int64_)
+        splatPass(indexProgram_, counters, offsetof(LfdprVisibilityCountersGpu, splatGroupsX));
 }
 
 void LfdprVisibilityShading::splatPass(unsigned program, unsigned arguments, size_t offset) const

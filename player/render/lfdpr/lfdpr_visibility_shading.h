@@ -38,14 +38,20 @@ public:
     // testIndexRaces: LfdprOptions::testIndexRaces (32-bit path only).
     // countWork: LfdprOptions::countWork (LFDPR_COUNT_WORK: the splat and the shading count
     // their work into the LfdprVisibilityCountersGpu block, lfdpr_work_counters.glsl).
+    // direct: LfdprOptions::Direct::Nearest - the splat is compiled with LFDPR_DIRECT (its
+    // samples fanned out to panel subpixels, lfdpr_direct_fanout.glsl; on the 32-bit path
+    // followed by its record pass every frame); the caller then uses LfdprDirectPanel
+    // instead of resize(), beginFrame() and shade().
     LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces = 0,
-                           bool countWork = false);
+                           bool countWork = false, bool direct = false);
     ~LfdprVisibilityShading();
     LfdprVisibilityShading(const LfdprVisibilityShading&) = delete;
     LfdprVisibilityShading& operator=(const LfdprVisibilityShading&) = delete;
 
     bool int64() const { return int64_; }
     bool hardwareAniso() const { return hardwareAniso_; }
+    // Every program's defines (atomics path, work shape, counters), for LfdprDirectPanel's.
+    const std::vector<std::string>& programDefines() const { return defines_; }
     void resize(uint32_t viewCount, uint32_t width, uint32_t height);
     // 8 bytes per view pixel (depth + the winner's record, or the 64-bit word).
     size_t viewBufferBytes() const;
@@ -104,6 +110,7 @@ private:
     unsigned shadeProgram(uint32_t textureMask, uint32_t streams, bool taps);
 
     bool int64_;
+    bool direct_; // LFDPR_DIRECT splat (LfdprDirectPanel holds its words)
     bool hardwareAniso_;
     std::vector<std::string> defines_; // every program's: atomics path, work shape
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass

@@ -109,6 +109,16 @@ struct LfdprOptions {
     // "Work counters"), read back with the point count (no added GL call or wait). Off by
     // default: the counts cost a few adds per sample and a reduction per workgroup.
     bool countWork = false;
+    // Visibility pipeline, an experiment (renderer lfdpr-direct; docs/player/direct-splat.md):
+    // Nearest renders the panel image without views - the same points and splat, each
+    // sample fanned out to the panel subpixels that show its view pixel, shaded per
+    // subpixel - equal byte for byte to the views and the EIA's nearest mode (--aa none),
+    // which it replaces (the reconstruction flag does not apply). Needs 64-bit atomics; no
+    // views are written. ExactRay (renderer lfdpr-direct-exact): the same visibility, each
+    // subpixel's winner shaded along its own ray (the camera of its continuous phase, through
+    // its lens centre) instead of the nearest view's pixel centre. Off: the views, then the
+    // EIA pass.
+    enum class Direct { Off, Nearest, ExactRay } direct = Direct::Off;
 };
 
 // Introspection for tests and the benchmark: values of the most recent frame whose counts

@@ -21,6 +21,7 @@
 #include "lfdpr_visibility_points.h"
 #include "lfdpr_constants.h"
 #include "lfdpr_counters.h"
+#include "lfdpr_direct_panel.h"
 #include "lfdpr_paper_point_generation.h" // makeLfdprFrame, LfdprFrameGpu
 #include "lfdpr_visibility_shading.h"
 #include "scene_bindings.h"
@@ -34,6 +35,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -57,8 +59,12 @@ public:
         : options_(options), k_(LfdprConstants::get()), gpuWork_(lfdprGpuWorkShape(options.workShape)),
           pointGeneration_(options.pixelCentreCulling, options.cellScale, gpuWork_),
           shading_(lfdprUseInt64(options.atomics), gpuWork_, lfdprHardwareAniso(options.anisoFilter),
-                   options.testIndexRaces, options.countWork)
+                   options.testIndexRaces, options.countWork, options.direct != LfdprOptions::Direct::Off)
     {
+        if (options.direct != LfdprOptions::Direct::Off)
+            direct_ = std::make_unique<LfdprDirectPanel>(shading_.programDefines(), shading_.int64(),
+                                                         shading_.hardwareAniso(),
+                                                         options.direct == LfdprOptions::Direct::ExactRay);
         GLint64 maxBlockBytes = 0;
         glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlockBytes);
         maxPointCapacity_ = uint32_t(std::min<uint64_t>(
@@ -113,7 +119,10 @@ public:
             targets.height() != frame.profile.viewHeight)
             throw std::invalid_argument("lfdpr: view targets do not match the frame's profile");
         prepareScene(scene);
-        shading_.resize(targets.viewCount(), targets.width(), targets.height());
+        if (direct_)
+            direct_->resize(frame.profile); // the panel's words and inverse map replace the views'
+        else
+            shading_.resize(targets.viewCount(), targets.width(), targets.height());
         readback_.poll([this](uint64_t tag, const uint8_t* bytes) { applyCounts(tag, bytes); });
         // note: points are sampled for frame.samplingFrame() (the display's views under
         // angular supersampling, so the cloud does not grow) and splatted into frame's.
@@ -138,7 +147,10 @@ public:
         glClearNamedBufferSubData(counters_, GL_R32UI, offsetof(LfdprVisibilityCountersGpu, splatGroupsZ), sizeof(GLuint),
                                   GL_RED_INTEGER, GL_UNSIGNED_INT, &one);
         pointGeneration_.clearQueues();
-        shading_.beginFrame(scene, texturedMaterials_, targets);
+        if (direct_)
+            direct_->beginFrame(scene, texturedMaterials_);
+        else
+            shading_.beginFrame(scene, texturedMaterials_, targets);
         // The clears' writes (a shader's, on the GPU work shape) before every later access.
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
                         GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -150,23 +162,8 @@ public:
             glNamedBufferSubData(frameUbo_, 0, sizeof(splatConstants), &splatConstants);
         }
 
-        // Step 3: visibility, then shading once per visible pixel.
-        bindBuffers(scene);
-        bindSceneTexels(scene);
-        timer.begin(stage::kViewGeneration);
-        shading_.splat(counters_);
-        timer.end();
-        timer.begin(stage::kResolve);
-        shading_.shade(scene, targets);
-        timer.end();
-        // The counters once the splat and the shading have added their work (countWork).
-        readback_.begin(tag);
-        readback_.copy(counters_, 0, 0, sizeof(LfdprVisibilityCountersGpu));
-        if (!shading_.int64()) {
-            readback_.copy(shading_.repairBuffer(), LfdprVisibilityShading::repairCountOffset(), kRepairsOffset,
-                           sizeof(uint32_t));
-        }
-        readback_.end();
+        // Step 3: visibility, then shading once per visible pixel (or subpixel).
+        splatAndShade(scene, targets, timer, tag);
 
         // Step 4: what is known without the GPU's counts (the counts of a frame, and the
         // capacity it ran with, come with them: applyCounts).
@@ -176,8 +173,47 @@ public:
         info_.viewBufferBytes = shading_.viewBufferBytes();
         // Work counters known on the CPU: what this frame's clears wrote (the counters, the
         // large-triangle queues' dispatch words and shading's clears).
-        workBytesCleared_ = k_.visCounterBytes + pointGeneration_.clearedBytes() + shading_.clearedBytes();
+        workBytesCleared_ = k_.visCounterBytes + pointGeneration_.clearedBytes() +
+                            (direct_ ? direct_->clearedBytes() : shading_.clearedBytes());
         splatViews_ = frame.profile.viewCount;
+    }
+
+    // Step 3 of render(): the splat, the shading (into the views, or with LfdprOptions::Direct
+    // into the panel's channel planes), and the counters to the frame's read-back slot.
+    void splatAndShade(const GpuScene& scene, ViewTargets& targets, GpuTimer& timer, uint64_t tag)
+    {
+        bindBuffers(scene);
+        bindSceneTexels(scene);
+        timer.begin(stage::kViewGeneration);
+        if (direct_)
+            direct_->bindForSplat();
+        shading_.splat(counters_);
+        timer.end();
+        timer.begin(stage::kResolve);
+        if (direct_)
+            direct_->shade(scene);
+        else
+            shading_.shade(scene, targets);
+        timer.end();
+        // The counters once the splat and the shading have added their work (countWork).
+        readback_.begin(tag);
+        readback_.copy(counters_, 0, 0, sizeof(LfdprVisibilityCountersGpu));
+        if (!shading_.int64()) {
+            readback_.copy(shading_.repairBuffer(), LfdprVisibilityShading::repairCountOffset(), kRepairsOffset,
+                           sizeof(uint32_t));
+        }
+        readback_.end();
+    }
+
+    // The direct splat's panel (LfdprOptions::Direct): its channel planes packed into the EIA.
+    bool writePanelImage(unsigned eiaTexture, GpuTimer& timer) override
+    {
+        if (!direct_)
+            return false;
+        timer.begin(stage::kEia);
+        direct_->writePanel(eiaTexture);
+        timer.end();
+        return true;
     }
 
     bool settle() override
@@ -190,7 +226,8 @@ public:
     uint64_t frameGpuBytes() const override
     {
         return uint64_t(pointCapacity_) * k_.compactPointBytes + triangleCapacity_ * k_.recordBytes +
-               pointGeneration_.bufferBytes() + shading_.viewBufferBytes() + shading_.shadeWorkBytes();
+               pointGeneration_.bufferBytes() + shading_.viewBufferBytes() + shading_.shadeWorkBytes() +
+               (direct_ ? direct_->bufferBytes() : 0);
     }
 
     std::vector<std::pair<std::string, double>> extraStats() const override
@@ -211,7 +248,7 @@ private:
             {"triangle_buffer_bytes", double(info_.triangleBufferBytes)},
             {"view_buffer_bytes", double(info_.viewBufferBytes)},
             {"frame_gpu_bytes", double(info_.pointBufferBytes + info_.triangleBufferBytes + info_.viewBufferBytes +
-                                       shading_.shadeWorkBytes())},
+                                       shading_.shadeWorkBytes() + (direct_ ? direct_->bufferBytes() : 0))},
             {"shade_work_bytes", double(shading_.shadeWorkBytes())},
             {"point_capacity", double(info_.pointCapacity)},
             {"overflow_frames", double(info_.overflowFrames)},
@@ -228,7 +265,8 @@ private:
             {"triangles_oversized", double(info_.trianglesOversized)},
             {"triangles_coarsened", double(trianglesCoarsened_)},
             {"triangles_large", double(info_.trianglesLarge)},
-            {"shading_passes", double(shading_.lastShadingDispatches())},
+            {"shading_passes", double(direct_ ? direct_->lastShadingDispatches() : shading_.lastShadingDispatches())},
+            {"direct_panel_bytes", double(direct_ ? direct_->bufferBytes() : 0)},
             {"lfd_sampling", options_.lfdBiasedSampling ? 1.0 : 0.0},
             {"texture_splatting", options_.textureSplatting ? 1.0 : 0.0},
             {"pixel_centre_culling", options_.pixelCentreCulling ? 1.0 : 0.0},
@@ -426,6 +464,7 @@ private:
     FrameUniforms uniforms_;
     LfdprVisibilityPointGeneration pointGeneration_;
     LfdprVisibilityShading shading_;
+    std::unique_ptr<LfdprDirectPanel> direct_; // LfdprOptions::Direct on: replaces the views
     uint64_t sceneSerial_ = 0; // GpuScene::serial() of the scene the tables are for
     uint64_t sizedSerial_ = 0; // ... and of the scene the point buffer was sized for
     std::vector<uint32_t> drawFirstTriangle_;
