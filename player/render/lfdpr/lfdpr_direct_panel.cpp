@@ -53,14 +53,7 @@ unsigned LfdprDirectPanel::shadeProgram(uint32_t textureMask, uint32_t streams, 
     const uint64_t key = uint64_t(textureMask) << 33 | uint64_t(streams) << 1 | (taps ? 1u : 0u);
     if (const auto it = shadePrograms_.find(key); it != shadePrograms_.end())
         return it->second.get();
-    std::vector<std::string> defines = defines_;
-    char text[48];
-    std::snprintf(text, sizeof(text), "LFD_TEXTURE_MASK 0x%Xu", textureMask);
-    defines.emplace_back(text);
-    std::snprintf(text, sizeof(text), "LFD_STREAMS 0x%Xu", streams);
-    defines.emplace_back(text);
-    if (taps)
-        defines.emplace_back("LFDPR_ANISO_TAPS 1");
+    std::vector<std::string> defines = lfdprShadeDefines(defines_, textureMask, streams, taps);
     if (exactRay_)
         defines.emplace_back("LFDPR_DIRECT_EXACT 1");
     gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_direct_shade.comp"}}, defines));
@@ -93,10 +86,7 @@ void LfdprDirectPanel::resize(const DisplayProfile& profile)
 void LfdprDirectPanel::beginFrame(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials)
 {
     // The shading groups, in lfdprMaterialGroups' order (the draws carry each one's slot).
-    groups_.clear();
-    groups_.push_back({kNone, scene.gpuMaterialIndex(kNone), 0u});
-    for (const int32_t m : texturedMaterials)
-        groups_.push_back({m, scene.gpuMaterialIndex(m), materialTextureFlags(scene.cpu().materials[size_t(m)])});
+    groups_ = lfdprShadeGroups(scene, texturedMaterials);
     // All ones = empty (a depth key beyond every depth), as the views path's words; each
     // plane to its channel of the background, by the same clear as the views' colours.
     const GLuint ones = 0xFFFFFFFFu;

@@ -11,6 +11,7 @@
 #pragma once
 
 #include "gl_handles.h"
+#include "lfdpr_visibility_shading.h"
 
 #include "lfd/display_profile.h"
 
@@ -52,11 +53,7 @@ public:
     uint32_t lastShadingDispatches() const { return dispatches_; }
 
 private:
-    struct Group {
-        int32_t material;     // kNone for group 0 (untextured materials)
-        uint32_t gpuMaterial; // u_shadeMaterial
-        uint32_t textureMask; // LFD_TEXTURE_MASK of its program
-    };
+    using Group = LfdprShadeGroup;
     unsigned shadeProgram(uint32_t textureMask, uint32_t streams, bool taps);
     void setPhaseUniforms(unsigned program) const;
 

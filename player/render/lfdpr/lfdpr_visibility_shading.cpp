@@ -47,6 +47,28 @@ std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vect
     return groups;
 }
 
+std::vector<LfdprShadeGroup> lfdprShadeGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials)
+{
+    std::vector<LfdprShadeGroup> groups{{kNone, scene.gpuMaterialIndex(kNone), 0u}};
+    const std::vector<Material>& materials = scene.cpu().materials;
+    for (const int32_t m : texturedMaterials)
+        groups.push_back({m, scene.gpuMaterialIndex(m), materialTextureFlags(materials[size_t(m)])});
+    return groups;
+}
+
+std::vector<std::string> lfdprShadeDefines(std::vector<std::string> base, uint32_t textureMask, uint32_t streams,
+                                           bool taps)
+{
+    char text[48];
+    std::snprintf(text, sizeof(text), "LFD_TEXTURE_MASK 0x%Xu", textureMask);
+    base.emplace_back(text);
+    std::snprintf(text, sizeof(text), "LFD_STREAMS 0x%Xu", streams);
+    base.emplace_back(text);
+    if (taps)
+        base.emplace_back("LFDPR_ANISO_TAPS 1");
+    return base;
+}
+
 LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool hardwareAniso, uint32_t testIndexRaces,
                                                bool countWork, bool direct)
     : int64_(int64), direct_(direct), hardwareAniso_(hardwareAniso), defines_(atomicsDefines(int64)),
@@ -102,15 +124,8 @@ unsigned LfdprVisibilityShading::shadeProgram(uint32_t textureMask, uint32_t str
     const uint64_t key = uint64_t(textureMask) << 33 | uint64_t(streams) << 1 | (taps ? 1u : 0u);
     if (const auto it = shadePrograms_.find(key); it != shadePrograms_.end())
         return it->second.get();
-    std::vector<std::string> defines = defines_;
-    char mask[48];
-    std::snprintf(mask, sizeof(mask), "LFD_TEXTURE_MASK 0x%Xu", textureMask);
-    defines.emplace_back(mask);
-    std::snprintf(mask, sizeof(mask), "LFD_STREAMS 0x%Xu", streams);
-    defines.emplace_back(mask);
-    if (taps)
-        defines.emplace_back("LFDPR_ANISO_TAPS 1");
-    gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility_shade.comp"}}, defines));
+    gl::Program program(gl::buildProgram({{GL_COMPUTE_SHADER, "lfdpr_visibility_shade.comp"}},
+                                         lfdprShadeDefines(defines_, textureMask, streams, taps)));
     const unsigned name = program.get();
     shadePrograms_[key] = std::move(program);
     return name;
@@ -230,11 +245,7 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
 
     // Step 1: the groups (in lfdprMaterialGroups' order), each with the textures its
     // program samples.
-    groups_.clear();
-    groups_.push_back({kNone, scene.gpuMaterialIndex(kNone), 0u});
-    const std::vector<Material>& materials = scene.cpu().materials;
-    for (const int32_t m : texturedMaterials)
-        groups_.push_back({m, scene.gpuMaterialIndex(m), materialTextureFlags(materials[size_t(m)])});
+    groups_ = lfdprShadeGroups(scene, texturedMaterials);
     groupCount_ = uint32_t(std::min<size_t>(groups_.size(), k.maxShadeGroups));
 
     // Step 2: the buffers (grown, never shrunk, so a steady scene allocates nothing).

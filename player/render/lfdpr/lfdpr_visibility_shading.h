@@ -28,6 +28,20 @@ class ViewTargets;
 // shading checks a pixel's winner against.
 std::vector<uint32_t> lfdprMaterialGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
 
+// One shading dispatch's material: group 0 is every untextured material, then one per
+// textured material, in lfdprMaterialGroups' order (the draws carry each one's slot).
+struct LfdprShadeGroup {
+    int32_t material;     // kNone for group 0 (untextured materials)
+    uint32_t gpuMaterial; // u_shadeMaterial
+    uint32_t textureMask; // LFD_TEXTURE_MASK of its program
+};
+std::vector<LfdprShadeGroup> lfdprShadeGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
+
+// The defines of a shading program: `base` (the atomics path's), then the textures it
+// samples, the vertex streams it reads and whether it takes anisotropic taps.
+std::vector<std::string> lfdprShadeDefines(std::vector<std::string> base, uint32_t textureMask, uint32_t streams,
+                                           bool taps);
+
 class LfdprVisibilityShading {
 public:
     // int64: one 64-bit atomicMin pass (GL_NV_shader_atomic_int64; its shaders are only
@@ -92,11 +106,7 @@ public:
     uint32_t lastShadingDispatches() const { return dispatches_; }
 
 private:
-    struct Group {
-        int32_t material;     // kNone for group 0 (untextured materials)
-        uint32_t gpuMaterial; // u_shadeMaterial
-        uint32_t textureMask; // LFD_TEXTURE_MASK of its program
-    };
+    using Group = LfdprShadeGroup;
     void splatPass(unsigned program, unsigned arguments, size_t offset) const;
     void clearShadeDispatches() const;
     void clearViews(ViewTargets& targets) const;

@@ -67,14 +67,20 @@ std::vector<glm::vec3> worldCorners(const lfd::Scene& s)
 }
 
 // The largest distance from a point of `a` to the nearest point of `b` (the decoders may
-// reorder vertices and triangles, so points are matched by position).
-float farthestFromNearest(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b)
+// reorder vertices and triangles, so points are matched by position). Exact: `b` sorted by
+// x, each search walks out from p.x until the x gap alone exceeds the nearest distance.
+float farthestFromNearest(const std::vector<glm::vec3>& a, std::vector<glm::vec3> b)
 {
+    const auto byX = [](const glm::vec3& u, const glm::vec3& v) { return u.x < v.x; };
+    std::sort(b.begin(), b.end(), byX);
     float worst = 0.0f;
     for (const glm::vec3& p : a) {
         float nearest = std::numeric_limits<float>::max();
-        for (const glm::vec3& q : b)
-            nearest = std::min(nearest, glm::length(p - q));
+        const auto start = std::lower_bound(b.begin(), b.end(), p, byX);
+        for (auto q = start; q != b.end() && q->x - p.x < nearest; ++q)
+            nearest = std::min(nearest, glm::length(p - *q));
+        for (auto q = start; q != b.begin() && p.x - std::prev(q)->x < nearest; --q)
+            nearest = std::min(nearest, glm::length(p - *std::prev(q)));
         worst = std::max(worst, nearest);
     }
     return worst;
