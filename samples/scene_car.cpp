@@ -65,48 +65,60 @@ void addSeat(MeshData& mesh, glm::vec3 at)
     addBox(mesh, backFromLocal, {-0.1f, 0.0f, -0.24f}, {0.0f, 0.55f, 0.24f});
 }
 
+// The car's materials, told apart by factors only (no textures anywhere); added before
+// any mesh, in this order (their indices in the glTF).
+struct CarMaterials {
+    int paint, glass, leather, engineMetal, rubber, rimMetal, boltMetal, headlightMat, taillightMat;
+};
+
+CarMaterials addCarMaterials(GltfBuilder& gltf)
+{
+    CarMaterials m{};
+    m.paint = gltf.addMaterial({.name = "car_paint",
+                                .baseColorFactor = {0.75f, 0.05f, 0.06f, 1.0f},
+                                .metallic = 0.5f,
+                                .roughness = 0.3f});
+    m.glass = gltf.addMaterial({.name = "tinted_glass",
+                                .baseColorFactor = {0.05f, 0.08f, 0.12f, 1.0f},
+                                .roughness = 0.05f});
+    m.leather = gltf.addMaterial(
+        {.name = "leather", .baseColorFactor = {0.35f, 0.20f, 0.10f, 1.0f}, .roughness = 0.7f});
+    m.engineMetal = gltf.addMaterial({.name = "engine_metal",
+                                      .baseColorFactor = {0.30f, 0.30f, 0.32f, 1.0f},
+                                      .metallic = 0.9f,
+                                      .roughness = 0.5f});
+    m.rubber = gltf.addMaterial(
+        {.name = "tyre_rubber", .baseColorFactor = {0.03f, 0.03f, 0.03f, 1.0f}, .roughness = 0.9f});
+    m.rimMetal = gltf.addMaterial({.name = "rim_metal",
+                                   .baseColorFactor = {0.80f, 0.80f, 0.82f, 1.0f},
+                                   .metallic = 1.0f,
+                                   .roughness = 0.2f});
+    m.boltMetal = gltf.addMaterial({.name = "bolt_metal",
+                                    .baseColorFactor = {0.2f, 0.2f, 0.2f, 1.0f},
+                                    .metallic = 1.0f,
+                                    .roughness = 0.4f});
+    m.headlightMat = gltf.addMaterial({.name = "headlight",
+                                       .baseColorFactor = {1.0f, 1.0f, 0.9f, 1.0f},
+                                       .roughness = 0.1f,
+                                       .emissive = {1.0f, 0.95f, 0.8f}});
+    m.taillightMat = gltf.addMaterial({.name = "taillight",
+                                       .baseColorFactor = {0.8f, 0.02f, 0.02f, 1.0f},
+                                       .roughness = 0.2f,
+                                       .emissive = {0.6f, 0.0f, 0.0f}});
+    return m;
+}
+
 CarMeshes addCarMeshes(GltfBuilder& gltf)
 {
-    // Step 1: materials, told apart by factors only (no textures anywhere).
-    const int paint = gltf.addMaterial({.name = "car_paint",
-                                        .baseColorFactor = {0.75f, 0.05f, 0.06f, 1.0f},
-                                        .metallic = 0.5f,
-                                        .roughness = 0.3f});
-    const int glass = gltf.addMaterial({.name = "tinted_glass",
-                                        .baseColorFactor = {0.05f, 0.08f, 0.12f, 1.0f},
-                                        .roughness = 0.05f});
-    const int leather = gltf.addMaterial(
-        {.name = "leather", .baseColorFactor = {0.35f, 0.20f, 0.10f, 1.0f}, .roughness = 0.7f});
-    const int engineMetal = gltf.addMaterial({.name = "engine_metal",
-                                              .baseColorFactor = {0.30f, 0.30f, 0.32f, 1.0f},
-                                              .metallic = 0.9f,
-                                              .roughness = 0.5f});
-    const int rubber = gltf.addMaterial(
-        {.name = "tyre_rubber", .baseColorFactor = {0.03f, 0.03f, 0.03f, 1.0f}, .roughness = 0.9f});
-    const int rimMetal = gltf.addMaterial({.name = "rim_metal",
-                                           .baseColorFactor = {0.80f, 0.80f, 0.82f, 1.0f},
-                                           .metallic = 1.0f,
-                                           .roughness = 0.2f});
-    const int boltMetal = gltf.addMaterial({.name = "bolt_metal",
-                                            .baseColorFactor = {0.2f, 0.2f, 0.2f, 1.0f},
-                                            .metallic = 1.0f,
-                                            .roughness = 0.4f});
-    const int headlightMat = gltf.addMaterial({.name = "headlight",
-                                               .baseColorFactor = {1.0f, 1.0f, 0.9f, 1.0f},
-                                               .roughness = 0.1f,
-                                               .emissive = {1.0f, 0.95f, 0.8f}});
-    const int taillightMat = gltf.addMaterial({.name = "taillight",
-                                               .baseColorFactor = {0.8f, 0.02f, 0.02f, 1.0f},
-                                               .roughness = 0.2f,
-                                               .emissive = {0.6f, 0.0f, 0.0f}});
-
+    // Step 1: materials.
+    const CarMaterials m = addCarMaterials(gltf);
     CarMeshes meshes{};
     // Step 2: the visible shell: body and cabin, both closed (watertight) meshes.
     MeshData body, cabin;
     addClosedSurface(body, translate({0.0f, kBodyCentreY, 0.0f}), 48, 24, bodyPoint);
     addClosedSurface(cabin, translate({-0.25f, 1.18f, 0.0f}), 32, 16, cabinPoint);
-    meshes.body = gltf.addMesh("body", {{&body, paint}});
-    meshes.cabin = gltf.addMesh("cabin", {{&cabin, glass}});
+    meshes.body = gltf.addMesh("body", {{&body, m.paint}});
+    meshes.cabin = gltf.addMesh("cabin", {{&cabin, m.glass}});
 
     // Step 3: occluded interior: four seats, dashboard, steering wheel.
     MeshData interior;
@@ -118,7 +130,7 @@ CarMeshes addCarMeshes(GltfBuilder& gltf)
              glm::rotate(translate({0.45f, 1.0f, 0.38f}), glm::radians(-70.0f), glm::vec3(0, 0, 1)) *
                  glm::rotate(glm::mat4(1.0f), glm::radians(90.0f), glm::vec3(0, 1, 0)),
              0.17f, 0.02f, 0.02f, 24, 8);
-    meshes.interior = gltf.addMesh("interior", {{&interior, leather}});
+    meshes.interior = gltf.addMesh("interior", {{&interior, m.leather}});
 
     // Step 4: occluded engine under the hood: block, head, six cylinders' caps, flywheel.
     MeshData engine;
@@ -132,7 +144,7 @@ CarMeshes addCarMeshes(GltfBuilder& gltf)
     addCylinder(engine,
                 glm::rotate(translate({0.95f, 0.6f, 0.0f}), glm::radians(-90.0f), glm::vec3(0, 1, 0)),
                 0.17f, 0.0f, 0.06f, 24);
-    meshes.engine = gltf.addMesh("engine", {{&engine, engineMetal}});
+    meshes.engine = gltf.addMesh("engine", {{&engine, m.engineMetal}});
 
     // Step 5: one wheel mesh (axle along local z, symmetric so no node needs a mirror):
     // tyre, rim and five bolts on each face, which make the spin visible.
@@ -145,7 +157,7 @@ CarMeshes addCarMeshes(GltfBuilder& gltf)
         addCylinder(bolts, translate(at), 0.018f, 0.1f, 0.12f, 8);
         addCylinder(bolts, translate(at), 0.018f, -0.12f, -0.1f, 8);
     }
-    meshes.wheel = gltf.addMesh("wheel", {{&tyre, rubber}, {&rim, rimMetal}, {&bolts, boltMetal}});
+    meshes.wheel = gltf.addMesh("wheel", {{&tyre, m.rubber}, {&rim, m.rimMetal}, {&bolts, m.boltMetal}});
 
     // Step 6: lights, each mesh used by two nodes.
     MeshData headlight, taillight;
@@ -153,8 +165,8 @@ CarMeshes addCarMeshes(GltfBuilder& gltf)
         return superellipsoidPoint({0.06f, 0.07f, 0.15f}, 1.0f, 1.0f, theta, phi);
     });
     addBox(taillight, glm::mat4(1.0f), {-0.02f, -0.04f, -0.15f}, {0.02f, 0.04f, 0.15f});
-    meshes.headlight = gltf.addMesh("headlight", {{&headlight, headlightMat}});
-    meshes.taillight = gltf.addMesh("taillight", {{&taillight, taillightMat}});
+    meshes.headlight = gltf.addMesh("headlight", {{&headlight, m.headlightMat}});
+    meshes.taillight = gltf.addMesh("taillight", {{&taillight, m.taillightMat}});
     return meshes;
 }
 

@@ -57,9 +57,13 @@ void buildPicture(const Picture& picture, MeshData& canvas, MeshData& frame)
     addBox(frame, identity, {w, -h, z0}, {w + f, h, z1});           // right
 }
 
-} // namespace
+// The gallery's textures (written to `dir`) and materials, added to `gltf` before any
+// mesh, in this order (their indices in the glTF).
+struct GalleryMaterials {
+    int floorMat, plasterMat, paintingMat, goldMat, woodMat, marbleMat, chromeMat;
+};
 
-SceneSummary writeGalleryScene(const std::filesystem::path& dir, int textureSize)
+GalleryMaterials addGalleryMaterials(GltfBuilder& gltf, const std::filesystem::path& dir, int textureSize)
 {
     // Step 1: textures. Only the painting scales with --texture-size; the floor and
     // walls are capped so the stress test stresses one huge image.
@@ -70,7 +74,6 @@ SceneSummary writeGalleryScene(const std::filesystem::path& dir, int textureSize
     writeFloorMetallicRoughness(dir / "floor_metallic_roughness.png", detailSize);
     writePlasterTexture(dir / "plaster_basecolor.png", detailSize);
 
-    GltfBuilder gltf("gallery.bin");
     const int pictureTexture = gltf.addTexture("picture.png");
     const int floorColour = gltf.addTexture("floor_basecolor.png");
     const int floorNormal = gltf.addTexture("floor_normal.png");
@@ -79,28 +82,39 @@ SceneSummary writeGalleryScene(const std::filesystem::path& dir, int textureSize
 
     // Step 2: materials. The floor's metallic/roughness come from its texture (the
     // factors multiply it, so they are 1).
+    GalleryMaterials m{};
     MaterialSpec floorMaterial{.name = "floor_tiles", .metallic = 1.0f, .roughness = 1.0f};
     floorMaterial.baseColorTexture = floorColour;
     floorMaterial.metallicRoughnessTexture = floorMr;
     floorMaterial.normalTexture = floorNormal;
-    const int floorMat = gltf.addMaterial(floorMaterial);
-    const int plasterMat = gltf.addMaterial(
+    m.floorMat = gltf.addMaterial(floorMaterial);
+    m.plasterMat = gltf.addMaterial(
         {.name = "plaster", .roughness = 0.9f, .baseColorTexture = plaster});
-    const int paintingMat = gltf.addMaterial(
+    m.paintingMat = gltf.addMaterial(
         {.name = "painting", .roughness = 0.6f, .baseColorTexture = pictureTexture});
-    const int goldMat = gltf.addMaterial({.name = "frame_gold",
-                                          .baseColorFactor = {1.0f, 0.78f, 0.34f, 1.0f},
-                                          .metallic = 1.0f,
-                                          .roughness = 0.3f});
-    const int woodMat = gltf.addMaterial({.name = "frame_dark_wood",
-                                          .baseColorFactor = {0.10f, 0.06f, 0.035f, 1.0f},
-                                          .roughness = 0.55f});
-    const int marbleMat = gltf.addMaterial(
+    m.goldMat = gltf.addMaterial({.name = "frame_gold",
+                                  .baseColorFactor = {1.0f, 0.78f, 0.34f, 1.0f},
+                                  .metallic = 1.0f,
+                                  .roughness = 0.3f});
+    m.woodMat = gltf.addMaterial({.name = "frame_dark_wood",
+                                  .baseColorFactor = {0.10f, 0.06f, 0.035f, 1.0f},
+                                  .roughness = 0.55f});
+    m.marbleMat = gltf.addMaterial(
         {.name = "pedestal_marble", .baseColorFactor = {0.9f, 0.9f, 0.88f, 1.0f}, .roughness = 0.4f});
-    const int chromeMat = gltf.addMaterial({.name = "chrome",
-                                            .baseColorFactor = {0.95f, 0.95f, 0.95f, 1.0f},
-                                            .metallic = 1.0f,
-                                            .roughness = 0.05f});
+    m.chromeMat = gltf.addMaterial({.name = "chrome",
+                                    .baseColorFactor = {0.95f, 0.95f, 0.95f, 1.0f},
+                                    .metallic = 1.0f,
+                                    .roughness = 0.05f});
+    return m;
+}
+
+} // namespace
+
+SceneSummary writeGalleryScene(const std::filesystem::path& dir, int textureSize)
+{
+    // Steps 1 and 2: textures and materials.
+    GltfBuilder gltf("gallery.bin");
+    const GalleryMaterials m = addGalleryMaterials(gltf, dir, textureSize);
 
     // Step 3: the room shell, one quad per surface, each facing into the room.
     const float W = kHalfWidth, D = kHalfDepth, H = kHeight;
@@ -114,16 +128,16 @@ SceneSummary writeGalleryScene(const std::filesystem::path& dir, int textureSize
 
     std::vector<int> children;
     children.push_back(gltf.addNode(
-        {.name = "floor", .mesh = gltf.addMesh("floor", {{&floor, floorMat}})}));
+        {.name = "floor", .mesh = gltf.addMesh("floor", {{&floor, m.floorMat}})}));
     children.push_back(gltf.addNode(
-        {.name = "walls", .mesh = gltf.addMesh("walls", {{&walls, plasterMat}})}));
+        {.name = "walls", .mesh = gltf.addMesh("walls", {{&walls, m.plasterMat}})}));
 
     // Step 4: framed pictures, each a node placed on its wall.
     for (const Picture& picture : kPictures) {
         MeshData canvas, frame;
         buildPicture(picture, canvas, frame);
         const int mesh = gltf.addMesh(
-            picture.name, {{&canvas, paintingMat}, {&frame, picture.gold ? goldMat : woodMat}});
+            picture.name, {{&canvas, m.paintingMat}, {&frame, picture.gold ? m.goldMat : m.woodMat}});
         children.push_back(gltf.addNode(
             {.name = picture.name,
              .mesh = mesh,
@@ -138,10 +152,10 @@ SceneSummary writeGalleryScene(const std::filesystem::path& dir, int textureSize
         return superellipsoidPoint(glm::vec3(0.3f), 1.0f, 1.0f, theta, phi);
     });
     children.push_back(gltf.addNode({.name = "pedestal",
-                                     .mesh = gltf.addMesh("pedestal", {{&pedestal, marbleMat}}),
+                                     .mesh = gltf.addMesh("pedestal", {{&pedestal, m.marbleMat}}),
                                      .translation = {0.0f, 0.0f, -0.8f}}));
     children.push_back(gltf.addNode({.name = "sphere",
-                                     .mesh = gltf.addMesh("sphere", {{&sphere, chromeMat}}),
+                                     .mesh = gltf.addMesh("sphere", {{&sphere, m.chromeMat}}),
                                      .translation = {0.0f, 1.3f, -0.8f}}));
 
     const int root = gltf.addNode({.name = "gallery", .children = children});

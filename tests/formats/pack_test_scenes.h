@@ -47,29 +47,10 @@ inline Texture makeTexture(const std::string& name, uint32_t width, uint32_t hei
     return t;
 }
 
-// Every field, every section (deformation aside: pack_deformation_test.cpp), optional
-// streams, material extensions and lights present, unicode names.
-inline Scene makeFullScene()
+// makeFullScene's materials (one textured with every slot and transforms, one unlit
+// blend) and textures.
+inline void addFullSceneMaterials(Scene& s)
 {
-    Scene s;
-    // Two quads (8 vertices, 4 triangles) with all four vertex streams.
-    for (int i = 0; i < 8; ++i) {
-        const float f = float(i);
-        s.vertices.positions.push_back({f * 0.5f, -f, 1.0f / (f + 1.0f)});
-        s.vertices.normals.push_back(glm::normalize(glm::vec3{0.1f * f, 1.0f, -0.25f}));
-        s.vertices.tangents.push_back({1.0f, 0.0f, 0.0f, i % 2 ? 1.0f : -1.0f});
-        s.vertices.uvs.push_back({0.125f * f, 1.0f - 0.0625f * f});
-    }
-    s.indices = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
-    s.triangleStats = {
-        {0.5f, 0.25f, 12.0f, 0.5f / 12.0f, 0.5f, kTriangleTextured},
-        {0.75f, 0.125f, 6.0f, 0.125f, 1.0f / 6.0f, kTriangleTextured},
-        {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, kTriangleDegenerate},
-        {2.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0},
-    };
-    s.primitives = {{0, 3, 0}, {3, 3, 1}, {6, 6, kNone}};
-    s.meshes = {{"Würfel-網格", 0, 2}, {"plain mesh", 2, 1}};
-
     Material textured;
     textured.name = "matériau ✨";
     textured.baseColorFactor = {0.9f, 0.5f, 0.25f, 0.75f};
@@ -101,7 +82,11 @@ inline Scene makeFullScene()
 
     s.textures.push_back(makeTexture("albedo (sRGB) ✓", 5, 3, true, 1));
     s.textures.push_back(makeTexture("orm", 7, 2, false, 2));
+}
 
+// makeFullScene's node tree (two roots) and its lights (one of each type).
+inline void addFullSceneNodesAndLights(Scene& s)
+{
     Node root;
     root.name = "root";
     root.translation = {1.0f, 2.0f, 3.0f};
@@ -143,7 +128,11 @@ inline Scene makeFullScene()
     spot.innerConeAngle = 0.125f;
     spot.outerConeAngle = pack::kMaxSpotConeAngle;
     s.lights = {sun, bulb, spot};
+}
 
+// makeFullScene's animations: every path and both interpolations.
+inline void addFullSceneAnimations(Scene& s)
+{
     AnimationChannel translate{1, AnimationPath::Translation, Interpolation::Linear,
                                {0.0f, 0.5f, 1.25f},
                                {{0, 0, 0, 0}, {1, 0, 0, 0}, {1, 1, 0, 0}}};
@@ -154,6 +143,34 @@ inline Scene makeFullScene()
     s.animations.push_back({"spin — Drehung", {translate, rotate, scale}});
     s.animations.push_back({"step only", {{3, AnimationPath::Scale, Interpolation::Step, {0.0f, 2.0f},
                                            {{1, 1, 1, 0}, {3, 3, 3, 0}}}}});
+}
+
+// Every field, every section (deformation aside: pack_deformation_test.cpp), optional
+// streams, material extensions and lights present, unicode names.
+inline Scene makeFullScene()
+{
+    Scene s;
+    // Two quads (8 vertices, 4 triangles) with all four vertex streams.
+    for (int i = 0; i < 8; ++i) {
+        const float f = float(i);
+        s.vertices.positions.push_back({f * 0.5f, -f, 1.0f / (f + 1.0f)});
+        s.vertices.normals.push_back(glm::normalize(glm::vec3{0.1f * f, 1.0f, -0.25f}));
+        s.vertices.tangents.push_back({1.0f, 0.0f, 0.0f, i % 2 ? 1.0f : -1.0f});
+        s.vertices.uvs.push_back({0.125f * f, 1.0f - 0.0625f * f});
+    }
+    s.indices = {0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7};
+    s.triangleStats = {
+        {0.5f, 0.25f, 12.0f, 0.5f / 12.0f, 0.5f, kTriangleTextured},
+        {0.75f, 0.125f, 6.0f, 0.125f, 1.0f / 6.0f, kTriangleTextured},
+        {0.0f, 0.0f, 0.0f, 0.0f, 0.0f, kTriangleDegenerate},
+        {2.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0},
+    };
+    s.primitives = {{0, 3, 0}, {3, 3, 1}, {6, 6, kNone}};
+    s.meshes = {{"Würfel-網格", 0, 2}, {"plain mesh", 2, 1}};
+
+    addFullSceneMaterials(s);
+    addFullSceneNodesAndLights(s);
+    addFullSceneAnimations(s);
 
     s.bounds.min = {-2.0f, -7.0f, 0.0f};
     s.bounds.max = {3.5f, 0.0f, 1.0f};
@@ -204,8 +221,8 @@ inline void expectSameTexture(const Texture& a, const Texture& b, size_t i)
     EXPECT_EQ(a.texels, b.texels);
 }
 
-// Exact comparison of every field (floats compared with ==: the format stores bits).
-inline void expectSameScene(const Scene& a, const Scene& b)
+// expectSameScene's vertex streams, indices, triangle statistics, primitives and meshes.
+inline void expectSameGeometry(const Scene& a, const Scene& b)
 {
     EXPECT_EQ(a.vertices.positions, b.vertices.positions);
     EXPECT_EQ(a.vertices.normals, b.vertices.normals);
@@ -233,6 +250,11 @@ inline void expectSameScene(const Scene& a, const Scene& b)
         EXPECT_EQ(a.meshes[m].firstPrimitive, b.meshes[m].firstPrimitive);
         EXPECT_EQ(a.meshes[m].primitiveCount, b.meshes[m].primitiveCount);
     }
+}
+
+// expectSameScene's materials and textures.
+inline void expectSameMaterials(const Scene& a, const Scene& b)
+{
     ASSERT_EQ(a.materials.size(), b.materials.size());
     for (size_t m = 0; m < a.materials.size(); ++m) {
         const Material& x = a.materials[m];
@@ -262,6 +284,11 @@ inline void expectSameScene(const Scene& a, const Scene& b)
     ASSERT_EQ(a.textures.size(), b.textures.size());
     for (size_t t = 0; t < a.textures.size(); ++t)
         expectSameTexture(a.textures[t], b.textures[t], t);
+}
+
+// expectSameScene's nodes and animations.
+inline void expectSameNodesAndAnimations(const Scene& a, const Scene& b)
+{
     ASSERT_EQ(a.nodes.size(), b.nodes.size());
     for (size_t n = 0; n < a.nodes.size(); ++n) {
         const Node& x = a.nodes[n];
@@ -292,6 +319,11 @@ inline void expectSameScene(const Scene& a, const Scene& b)
             EXPECT_EQ(x.values, y.values);
         }
     }
+}
+
+// expectSameScene's lights, bounds and bake settings.
+inline void expectSameLightsBoundsAndSettings(const Scene& a, const Scene& b)
+{
     ASSERT_EQ(a.lights.size(), b.lights.size());
     for (size_t i = 0; i < a.lights.size(); ++i) {
         const Light& x = a.lights[i];
@@ -320,6 +352,15 @@ inline void expectSameScene(const Scene& a, const Scene& b)
     EXPECT_EQ(a.settings.framingFill, b.settings.framingFill);
     EXPECT_EQ(a.settings.viewPixelWorld, b.settings.viewPixelWorld);
     EXPECT_EQ(a.settings.maxTextureSize, b.settings.maxTextureSize);
+}
+
+// Exact comparison of every field (floats compared with ==: the format stores bits).
+inline void expectSameScene(const Scene& a, const Scene& b)
+{
+    expectSameGeometry(a, b);
+    expectSameMaterials(a, b);
+    expectSameNodesAndAnimations(a, b);
+    expectSameLightsBoundsAndSettings(a, b);
 }
 
 // --- Byte-level access for the rejection tests -------------------------------------

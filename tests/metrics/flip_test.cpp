@@ -16,6 +16,57 @@ namespace {
 using namespace lfd::metrics::test;
 using detail::Vec3;
 
+// The direct FLIP's CSF filter: a (2r+1)^2 square kernel per YCxCz channel, each channel
+// normalised to sum 1 (radius in `r`).
+std::vector<Vec3> directCsfKernel(double ppd, int& r)
+{
+    const double pi = std::numbers::pi;
+    const double a1[3] = {1.0, 1.0, 34.1}, b1[3] = {0.0047, 0.0053, 0.04};
+    const double a2[3] = {0.0, 0.0, 13.5}, b2[3] = {1e-5, 1e-5, 0.025};
+    r = int(std::ceil(3.0 * std::sqrt(0.04 / (2.0 * pi * pi)) * ppd));
+    const int n = 2 * r + 1;
+    std::vector<Vec3> csf(size_t(n * n));
+    Vec3 sum{};
+    for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+            const double d2 = double(dx * dx + dy * dy) / (ppd * ppd);
+            for (size_t c = 0; c < 3; ++c) {
+                const double v = a1[c] * std::sqrt(pi / b1[c]) * std::exp(-pi * pi * d2 / b1[c]) +
+                                 a2[c] * std::sqrt(pi / b2[c]) * std::exp(-pi * pi * d2 / b2[c]);
+                csf[size_t((dy + r) * n + dx + r)][c] = v;
+                sum[c] += v;
+            }
+        }
+    for (Vec3& v : csf)
+        for (size_t c = 0; c < 3; ++c)
+            v[c] /= sum[c];
+    return csf;
+}
+
+// The direct FLIP's 2D edge and point detectors along x (radius in `r`), their positive
+// and negative weights normalised to 1 and -1.
+void directFeatureKernels(double ppd, int& r, std::vector<double>& edge, std::vector<double>& point)
+{
+    const double sigma = 0.5 * 0.082 * ppd;
+    r = int(std::ceil(3.0 * sigma));
+    const int n = 2 * r + 1;
+    edge.assign(size_t(n * n), 0.0);
+    point.assign(size_t(n * n), 0.0);
+    for (int dy = -r; dy <= r; ++dy)
+        for (int dx = -r; dx <= r; ++dx) {
+            const double g = std::exp(-(dx * dx + dy * dy) / (2.0 * sigma * sigma));
+            edge[size_t((dy + r) * n + dx + r)] = -dx * g;
+            point[size_t((dy + r) * n + dx + r)] = (dx * dx / (sigma * sigma) - 1.0) * g;
+        }
+    for (std::vector<double>* k : {&edge, &point}) {
+        double pos = 0.0, neg = 0.0;
+        for (double v : *k)
+            (v > 0 ? pos : neg) += std::abs(v);
+        for (double& v : *k)
+            v /= v > 0 ? pos : neg;
+    }
+}
+
 // FLIP evaluated directly as the paper describes it, in double precision with square 2D
 // kernels (no separable decomposition): the CSF filters as sums of Gaussians over the
 // (2r+1)^2 support normalised to sum 1, and the 2D edge and point detectors with their
@@ -24,7 +75,6 @@ using detail::Vec3;
 std::vector<double> directFlipMap(const RgbImage& reference, const RgbImage& test, double ppd)
 {
     const int w = reference.width, h = reference.height;
-    const double pi = std::numbers::pi;
     auto at = [&](int x, int y) { return size_t(std::clamp(y, 0, h - 1)) * size_t(w) + size_t(std::clamp(x, 0, w - 1)); };
     auto ycxcz = [&](const RgbImage& im) {
         std::vector<Vec3> out(im.pixelCount());
@@ -36,39 +86,13 @@ std::vector<double> directFlipMap(const RgbImage& reference, const RgbImage& tes
         }
         return out;
     };
-    const double a1[3] = {1.0, 1.0, 34.1}, b1[3] = {0.0047, 0.0053, 0.04};
-    const double a2[3] = {0.0, 0.0, 13.5}, b2[3] = {1e-5, 1e-5, 0.025};
-    const int rc = int(std::ceil(3.0 * std::sqrt(0.04 / (2.0 * pi * pi)) * ppd));
+    int rc = 0;
+    const std::vector<Vec3> csf = directCsfKernel(ppd, rc);
     const int nc = 2 * rc + 1;
-    std::vector<Vec3> csf(size_t(nc * nc));
-    Vec3 csfSum{};
-    for (int dy = -rc; dy <= rc; ++dy)
-        for (int dx = -rc; dx <= rc; ++dx) {
-            const double d2 = double(dx * dx + dy * dy) / (ppd * ppd);
-            for (size_t c = 0; c < 3; ++c) {
-                const double v = a1[c] * std::sqrt(pi / b1[c]) * std::exp(-pi * pi * d2 / b1[c]) +
-                                 a2[c] * std::sqrt(pi / b2[c]) * std::exp(-pi * pi * d2 / b2[c]);
-                csf[size_t((dy + rc) * nc + dx + rc)][c] = v;
-                csfSum[c] += v;
-            }
-        }
-    const double sigma = 0.5 * 0.082 * ppd;
-    const int rf = int(std::ceil(3.0 * sigma));
+    int rf = 0;
+    std::vector<double> edge, point;
+    directFeatureKernels(ppd, rf, edge, point);
     const int nf = 2 * rf + 1;
-    std::vector<double> edge(size_t(nf * nf)), point(size_t(nf * nf));
-    for (int dy = -rf; dy <= rf; ++dy)
-        for (int dx = -rf; dx <= rf; ++dx) {
-            const double g = std::exp(-(dx * dx + dy * dy) / (2.0 * sigma * sigma));
-            edge[size_t((dy + rf) * nf + dx + rf)] = -dx * g;
-            point[size_t((dy + rf) * nf + dx + rf)] = (dx * dx / (sigma * sigma) - 1.0) * g;
-        }
-    for (std::vector<double>* k : {&edge, &point}) {
-        double pos = 0.0, neg = 0.0;
-        for (double v : *k)
-            (v > 0 ? pos : neg) += std::abs(v);
-        for (double& v : *k)
-            v /= v > 0 ? pos : neg;
-    }
     auto hunt = [](const Vec3& rgb) { return detail::huntAdjust(detail::xyzToLab(detail::linearRgbToXyz(rgb))); };
     const double cmax = std::pow(detail::hyab(hunt({0, 1, 0}), hunt({0, 0, 1})), 0.7);
 
@@ -85,7 +109,7 @@ std::vector<double> directFlipMap(const RgbImage& reference, const RgbImage& tes
                 for (int dy = -rc; dy <= rc; ++dy)
                     for (int dx = -rc; dx <= rc; ++dx)
                         for (size_t c = 0; c < 3; ++c)
-                            f[c] += csf[size_t((dy + rc) * nc + dx + rc)][c] / csfSum[c] * ycc[at(x + dx, y + dy)][c];
+                            f[c] += csf[size_t((dy + rc) * nc + dx + rc)][c] * ycc[at(x + dx, y + dy)][c];
                 Vec3 rgb = detail::xyzToLinearRgb(detail::ycxczToXyz(f));
                 for (double& v : rgb)
                     v = std::clamp(v, 0.0, 1.0);

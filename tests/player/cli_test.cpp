@@ -152,6 +152,41 @@ protected:
     CliTest() : PlayerCliTest("cli_", "cli-small") {}
 };
 
+// HeadlessWritesEveryRequestedOutput's stats: the JSON's keys and values, each stage's
+// summary over the 3 frames, and the CSV's rows.
+void expectHeadlessStats(const fs::path& out)
+{
+    const nlohmann::json stats = nlohmann::json::parse(readText(out / "stats.json"));
+    for (const char* key : {"renderer", "views", "view_width", "view_height", "frames", "gpu", "view_generation_ms",
+                            "eia_ms", "total_ms", "stages", "view_buffer_bytes", "panel_width", "panel_height",
+                            "profile", "pack", "triangles", "drawn_triangles"})
+        EXPECT_TRUE(stats.contains(key)) << key;
+    // cubeAndSphereScene draws each of its meshes once: 2 cubes of 12 + a 24x16 sphere.
+    EXPECT_EQ(stats["triangles"].get<uint64_t>(), 2u * 12u + 2u * 24u * 16u);
+    EXPECT_EQ(stats["drawn_triangles"].get<uint64_t>(), stats["triangles"].get<uint64_t>());
+    EXPECT_EQ(stats["renderer"], "mvr");
+    EXPECT_EQ(stats["views"], 4);
+    EXPECT_EQ(stats["view_width"], 96);
+    EXPECT_EQ(stats["frames"], 3);
+    EXPECT_EQ(stats["panel_width"], 384);
+    EXPECT_EQ(stats["profile"], "cli-small");
+    EXPECT_EQ(stats["pack"], "scene.lfdpack");
+    EXPECT_EQ(stats["view_buffer_bytes"], 4 * 96 * 72 * 8);
+    for (const char* stage : {"view_generation", "eia", "total"}) {
+        const double ms = stats[std::string(stage) + "_ms"];
+        EXPECT_TRUE(std::isfinite(ms) && ms > 0.0) << stage << " " << ms;
+        const nlohmann::json& s = stats["stages"][stage];
+        EXPECT_EQ(s["samples"], 3) << stage;
+        EXPECT_LE(double(s["min"]), double(s["median"]));
+        EXPECT_LE(double(s["median"]), double(s["max"]));
+    }
+    EXPECT_GE(double(stats["total_ms"]), double(stats["view_generation_ms"]));
+    // CSV: header + 3 frames x 3 stages.
+    const std::string csv = readText(out / "stats.csv");
+    EXPECT_EQ(csv.rfind("frame,stage,ms\n", 0), 0u);
+    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 3);
+}
+
 TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
 {
     const fs::path out = dir_ / "out";
@@ -215,35 +250,7 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
     const metrics::Image expectedViewer{96, 72, 4, player::simulateViewer(profile, reference.eia.pixels, 1.5)};
     EXPECT_EQ(imageMismatch(viewer, expectedViewer, 1), "") << "simulated viewer";
 
-    const nlohmann::json stats = nlohmann::json::parse(readText(out / "stats.json"));
-    for (const char* key : {"renderer", "views", "view_width", "view_height", "frames", "gpu", "view_generation_ms",
-                            "eia_ms", "total_ms", "stages", "view_buffer_bytes", "panel_width", "panel_height",
-                            "profile", "pack", "triangles", "drawn_triangles"})
-        EXPECT_TRUE(stats.contains(key)) << key;
-    // cubeAndSphereScene draws each of its meshes once: 2 cubes of 12 + a 24x16 sphere.
-    EXPECT_EQ(stats["triangles"].get<uint64_t>(), 2u * 12u + 2u * 24u * 16u);
-    EXPECT_EQ(stats["drawn_triangles"].get<uint64_t>(), stats["triangles"].get<uint64_t>());
-    EXPECT_EQ(stats["renderer"], "mvr");
-    EXPECT_EQ(stats["views"], 4);
-    EXPECT_EQ(stats["view_width"], 96);
-    EXPECT_EQ(stats["frames"], 3);
-    EXPECT_EQ(stats["panel_width"], 384);
-    EXPECT_EQ(stats["profile"], "cli-small");
-    EXPECT_EQ(stats["pack"], "scene.lfdpack");
-    EXPECT_EQ(stats["view_buffer_bytes"], 4 * 96 * 72 * 8);
-    for (const char* stage : {"view_generation", "eia", "total"}) {
-        const double ms = stats[std::string(stage) + "_ms"];
-        EXPECT_TRUE(std::isfinite(ms) && ms > 0.0) << stage << " " << ms;
-        const nlohmann::json& s = stats["stages"][stage];
-        EXPECT_EQ(s["samples"], 3) << stage;
-        EXPECT_LE(double(s["min"]), double(s["median"]));
-        EXPECT_LE(double(s["median"]), double(s["max"]));
-    }
-    EXPECT_GE(double(stats["total_ms"]), double(stats["view_generation_ms"]));
-    // CSV: header + 3 frames x 3 stages.
-    const std::string csv = readText(out / "stats.csv");
-    EXPECT_EQ(csv.rfind("frame,stage,ms\n", 0), 0u);
-    EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 3);
+    expectHeadlessStats(out);
 }
 
 TEST_F(CliTest, LayeredRendererAndExplicitFrame)

@@ -868,6 +868,65 @@ TEST_F(LfdprStabilityTest, SliverFanCoversLikeMvrWithBoundedPoints)
 
 // ---- 5. The bounds can fail -----------------------------------------------------------
 
+// The ways a point renderer breaks, applied to good views (`bg`: the background byte).
+// Lost splats: every `every`-th covered pixel left empty.
+void punchHoles(std::vector<Image>& views, size_t every, uint8_t bg)
+{
+    for (Image& image : views) {
+        const std::vector<uint8_t> covered = coverageMask(image);
+        for (size_t i = 0, n = 0; i < covered.size(); ++i)
+            if (covered[i] && n++ % every == 0)
+                std::fill_n(&image.pixels[i * 4], 3, bg);
+    }
+}
+
+// A projection off by `shift` pixels (a wrong viewport or pixel-centre convention).
+void shiftRight(std::vector<Image>& views, uint32_t shift, uint8_t bg)
+{
+    for (Image& image : views)
+        for (uint32_t y = 0; y < image.height; ++y) {
+            uint8_t* row = &image.pixels[size_t(y) * image.width * 4];
+            std::copy_backward(row, row + (image.width - shift) * 4, row + image.width * 4);
+            for (uint32_t x = 0; x < shift; ++x)
+                std::fill_n(row + x * 4, 3, bg);
+        }
+}
+
+// The texture path lost: every covered pixel the mean colour of its view.
+void loseTexture(std::vector<Image>& views)
+{
+    for (Image& image : views) {
+        const std::vector<uint8_t> covered = coverageMask(image);
+        double sum[3] = {0, 0, 0};
+        size_t n = 0;
+        for (size_t i = 0; i < covered.size(); ++i)
+            if (covered[i]) {
+                for (int c = 0; c < 3; ++c)
+                    sum[c] += image.pixels[i * 4 + c];
+                ++n;
+            }
+        for (size_t i = 0; i < covered.size(); ++i)
+            if (covered[i])
+                for (int c = 0; c < 3; ++c)
+                    image.pixels[i * 4 + c] = uint8_t(std::lround(sum[c] / double(std::max<size_t>(n, 1))));
+    }
+}
+
+// NaN or garbage shading on every 200th covered pixel: magenta, which no material of the
+// scene has.
+void paintGarbage(std::vector<Image>& views)
+{
+    for (Image& image : views) {
+        const std::vector<uint8_t> covered = coverageMask(image);
+        for (size_t i = 0, n = 0; i < covered.size(); ++i)
+            if (covered[i] && n++ % 200 == 0) {
+                image.pixels[i * 4 + 0] = 255;
+                image.pixels[i * 4 + 1] = 0;
+                image.pixels[i * 4 + 2] = 255;
+            }
+    }
+}
+
 // lfdpr's real views pass the per-view bounds of ManyViewsAgreeWithMvrInOrder (and the
 // holes bound of the huge quad); copies of them broken the ways a point renderer breaks
 // must each miss at least the bound named here, through the same compare() and
@@ -891,64 +950,15 @@ TEST_F(LfdprStabilityTest, BrokenImagesFailTheBoundsTheRendererMeets)
         std::function<void(std::vector<Image>&)> apply;
     };
     const std::vector<Variant> variants = {
-        // Lost splats: every 20th covered pixel left empty (5% holes).
-        {"holes punched in", "hole rate",
-         [&](std::vector<Image>& views) {
-             for (Image& image : views) {
-                 const std::vector<uint8_t> covered = coverageMask(image);
-                 for (size_t i = 0, n = 0; i < covered.size(); ++i)
-                     if (covered[i] && n++ % 20 == 0)
-                         std::fill_n(&image.pixels[i * 4], 3, bg);
-             }
-         }},
-        // A projection off by two pixels (a wrong viewport or pixel-centre convention).
-        {"shifted two pixels right", "mean SSIM",
-         [&](std::vector<Image>& views) {
-             for (Image& image : views)
-                 for (uint32_t y = 0; y < image.height; ++y) {
-                     uint8_t* row = &image.pixels[size_t(y) * image.width * 4];
-                     std::copy_backward(row, row + (image.width - 2) * 4, row + image.width * 4);
-                     for (uint32_t x = 0; x < 2; ++x)
-                         std::fill_n(row + x * 4, 3, bg);
-                 }
-         }},
+        {"holes punched in", "hole rate", [&](std::vector<Image>& views) { punchHoles(views, 20, bg); }}, // 5%
+        {"shifted two pixels right", "mean SSIM", [&](std::vector<Image>& views) { shiftRight(views, 2, bg); }},
         // Views rendered with another view's camera (half the cone away).
         {"another view's camera", "mean SSIM",
-         [&](std::vector<Image>& views) {
+         [](std::vector<Image>& views) {
              std::rotate(views.begin(), views.begin() + std::ptrdiff_t(views.size() / 2), views.end());
          }},
-        // The texture path lost: every covered pixel the mean colour of its view.
-        {"texture lost", "mean SSIM",
-         [&](std::vector<Image>& views) {
-             for (Image& image : views) {
-                 const std::vector<uint8_t> covered = coverageMask(image);
-                 double sum[3] = {0, 0, 0};
-                 size_t n = 0;
-                 for (size_t i = 0; i < covered.size(); ++i)
-                     if (covered[i]) {
-                         for (int c = 0; c < 3; ++c)
-                             sum[c] += image.pixels[i * 4 + c];
-                         ++n;
-                     }
-                 for (size_t i = 0; i < covered.size(); ++i)
-                     if (covered[i])
-                         for (int c = 0; c < 3; ++c)
-                             image.pixels[i * 4 + c] = uint8_t(std::lround(sum[c] / double(std::max<size_t>(n, 1))));
-             }
-         }},
-        // NaN or garbage shading on a few pixels (0.5%): colours no material of the scene has.
-        {"garbage colours", "implausible colours",
-         [&](std::vector<Image>& views) {
-             for (Image& image : views) {
-                 const std::vector<uint8_t> covered = coverageMask(image);
-                 for (size_t i = 0, n = 0; i < covered.size(); ++i)
-                     if (covered[i] && n++ % 200 == 0) {
-                         image.pixels[i * 4 + 0] = 255;
-                         image.pixels[i * 4 + 1] = 0;
-                         image.pixels[i * 4 + 2] = 255;
-                     }
-             }
-         }},
+        {"texture lost", "mean SSIM", loseTexture},
+        {"garbage colours", "implausible colours", paintGarbage}, // 0.5% of the pixels
     };
     for (const Variant& variant : variants) {
         Frame broken = lfdpr;
@@ -966,12 +976,7 @@ TEST_F(LfdprStabilityTest, BrokenImagesFailTheBoundsTheRendererMeets)
     // The huge quad's stricter hole bound: 2% of the covered pixels emptied miss it (holes
     // count away from silhouettes only, so fewer than 2% are counted).
     Frame holed = lfdpr;
-    for (Image& image : holed.views) {
-        const std::vector<uint8_t> covered = coverageMask(image);
-        for (size_t i = 0, n = 0; i < covered.size(); ++i)
-            if (covered[i] && n++ % 50 == 0)
-                std::fill_n(&image.pixels[i * 4], 3, bg);
-    }
+    punchHoles(holed.views, 50, bg);
     const std::vector<std::string> missed = violations(compare(holed, mvr, 10), kHugeQuadBounds);
     ASSERT_FALSE(missed.empty()) << "2% holes pass the huge quad's bounds";
     EXPECT_EQ(missed.front().rfind("hole rate", 0), 0u) << missed.front();

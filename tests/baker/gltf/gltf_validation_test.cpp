@@ -108,84 +108,85 @@ TEST_F(GltfValidation, ValidSceneImportsWithoutWarnings)
     EXPECT_TRUE(lfd::bake::gltf::validateGltfSchema(validScene()).empty());
 }
 
+// One property changed per case; each refuses the file with `code` at `jsonPath`.
+const Mutation kSchemaErrors[] = {
+    // wrong JSON types
+    {"/materials/0/pbrMetallicRoughness", json::array({"x"}),
+     IssueCode::TYPE_MISMATCH, "materials[0].pbrMetallicRoughness"},
+    {"/materials/0/pbrMetallicRoughness/metallicFactor", "0.5",
+     IssueCode::TYPE_MISMATCH, "materials[0].pbrMetallicRoughness.metallicFactor"},
+    {"/materials/0/doubleSided", 1, IssueCode::TYPE_MISMATCH, "materials[0].doubleSided"},
+    {"/materials/0/emissiveFactor", json::array({1, 1}), IssueCode::ARRAY_LENGTH_MISMATCH, "materials[0].emissiveFactor"},
+    {"/meshes/0/primitives", json::object(), IssueCode::TYPE_MISMATCH, "meshes[0].primitives"},
+    {"/nodes/0/translation", json::array({0, 0}), IssueCode::ARRAY_LENGTH_MISMATCH, "nodes[0].translation"},
+    {"/nodes/0/matrix", json::array({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, "1"}),
+     IssueCode::TYPE_MISMATCH, "nodes[0].matrix[15]"},
+    {"/nodes/0/matrix", json::array({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}),
+     IssueCode::NODE_MATRIX_TRS, "nodes[0].matrix"},
+    {"/extensionsRequired", "KHR_mesh_quantization", IssueCode::TYPE_MISMATCH, "extensionsRequired"},
+    {"/extensionsRequired", json::array({"KHR_mesh_quantization"}),
+     IssueCode::REQUIRED_EXTENSION_NOT_USED, "extensionsRequired[0]"},
+    {"/buffers/0/uri", 3, IssueCode::TYPE_MISMATCH, "buffers[0].uri"},
+    // references
+    {"/materials/0/pbrMetallicRoughness/baseColorTexture/index", -1,
+     IssueCode::UNRESOLVED_REFERENCE, "materials[0].pbrMetallicRoughness.baseColorTexture.index"},
+    {"/scene", 3, IssueCode::UNRESOLVED_REFERENCE, "scene"},
+    {"/scene", "hello", IssueCode::TYPE_MISMATCH, "scene"},
+    {"/scenes/0/nodes", json::array({0, 0}), IssueCode::DUPLICATE_ELEMENT, "scenes[0].nodes[1]"},
+    {"/nodes/0/mesh", 0.5, IssueCode::TYPE_MISMATCH, "nodes[0].mesh"},
+    {"/nodes/0/children", json::array({7}), IssueCode::UNRESOLVED_REFERENCE, "nodes[0].children[0]"},
+    {"/meshes/0/primitives/0/attributes/POSITION", 9,
+     IssueCode::UNRESOLVED_REFERENCE, "meshes[0].primitives[0].attributes.POSITION"},
+    {"/meshes/0/primitives/0/indices", "2", IssueCode::TYPE_MISMATCH, "meshes[0].primitives[0].indices"},
+    {"/meshes/0/primitives/0/material", -1, IssueCode::UNRESOLVED_REFERENCE, "meshes[0].primitives[0].material"},
+    {"/accessors/0/bufferView", 6, IssueCode::UNRESOLVED_REFERENCE, "accessors[0].bufferView"},
+    {"/bufferViews/0/buffer", 1, IssueCode::UNRESOLVED_REFERENCE, "bufferViews[0].buffer"},
+    {"/textures/0/source", 3, IssueCode::UNRESOLVED_REFERENCE, "textures[0].source"},
+    {"/animations/0/channels/0/sampler", 1,
+     IssueCode::UNRESOLVED_REFERENCE, "animations[0].channels[0].sampler"},
+    {"/animations/0/channels/0/target/node", 2,
+     IssueCode::UNRESOLVED_REFERENCE, "animations[0].channels[0].target.node"},
+    {"/animations/0/samplers/0/input", 8, IssueCode::UNRESOLVED_REFERENCE, "animations[0].samplers[0].input"},
+    // required properties
+    {"/asset", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "asset"},
+    {"/asset/version", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "asset.version"},
+    {"/meshes/0/primitives/0/attributes", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "meshes[0].primitives[0].attributes"},
+    {"/accessors/0/componentType", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "accessors[0].componentType"},
+    {"/accessors/0/count", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "accessors[0].count"},
+    {"/bufferViews/0/byteLength", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "bufferViews[0].byteLength"},
+    {"/buffers/0/byteLength", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "buffers[0].byteLength"},
+    {"/materials/0/pbrMetallicRoughness/baseColorTexture/index", nullptr,
+     IssueCode::MISSING_REQUIRED_PROPERTY, "materials[0].pbrMetallicRoughness.baseColorTexture.index"},
+    {"/animations/0/channels/0/target/path", nullptr,
+     IssueCode::MISSING_REQUIRED_PROPERTY, "animations[0].channels[0].target.path"},
+    {"/images/0/uri", nullptr, IssueCode::IMAGE_SOURCE_MISSING, "images[0]"},
+    // values and ranges
+    {"/asset/version", "1.0", IssueCode::UNSUPPORTED_VERSION, "asset.version"},
+    {"/asset/version", "two", IssueCode::INVALID_VERSION, "asset.version"},
+    {"/asset/minVersion", "2.1", IssueCode::UNSUPPORTED_VERSION, "asset.minVersion"},
+    {"/meshes/0/primitives/0/mode", 7, IssueCode::VALUE_OUT_OF_RANGE, "meshes[0].primitives[0].mode"},
+    {"/accessors/0/componentType", 5124,
+     IssueCode::VALUE_NOT_IN_LIST, "accessors[0].componentType"},
+    {"/accessors/0/type", "VEC5", IssueCode::VALUE_NOT_IN_LIST, "accessors[0].type"},
+    {"/accessors/0/count", 0, IssueCode::VALUE_OUT_OF_RANGE, "accessors[0].count"},
+    {"/accessors/0/normalized", true, IssueCode::ACCESSOR_NORMALIZED_INVALID, "accessors[0].normalized"},
+    {"/accessors/0/byteOffset", -4, IssueCode::VALUE_OUT_OF_RANGE, "accessors[0].byteOffset"},
+    {"/accessors/0/sparse", json{{"count", 1}}, IssueCode::MISSING_REQUIRED_PROPERTY, "accessors[0].sparse.indices"},
+    {"/accessors/0/sparse",
+     json{{"count", 5}, {"indices", {{"bufferView", 2}, {"componentType", 5123}}}, {"values", {{"bufferView", 0}}}},
+     IssueCode::ACCESSOR_SPARSE_COUNT_OUT_OF_RANGE, "accessors[0].sparse.count"},
+    {"/accessors/0/sparse",
+     json{{"count", 1}, {"indices", {{"bufferView", 2}, {"componentType", 5126}}}, {"values", {{"bufferView", 0}}}},
+     IssueCode::VALUE_NOT_IN_LIST, "accessors[0].sparse.indices.componentType"},
+    {"/bufferViews/0/byteLength", -4, IssueCode::VALUE_OUT_OF_RANGE, "bufferViews[0].byteLength"},
+    {"/bufferViews/0/byteStride", 2, IssueCode::VALUE_OUT_OF_RANGE, "bufferViews[0].byteStride"},
+    {"/images/0/bufferView", 0, IssueCode::IMAGE_SOURCE_CONFLICT, "images[0]"},
+    {"/animations/0/samplers/0/interpolation", "CUBIC",
+     IssueCode::VALUE_NOT_IN_LIST, "animations[0].samplers[0].interpolation"},
+};
 TEST_F(GltfValidation, SchemaErrorsRefuseTheFileNamingTheJsonPath)
 {
-    const Mutation cases[] = {
-        // wrong JSON types
-        {"/materials/0/pbrMetallicRoughness", json::array({"x"}),
-         IssueCode::TYPE_MISMATCH, "materials[0].pbrMetallicRoughness"},
-        {"/materials/0/pbrMetallicRoughness/metallicFactor", "0.5",
-         IssueCode::TYPE_MISMATCH, "materials[0].pbrMetallicRoughness.metallicFactor"},
-        {"/materials/0/doubleSided", 1, IssueCode::TYPE_MISMATCH, "materials[0].doubleSided"},
-        {"/materials/0/emissiveFactor", json::array({1, 1}), IssueCode::ARRAY_LENGTH_MISMATCH, "materials[0].emissiveFactor"},
-        {"/meshes/0/primitives", json::object(), IssueCode::TYPE_MISMATCH, "meshes[0].primitives"},
-        {"/nodes/0/translation", json::array({0, 0}), IssueCode::ARRAY_LENGTH_MISMATCH, "nodes[0].translation"},
-        {"/nodes/0/matrix", json::array({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, "1"}),
-         IssueCode::TYPE_MISMATCH, "nodes[0].matrix[15]"},
-        {"/nodes/0/matrix", json::array({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}),
-         IssueCode::NODE_MATRIX_TRS, "nodes[0].matrix"},
-        {"/extensionsRequired", "KHR_mesh_quantization", IssueCode::TYPE_MISMATCH, "extensionsRequired"},
-        {"/extensionsRequired", json::array({"KHR_mesh_quantization"}),
-         IssueCode::REQUIRED_EXTENSION_NOT_USED, "extensionsRequired[0]"},
-        {"/buffers/0/uri", 3, IssueCode::TYPE_MISMATCH, "buffers[0].uri"},
-        // references
-        {"/materials/0/pbrMetallicRoughness/baseColorTexture/index", -1,
-         IssueCode::UNRESOLVED_REFERENCE, "materials[0].pbrMetallicRoughness.baseColorTexture.index"},
-        {"/scene", 3, IssueCode::UNRESOLVED_REFERENCE, "scene"},
-        {"/scene", "hello", IssueCode::TYPE_MISMATCH, "scene"},
-        {"/scenes/0/nodes", json::array({0, 0}), IssueCode::DUPLICATE_ELEMENT, "scenes[0].nodes[1]"},
-        {"/nodes/0/mesh", 0.5, IssueCode::TYPE_MISMATCH, "nodes[0].mesh"},
-        {"/nodes/0/children", json::array({7}), IssueCode::UNRESOLVED_REFERENCE, "nodes[0].children[0]"},
-        {"/meshes/0/primitives/0/attributes/POSITION", 9,
-         IssueCode::UNRESOLVED_REFERENCE, "meshes[0].primitives[0].attributes.POSITION"},
-        {"/meshes/0/primitives/0/indices", "2", IssueCode::TYPE_MISMATCH, "meshes[0].primitives[0].indices"},
-        {"/meshes/0/primitives/0/material", -1, IssueCode::UNRESOLVED_REFERENCE, "meshes[0].primitives[0].material"},
-        {"/accessors/0/bufferView", 6, IssueCode::UNRESOLVED_REFERENCE, "accessors[0].bufferView"},
-        {"/bufferViews/0/buffer", 1, IssueCode::UNRESOLVED_REFERENCE, "bufferViews[0].buffer"},
-        {"/textures/0/source", 3, IssueCode::UNRESOLVED_REFERENCE, "textures[0].source"},
-        {"/animations/0/channels/0/sampler", 1,
-         IssueCode::UNRESOLVED_REFERENCE, "animations[0].channels[0].sampler"},
-        {"/animations/0/channels/0/target/node", 2,
-         IssueCode::UNRESOLVED_REFERENCE, "animations[0].channels[0].target.node"},
-        {"/animations/0/samplers/0/input", 8, IssueCode::UNRESOLVED_REFERENCE, "animations[0].samplers[0].input"},
-        // required properties
-        {"/asset", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "asset"},
-        {"/asset/version", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "asset.version"},
-        {"/meshes/0/primitives/0/attributes", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "meshes[0].primitives[0].attributes"},
-        {"/accessors/0/componentType", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "accessors[0].componentType"},
-        {"/accessors/0/count", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "accessors[0].count"},
-        {"/bufferViews/0/byteLength", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "bufferViews[0].byteLength"},
-        {"/buffers/0/byteLength", nullptr, IssueCode::MISSING_REQUIRED_PROPERTY, "buffers[0].byteLength"},
-        {"/materials/0/pbrMetallicRoughness/baseColorTexture/index", nullptr,
-         IssueCode::MISSING_REQUIRED_PROPERTY, "materials[0].pbrMetallicRoughness.baseColorTexture.index"},
-        {"/animations/0/channels/0/target/path", nullptr,
-         IssueCode::MISSING_REQUIRED_PROPERTY, "animations[0].channels[0].target.path"},
-        {"/images/0/uri", nullptr, IssueCode::IMAGE_SOURCE_MISSING, "images[0]"},
-        // values and ranges
-        {"/asset/version", "1.0", IssueCode::UNSUPPORTED_VERSION, "asset.version"},
-        {"/asset/version", "two", IssueCode::INVALID_VERSION, "asset.version"},
-        {"/asset/minVersion", "2.1", IssueCode::UNSUPPORTED_VERSION, "asset.minVersion"},
-        {"/meshes/0/primitives/0/mode", 7, IssueCode::VALUE_OUT_OF_RANGE, "meshes[0].primitives[0].mode"},
-        {"/accessors/0/componentType", 5124,
-         IssueCode::VALUE_NOT_IN_LIST, "accessors[0].componentType"},
-        {"/accessors/0/type", "VEC5", IssueCode::VALUE_NOT_IN_LIST, "accessors[0].type"},
-        {"/accessors/0/count", 0, IssueCode::VALUE_OUT_OF_RANGE, "accessors[0].count"},
-        {"/accessors/0/normalized", true, IssueCode::ACCESSOR_NORMALIZED_INVALID, "accessors[0].normalized"},
-        {"/accessors/0/byteOffset", -4, IssueCode::VALUE_OUT_OF_RANGE, "accessors[0].byteOffset"},
-        {"/accessors/0/sparse", json{{"count", 1}}, IssueCode::MISSING_REQUIRED_PROPERTY, "accessors[0].sparse.indices"},
-        {"/accessors/0/sparse",
-         json{{"count", 5}, {"indices", {{"bufferView", 2}, {"componentType", 5123}}}, {"values", {{"bufferView", 0}}}},
-         IssueCode::ACCESSOR_SPARSE_COUNT_OUT_OF_RANGE, "accessors[0].sparse.count"},
-        {"/accessors/0/sparse",
-         json{{"count", 1}, {"indices", {{"bufferView", 2}, {"componentType", 5126}}}, {"values", {{"bufferView", 0}}}},
-         IssueCode::VALUE_NOT_IN_LIST, "accessors[0].sparse.indices.componentType"},
-        {"/bufferViews/0/byteLength", -4, IssueCode::VALUE_OUT_OF_RANGE, "bufferViews[0].byteLength"},
-        {"/bufferViews/0/byteStride", 2, IssueCode::VALUE_OUT_OF_RANGE, "bufferViews[0].byteStride"},
-        {"/images/0/bufferView", 0, IssueCode::IMAGE_SOURCE_CONFLICT, "images[0]"},
-        {"/animations/0/samplers/0/interpolation", "CUBIC",
-         IssueCode::VALUE_NOT_IN_LIST, "animations[0].samplers[0].interpolation"},
-    };
-    for (const Mutation& m : cases) {
+    for (const Mutation& m : kSchemaErrors) {
         SCOPED_TRACE(m.pointer);
         const fs::path path = write(mutate(validScene(), m));
         lfd::test::expectRefusedWith(path, m.code, m.jsonPath);
@@ -306,112 +307,122 @@ TEST_F(GltfValidation, BinaryGltfJsonChunkIsValidated)
     EXPECT_THROW(import(path), lfd::bake::BakeError);
 }
 
+struct FindingCase {
+    std::vector<std::pair<const char*, json>> edits; // JSON pointer, new value (null: removed)
+    IssueCode code;
+    const char* jsonPath;
+    lfd::test::IssueSeverity severity;
+};
+
+constexpr lfd::test::IssueSeverity kError = lfd::test::IssueSeverity::Error, kWarning = lfd::test::IssueSeverity::Warning;
+
+// Two negative key times, as a data-URI buffer.
+json negativeKeysBuffer()
+{
+    std::vector<uint8_t> keys;
+    append<float>(keys, {-1, 1});
+    return {{"byteLength", 8}, {"uri", "data:application/octet-stream;base64," + base64(keys)}};
+}
+
+const json kView6 = {{"buffer", 0}, {"byteLength", 12}};
+
+// The edits of validScene() that each make one kind of finding.
+const FindingCase kFindingCases[] = {
+    {{{"/nodes/1", {{"children", {3}}}}, {"/nodes/2", {{"children", {3}}}}, {"/nodes/3", json::object()}},
+     IssueCode::NODE_MULTIPLE_PARENTS, "nodes[2].children[0]", kError},
+    {{{"/meshes/0/primitives/1", {{"attributes", {{"POSITION", 0}}}, {"targets", {{{"POSITION", 0}}}}}}},
+     IssueCode::MESH_PRIMITIVES_UNEQUAL_TARGETS_COUNT, "meshes[0].primitives[1].targets", kError},
+    {{{"/accessors/1/count", 2}}, IssueCode::MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT,
+     "meshes[0].primitives[0].attributes.TEXCOORD_0", kError},
+    {{{"/meshes/0/primitives/0/targets", {{{"TANGENT", 0}}}}}, IssueCode::MORPH_TARGET_ATTRIBUTE_UNKNOWN,
+     "meshes[0].primitives[0].targets[0].TANGENT", kError},
+    {{{"/bufferViews/6", kView6},
+      {"/accessors/6", {{"bufferView", 6}, {"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}}},
+      {"/meshes/0/primitives/0/attributes/_CUSTOM", 6}},
+     IssueCode::VERTEX_ATTRIBUTE_UNSIGNED_INT, "meshes[0].primitives[0].attributes._CUSTOM", kWarning},
+    {{{"/bufferViews/6", kView6},
+      {"/accessors/6", {{"bufferView", 6}, {"componentType", 5121}, {"count", 3}, {"type", "VEC4"}}},
+      {"/meshes/0/primitives/0/attributes/JOINTS_0", 6}},
+     IssueCode::SKINNING_ATTRIBUTES_UNPAIRED, "meshes[0].primitives[0].attributes", kWarning},
+    {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 16}}},
+      {"/accessors/6",
+       {{"bufferView", 6}, {"byteOffset", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}}},
+      {"/meshes/0/primitives/0/attributes/TEXCOORD_1", 6}},
+     IssueCode::VERTEX_ATTRIBUTE_MISALIGNED, "accessors[6].byteOffset", kError},
+    {{{"/accessors/6",
+       {{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+        {"sparse", {{"count", 3}, {"indices", {{"bufferView", 5}, {"byteOffset", 8}, {"componentType", 5125}}},
+                    {"values", {{"bufferView", 0}}}}}}}},
+     IssueCode::ACCESSOR_SPARSE_INDEX_OOB, "accessors[6].sparse.indices", kError},
+    {{{"/accessors/6",
+       {{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
+        {"sparse", {{"count", 3}, {"indices", {{"bufferView", 5}, {"componentType", 5125}}},
+                    {"values", {{"bufferView", 0}}}}}}}},
+     IssueCode::ACCESSOR_SPARSE_INDICES_NON_INCREASING, "accessors[6].sparse.indices", kError},
+    {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 36}, {"byteStride", 8}}},
+      {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
+     IssueCode::ACCESSOR_ELEMENT_LONGER_THAN_STRIDE, "accessors[6]", kWarning}, // nothing reads it
+    {{{"/bufferViews/6", {{"buffer", 0}, {"byteOffset", 2}, {"byteLength", 8}}},
+      {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 1}, {"type", "SCALAR"}}}},
+     IssueCode::ACCESSOR_TOTAL_OFFSET_ALIGNMENT, "accessors[6]", kWarning},
+    // NORMAL's data read as VEC4: unit xyz, w = 0.
+    {{{"/accessors/6", {{"bufferView", 5}, {"componentType", 5126}, {"count", 2}, {"type", "VEC4"}}},
+      {"/meshes/0/primitives/0/attributes/TANGENT", 6}},
+     IssueCode::ACCESSOR_INVALID_SIGN, "accessors[6]", kWarning},
+    // The index view, without its target, also read as vertex data (tinygltf then gives it
+    // the vertex target).
+    {{{"/bufferViews/2/target", nullptr},
+      {"/accessors/6", {{"bufferView", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 1}, {"type", "VEC2"}}},
+      {"/meshes/0/primitives/0/attributes/TEXCOORD_1", 6}},
+     IssueCode::BUFFER_VIEW_TARGET_MISMATCH, "bufferViews[2].target", kError},
+    {{{"/bufferViews/3/extensions",
+       {{"EXT_meshopt_compression", json::object()}, {"KHR_meshopt_compression", json::object()}}}},
+     IssueCode::MESHOPT_BOTH_EXTENSIONS, "bufferViews[3].extensions", kError},
+    {{{"/buffers/0/uri", "data:application/octet-stream;base64,@@@@"}}, IssueCode::DATA_URI_MALFORMED,
+     "buffers[0].uri", kError},
+    {{{"/images/0/uri", "data:image/png;base64,"}}, IssueCode::DATA_URI_EMPTY, "images[0].uri", kError},
+    {{{"/buffers/0/uri", "data:text/plain;base64,AAAA"}}, IssueCode::DATA_URI_MEDIA_TYPE_INVALID, "buffers[0].uri",
+     kError},
+    {{{"/images/0", {{"bufferView", 6}, {"mimeType", "image/png"}}},
+      {"/bufferViews/6", {{"buffer", 0}, {"byteLength", 8}, {"byteStride", 4}}}},
+     IssueCode::IMAGE_BUFFER_VIEW_WITH_BYTESTRIDE, "images[0].bufferView", kError},
+    {{{"/images/0", {{"bufferView", 6}}}, {"/bufferViews/6", {{"buffer", 0}, {"byteLength", 8}}}},
+     IssueCode::IMAGE_MIME_TYPE_MISSING, "images[0].mimeType", kWarning},
+    {{{"/images/0/mimeType", "image/jpeg"}}, IssueCode::IMAGE_MIME_TYPE_MISMATCH, "images[0].mimeType", kWarning},
+    {{{"/animations/0/channels/0/target/path", "weights"}},
+     IssueCode::ANIMATION_CHANNEL_TARGET_NODE_WEIGHTS_NO_MORPHS, "animations[0].channels[0].target.path", kError},
+    {{{"/bufferViews/3/byteStride", 4}}, IssueCode::ANIMATION_SAMPLER_ACCESSOR_WITH_BYTESTRIDE,
+     "animations[0].samplers[0].input", kError},
+    {{{"/buffers/1", negativeKeysBuffer()},
+      {"/bufferViews/6", {{"buffer", 1}, {"byteLength", 8}}},
+      {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"},
+                        {"min", {-1}}, {"max", {1}}}},
+      {"/animations/0/samplers/0/input", 6}},
+     IssueCode::ANIMATION_KEY_TIME_INVALID, "accessors[6]", kError},
+    {{{"/accessors/3/count", 1}, {"/animations/0/samplers/0/interpolation", "CUBICSPLINE"}},
+     IssueCode::ANIMATION_CUBICSPLINE_TOO_FEW_KEYS, "animations[0].samplers[0].input", kError},
+    {{{"/accessors/4/count", 1}}, IssueCode::ANIMATION_SAMPLER_OUTPUT_COUNT_MISMATCH,
+     "animations[0].samplers[0].output", kError},
+    {{{"/cameras", {{{"type", "perspective"}, {"perspective", {{"yfov", 1}, {"znear", 2}, {"zfar", 1}}}}}}},
+     IssueCode::CAMERA_ZFAR_NOT_GREATER, "cameras[0].perspective", kWarning},
+    {{{"/nodes/1", json::object()}, {"/nodes/2", json::object()},
+      {"/skins", {{{"joints", {0, 1, 2}}, {"inverseBindMatrices", 3}, {"skeleton", 1}}}}},
+     IssueCode::SKIN_TOO_FEW_MATRICES, "skins[0].inverseBindMatrices", kWarning},
+    {{{"/nodes/1", json::object()}, {"/skins", {{{"joints", {0, 1}}}}}},
+     IssueCode::SKIN_NO_COMMON_ROOT, "skins[0].joints", kWarning},
+    {{{"/nodes/1", json::object()}, {"/skins", {{{"joints", {0}}, {"skeleton", 1}}}}},
+     IssueCode::SKIN_SKELETON_INVALID, "skins[0].skeleton", kWarning},
+    {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 64}, {"byteStride", 64}}},
+      {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 1}, {"type", "MAT4"}}},
+      {"/skins", {{{"joints", {0}}, {"inverseBindMatrices", 6}}}}},
+     IssueCode::SKIN_IBM_ACCESSOR_WITH_BYTESTRIDE, "skins[0].inverseBindMatrices", kWarning},
+};
+
 // One case for each kind of finding the other tests here do not make: the finding (code,
 // JSON path, severity) is among those of the file, wherever it comes in the list.
 TEST_F(GltfValidation, EveryKindOfFindingHasACase)
 {
-    using lfd::test::IssueSeverity;
-    constexpr IssueSeverity kError = IssueSeverity::Error, kWarning = IssueSeverity::Warning;
-    std::vector<uint8_t> keys;
-    append<float>(keys, {-1, 1});
-    const json negativeKeys = {{"byteLength", 8}, {"uri", "data:application/octet-stream;base64," + base64(keys)}};
-    const json view6 = {{"buffer", 0}, {"byteLength", 12}};
-    const struct {
-        std::vector<std::pair<const char*, json>> edits; // JSON pointer, new value (null: removed)
-        IssueCode code;
-        const char* jsonPath;
-        IssueSeverity severity;
-    } cases[] = {
-        {{{"/nodes/1", {{"children", {3}}}}, {"/nodes/2", {{"children", {3}}}}, {"/nodes/3", json::object()}},
-         IssueCode::NODE_MULTIPLE_PARENTS, "nodes[2].children[0]", kError},
-        {{{"/meshes/0/primitives/1", {{"attributes", {{"POSITION", 0}}}, {"targets", {{{"POSITION", 0}}}}}}},
-         IssueCode::MESH_PRIMITIVES_UNEQUAL_TARGETS_COUNT, "meshes[0].primitives[1].targets", kError},
-        {{{"/accessors/1/count", 2}}, IssueCode::MESH_PRIMITIVE_UNEQUAL_ACCESSOR_COUNT,
-         "meshes[0].primitives[0].attributes.TEXCOORD_0", kError},
-        {{{"/meshes/0/primitives/0/targets", {{{"TANGENT", 0}}}}}, IssueCode::MORPH_TARGET_ATTRIBUTE_UNKNOWN,
-         "meshes[0].primitives[0].targets[0].TANGENT", kError},
-        {{{"/bufferViews/6", view6},
-          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5125}, {"count", 3}, {"type", "SCALAR"}}},
-          {"/meshes/0/primitives/0/attributes/_CUSTOM", 6}},
-         IssueCode::VERTEX_ATTRIBUTE_UNSIGNED_INT, "meshes[0].primitives[0].attributes._CUSTOM", kWarning},
-        {{{"/bufferViews/6", view6},
-          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5121}, {"count", 3}, {"type", "VEC4"}}},
-          {"/meshes/0/primitives/0/attributes/JOINTS_0", 6}},
-         IssueCode::SKINNING_ATTRIBUTES_UNPAIRED, "meshes[0].primitives[0].attributes", kWarning},
-        {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 16}}},
-          {"/accessors/6",
-           {{"bufferView", 6}, {"byteOffset", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 3}, {"type", "VEC2"}}},
-          {"/meshes/0/primitives/0/attributes/TEXCOORD_1", 6}},
-         IssueCode::VERTEX_ATTRIBUTE_MISALIGNED, "accessors[6].byteOffset", kError},
-        {{{"/accessors/6",
-           {{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-            {"sparse", {{"count", 3}, {"indices", {{"bufferView", 5}, {"byteOffset", 8}, {"componentType", 5125}}},
-                        {"values", {{"bufferView", 0}}}}}}}},
-         IssueCode::ACCESSOR_SPARSE_INDEX_OOB, "accessors[6].sparse.indices", kError},
-        {{{"/accessors/6",
-           {{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"},
-            {"sparse", {{"count", 3}, {"indices", {{"bufferView", 5}, {"componentType", 5125}}},
-                        {"values", {{"bufferView", 0}}}}}}}},
-         IssueCode::ACCESSOR_SPARSE_INDICES_NON_INCREASING, "accessors[6].sparse.indices", kError},
-        {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 36}, {"byteStride", 8}}},
-          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}}}},
-         IssueCode::ACCESSOR_ELEMENT_LONGER_THAN_STRIDE, "accessors[6]", kWarning}, // nothing reads it
-        {{{"/bufferViews/6", {{"buffer", 0}, {"byteOffset", 2}, {"byteLength", 8}}},
-          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 1}, {"type", "SCALAR"}}}},
-         IssueCode::ACCESSOR_TOTAL_OFFSET_ALIGNMENT, "accessors[6]", kWarning},
-        // NORMAL's data read as VEC4: unit xyz, w = 0.
-        {{{"/accessors/6", {{"bufferView", 5}, {"componentType", 5126}, {"count", 2}, {"type", "VEC4"}}},
-          {"/meshes/0/primitives/0/attributes/TANGENT", 6}},
-         IssueCode::ACCESSOR_INVALID_SIGN, "accessors[6]", kWarning},
-        // The index view, without its target, also read as vertex data (tinygltf then gives it
-        // the vertex target).
-        {{{"/bufferViews/2/target", nullptr},
-          {"/accessors/6", {{"bufferView", 2}, {"componentType", 5123}, {"normalized", true}, {"count", 1}, {"type", "VEC2"}}},
-          {"/meshes/0/primitives/0/attributes/TEXCOORD_1", 6}},
-         IssueCode::BUFFER_VIEW_TARGET_MISMATCH, "bufferViews[2].target", kError},
-        {{{"/bufferViews/3/extensions",
-           {{"EXT_meshopt_compression", json::object()}, {"KHR_meshopt_compression", json::object()}}}},
-         IssueCode::MESHOPT_BOTH_EXTENSIONS, "bufferViews[3].extensions", kError},
-        {{{"/buffers/0/uri", "data:application/octet-stream;base64,@@@@"}}, IssueCode::DATA_URI_MALFORMED,
-         "buffers[0].uri", kError},
-        {{{"/images/0/uri", "data:image/png;base64,"}}, IssueCode::DATA_URI_EMPTY, "images[0].uri", kError},
-        {{{"/buffers/0/uri", "data:text/plain;base64,AAAA"}}, IssueCode::DATA_URI_MEDIA_TYPE_INVALID, "buffers[0].uri",
-         kError},
-        {{{"/images/0", {{"bufferView", 6}, {"mimeType", "image/png"}}},
-          {"/bufferViews/6", {{"buffer", 0}, {"byteLength", 8}, {"byteStride", 4}}}},
-         IssueCode::IMAGE_BUFFER_VIEW_WITH_BYTESTRIDE, "images[0].bufferView", kError},
-        {{{"/images/0", {{"bufferView", 6}}}, {"/bufferViews/6", {{"buffer", 0}, {"byteLength", 8}}}},
-         IssueCode::IMAGE_MIME_TYPE_MISSING, "images[0].mimeType", kWarning},
-        {{{"/images/0/mimeType", "image/jpeg"}}, IssueCode::IMAGE_MIME_TYPE_MISMATCH, "images[0].mimeType", kWarning},
-        {{{"/animations/0/channels/0/target/path", "weights"}},
-         IssueCode::ANIMATION_CHANNEL_TARGET_NODE_WEIGHTS_NO_MORPHS, "animations[0].channels[0].target.path", kError},
-        {{{"/bufferViews/3/byteStride", 4}}, IssueCode::ANIMATION_SAMPLER_ACCESSOR_WITH_BYTESTRIDE,
-         "animations[0].samplers[0].input", kError},
-        {{{"/buffers/1", negativeKeys},
-          {"/bufferViews/6", {{"buffer", 1}, {"byteLength", 8}}},
-          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 2}, {"type", "SCALAR"},
-                            {"min", {-1}}, {"max", {1}}}},
-          {"/animations/0/samplers/0/input", 6}},
-         IssueCode::ANIMATION_KEY_TIME_INVALID, "accessors[6]", kError},
-        {{{"/accessors/3/count", 1}, {"/animations/0/samplers/0/interpolation", "CUBICSPLINE"}},
-         IssueCode::ANIMATION_CUBICSPLINE_TOO_FEW_KEYS, "animations[0].samplers[0].input", kError},
-        {{{"/accessors/4/count", 1}}, IssueCode::ANIMATION_SAMPLER_OUTPUT_COUNT_MISMATCH,
-         "animations[0].samplers[0].output", kError},
-        {{{"/cameras", {{{"type", "perspective"}, {"perspective", {{"yfov", 1}, {"znear", 2}, {"zfar", 1}}}}}}},
-         IssueCode::CAMERA_ZFAR_NOT_GREATER, "cameras[0].perspective", kWarning},
-        {{{"/nodes/1", json::object()}, {"/nodes/2", json::object()},
-          {"/skins", {{{"joints", {0, 1, 2}}, {"inverseBindMatrices", 3}, {"skeleton", 1}}}}},
-         IssueCode::SKIN_TOO_FEW_MATRICES, "skins[0].inverseBindMatrices", kWarning},
-        {{{"/nodes/1", json::object()}, {"/skins", {{{"joints", {0, 1}}}}}},
-         IssueCode::SKIN_NO_COMMON_ROOT, "skins[0].joints", kWarning},
-        {{{"/nodes/1", json::object()}, {"/skins", {{{"joints", {0}}, {"skeleton", 1}}}}},
-         IssueCode::SKIN_SKELETON_INVALID, "skins[0].skeleton", kWarning},
-        {{{"/bufferViews/6", {{"buffer", 0}, {"byteLength", 64}, {"byteStride", 64}}},
-          {"/accessors/6", {{"bufferView", 6}, {"componentType", 5126}, {"count", 1}, {"type", "MAT4"}}},
-          {"/skins", {{{"joints", {0}}, {"inverseBindMatrices", 6}}}}},
-         IssueCode::SKIN_IBM_ACCESSOR_WITH_BYTESTRIDE, "skins[0].inverseBindMatrices", kWarning},
-    };
-    for (const auto& c : cases) {
+    for (const FindingCase& c : kFindingCases) {
         SCOPED_TRACE(lfd::test::codeName(c.code));
         json doc = validScene();
         for (const auto& [pointer, value] : c.edits) {
