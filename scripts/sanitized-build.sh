@@ -13,7 +13,10 @@
 # code and uninstrumented driver are outside what this build checks.
 # -O1 -g1 is what OSS-Fuzz builds with: reports keep usable stack traces, the suites run
 # faster than at -O0, and line tables (-g1) are all the symbolizer reads (full debug
-# information made every object about a third slower to compile).
+# information made every object about a third slower to compile). The test executables
+# compile at -O0 (LFD_TEST_CXX_FLAGS): the sanitizers check the same, the work they test
+# runs in the -O1 libraries, and an instrumented test file compiles about twice as fast
+# (gltf_validation_test.cpp: 19.3 s at -Og, 8.5 s at -O0).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -34,5 +37,5 @@ done
 
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DLFD_WERROR=ON -DLFD_SANITIZE=ON -DLFD_BUILD_FUZZERS=ON -DLFD_BUILD_PLAYER=OFF >/dev/null
+  -DLFD_TEST_CXX_FLAGS="-O0;-g1" -DLFD_WERROR=ON -DLFD_SANITIZE=ON -DLFD_BUILD_FUZZERS=ON -DLFD_BUILD_PLAYER=OFF >/dev/null
 cmake --build build-asan -j "$jobs" ${targets[@]+--target "${targets[@]}"} >/dev/null

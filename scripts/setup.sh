@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config git ninja-build
   libglm-dev nlohmann-json3-dev libtinygltf-dev libstb-dev libopenmesh-dev
-  libopenimageio-dev openimageio-tools libxxhash-dev libcli11-dev libosd-dev libzstd-dev libsquish-dev
+  libopenimageio-dev openimageio-tools libxxhash-dev zlib1g-dev libcli11-dev libosd-dev libzstd-dev libsquish-dev
   libdraco-dev libmeshoptimizer-dev libwebp-dev
   libavformat-dev libavcodec-dev libswscale-dev libavutil-dev
   libegl-dev libepoxy-dev libglfw3-dev libegl-mesa0 libgl1-mesa-dri mesa-utils
