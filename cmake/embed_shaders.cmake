@@ -1,4 +1,5 @@
-# Embeds every file in SHADER_DIR into OUTPUT (a .cpp) as a table of
+# Embeds every shader listed in cmake/shader_list.cmake (files of SHADER_DIR) into OUTPUT
+# (a .cpp) as a table of
 # {relative file name, source bytes}. Run as a script:
 #   cmake -DSHADER_DIR=<dir> -DOUTPUT=<file.cpp> -P embed_shaders.cmake
 # Sources are written as byte arrays (not raw string literals) so that no shader text,
@@ -8,9 +9,13 @@ if(NOT SHADER_DIR OR NOT OUTPUT)
   message(FATAL_ERROR "embed_shaders.cmake: SHADER_DIR and OUTPUT must be set")
 endif()
 
-file(GLOB shader_files RELATIVE ${SHADER_DIR}
-  ${SHADER_DIR}/*.glsl ${SHADER_DIR}/*.vert ${SHADER_DIR}/*.geom ${SHADER_DIR}/*.frag
-  ${SHADER_DIR}/*.comp)
+include(${CMAKE_CURRENT_LIST_DIR}/shader_list.cmake)
+set(shader_files ${LFD_SHADERS})
+foreach(name IN LISTS shader_files)
+  if(NOT EXISTS ${SHADER_DIR}/${name})
+    message(FATAL_ERROR "embed_shaders.cmake: shaders/${name} is listed in cmake/shader_list.cmake but missing")
+  endif()
+endforeach()
 list(SORT shader_files)
 
 set(arrays "")

@@ -1,0 +1,59 @@
+# Every shader file the player embeds (cmake/embed_shaders.cmake), listed rather than globbed:
+# a file added to shaders/ without a line here fails the ShadersListed test
+# (tests/docs/check_shader_list.py), one removed fails the build.
+set(LFD_SHADERS
+  eia_bindings.glsl
+  eia_construct.comp
+  eia_prefilter.comp
+  gstd_bindings.glsl
+  gstd_panel_accumulate.comp
+  gstd_panel_phases.comp
+  gstd_panel_resolve.comp
+  gstd_reconstruct.comp
+  lfdpr_bindings.glsl
+  lfdpr_camera_line.glsl
+  lfdpr_direct_fanout.glsl
+  lfdpr_direct_pack.comp
+  lfdpr_direct_shade.comp
+  lfdpr_math.glsl
+  lfdpr_paper_dispatch.comp
+  lfdpr_paper_points.frag
+  lfdpr_paper_points.geom
+  lfdpr_paper_points.vert
+  lfdpr_paper_resolve.comp
+  lfdpr_paper_splat.comp
+  lfdpr_pixel_access.glsl
+  lfdpr_scene_access.glsl
+  lfdpr_shade_chunks.glsl
+  lfdpr_triangle_setup.glsl
+  lfdpr_visibility_clear.comp
+  lfdpr_visibility_points.comp
+  lfdpr_visibility_repair_dispatch.comp
+  lfdpr_visibility_shade.comp
+  lfdpr_visibility_shade_list.comp
+  lfdpr_visibility_shade_pixel.glsl
+  lfdpr_visibility_splat.comp
+  lfdpr_work_counters.glsl
+  lfdpr_work_shape.glsl
+  material_shading.glsl
+  mvr.frag
+  mvr.vert
+  mvr_layered.vert
+  mvr_vertex.glsl
+  pbr_shading.glsl
+  pose_bindings.glsl
+  pose_buffers.glsl
+  pose_triangles.comp
+  pose_vertices.comp
+  scene_bindings.glsl
+  srgb.glsl
+  subpixel_phase.glsl
+  subpixel_phase_width.glsl
+  subpixel_view_texel.glsl
+  text_overlay.frag
+  text_overlay.vert
+  texture_transform.glsl
+  triangle_stats_bindings.glsl
+  view_downsample.comp
+  view_downsample_bindings.glsl
+)
