@@ -38,6 +38,9 @@ struct NamedProfile {
     DisplayProfile profile;
 };
 
+// The name, not the bytes, in test names and failure messages.
+void PrintTo(const NamedProfile& p, std::ostream* os) { *os << p.name; }
+
 // The built-in prototype, every shipped profile file, and the 8K panels at the
 // panel-matched view counts (N * w * h = W * H; tests/formats/display_profile_8k_test.cpp).
 std::vector<NamedProfile> shippedProfiles() {

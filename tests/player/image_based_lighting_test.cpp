@@ -241,9 +241,12 @@ TEST_F(ImageBasedLightingTest, GstdUsesTheReferencePresetOfTheSameEnvironment)
 {
     const Scene scene = sphereScene(glm::vec3(0.8f, 0.5f, 0.3f), 0.0f, 0.7f);
     const DisplayProfile profile = smallProfile(2, 32, 24);
+    // gstd at 1x and 4 samples: the test is which environment it lights with.
+    RenderRequest withEnvironment = lit(neutral()), without;
+    withEnvironment.rendererOptions = without.rendererOptions = quickGstdOptions();
     const RenderedFrame mvr = renderFrame("mvr", scene, profile, lit(neutral()));
-    const RenderedFrame gstd = renderFrame("gstd", scene, profile, lit(neutral()));
-    const RenderedFrame unlit = renderFrame("gstd", scene, profile);
+    const RenderedFrame gstd = renderFrame("gstd", scene, profile, withEnvironment);
+    const RenderedFrame unlit = renderFrame("gstd", scene, profile, without);
     const double close = metrics::ssim(gstd.views[0], mvr.views[0]), far = metrics::rmse(gstd.views[0], unlit.views[0]);
     std::printf("[ numbers  ] gstd vs mvr under the neutral studio: SSIM %.4f; gstd with vs without it: RMSE %.1f\n",
                 close, far);

@@ -33,6 +33,14 @@ player::FrameLighting toolDefaultLighting()
     return lighting;
 }
 
+player::RendererOptions quickGstdOptions()
+{
+    player::RendererOptions options;
+    options.gstd.factor = 1;
+    options.gstd.samples = 4;
+    return options;
+}
+
 RenderRequest atTurntableAngle(double angle)
 {
     return {.time = angle, .turntablePeriod = 2.0 * std::numbers::pi};
@@ -85,7 +93,7 @@ RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const 
 RenderedFrame renderFrame(const std::string& rendererName, const Scene& scene, const DisplayProfile& profile,
                           const RenderRequest& request)
 {
-    const std::unique_ptr<player::Renderer> renderer = player::createRenderer(rendererName);
+    const std::unique_ptr<player::Renderer> renderer = player::createRenderer(rendererName, request.rendererOptions);
     return renderFrame(*renderer, scene, profile, request);
 }
 

@@ -7,6 +7,7 @@
 #include "frame.h"
 #include "image_metrics.h"
 #include "renderer.h"
+#include "renderer_registry.h"
 
 #include "lfd/scene.h"
 
@@ -25,6 +26,9 @@ struct RenderRequest {
     // Exposure, tone mapping and environment (frame.h); its lights are the scene's, at
     // their nodes this frame. The default is the look without image-based lighting.
     player::FrameLighting lighting;
+    // The renderer's settings when it is named by string (gstd's factor and samples: a test
+    // of what gstd draws, not of how far it converges, renders it at 1x and 4 samples).
+    player::RendererOptions rendererOptions;
 };
 
 struct RenderedFrame {
@@ -46,6 +50,10 @@ RenderRequest atTurntableAngle(double angle);
 
 // Needs a current GL context (GlTest); a GL error during the frame fails the test.
 // `profile` already carries the view count and size.
+// gstd at 1x and 4 samples (its defaults are 4x and 32): for tests of what gstd draws (a
+// colour, a lighting preset), not of how far it converges.
+player::RendererOptions quickGstdOptions();
+
 RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile,
                           const RenderRequest& request = {});
 // Same with a renderer built by name through the registry (as lfd-play builds it).
