@@ -4,6 +4,7 @@
 // shading), streamed block levels - uploaded in partial chunks of block rows - render
 // exactly like the eager upload, and the GPU holds the compressed bytes.
 #include "gl_test_support.h"
+#include "render_test_util.h"
 #include "test_scenes.h"
 
 #include "gpu_memory_budget.h"
@@ -107,8 +108,7 @@ player::FrameOutputs render(const std::string& renderer, const Scene& scene)
     options.renderer = renderer;
     // gstd at 1x and 4 samples: the texture comparison needs its sampling path, not its
     // convergence (its defaults took 4.5 s a frame on llvmpipe here, this about 1.3 s).
-    options.rendererOptions.gstd.factor = 1;
-    options.rendererOptions.gstd.samples = 4;
+    options.rendererOptions = quickGstdOptions();
     player::PlayerSession session(options, smallProfile(), scene, "compressed");
     session.renderFrame(0.0);
     return session.readOutputs(0);
