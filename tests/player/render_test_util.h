@@ -26,8 +26,8 @@ struct RenderRequest {
     // Exposure, tone mapping and environment (frame.h); its lights are the scene's, at
     // their nodes this frame. The default is the look without image-based lighting.
     player::FrameLighting lighting;
-    // The renderer's settings when it is named by string (gstd's factor and samples: a test
-    // of what gstd draws, not of how far it converges, renders it at 1x and 4 samples).
+    // The settings renderFrame builds a renderer named by string with (quickGstdOptions: gstd
+    // at 1x and 4 samples); the overload given a built renderer does not read them.
     player::RendererOptions rendererOptions;
 };
 
@@ -48,12 +48,12 @@ player::FrameLighting toolDefaultLighting();
 // angle.
 RenderRequest atTurntableAngle(double angle);
 
-// Needs a current GL context (GlTest); a GL error during the frame fails the test.
-// `profile` already carries the view count and size.
 // gstd at 1x and 4 samples (its defaults are 4x and 32): for tests of what gstd draws (a
 // colour, a lighting preset), not of how far it converges.
 player::RendererOptions quickGstdOptions();
 
+// Needs a current GL context (GlTest); a GL error during the frame fails the test.
+// `profile` already carries the view count and size.
 RenderedFrame renderFrame(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile,
                           const RenderRequest& request = {});
 // Same with a renderer built by name through the registry (as lfd-play builds it).
