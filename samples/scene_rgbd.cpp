@@ -13,8 +13,8 @@ namespace lfd::samples {
 
 namespace {
 
-constexpr int kWidth = 512;
-constexpr int kHeight = 384;
+constexpr int kPhotoWidth = 512;
+constexpr int kPhotoHeight = 384;
 
 // Nearness (0 far .. 1 near) and colour of pixel (x, y) of the photo.
 struct RgbdPixel {
@@ -24,12 +24,12 @@ struct RgbdPixel {
 
 RgbdPixel rgbdPixel(int x, int y)
 {
-    const float u = (float(x) + 0.5f) / kWidth, v = (float(y) + 0.5f) / kHeight;
+    const float u = (float(x) + 0.5f) / kPhotoWidth, v = (float(y) + 0.5f) / kPhotoHeight;
     // Background: a wall 0.1 near, warm stripes with a fine checker.
     const bool checker = ((x / 4) + (y / 4)) % 2 == 0;
     RgbdPixel p{0.1f, {uint8_t(checker ? 200 : 170), uint8_t(120 + 60 * (int(u * 8) % 2)), 90}};
     // Sphere, centre right: smooth depth up to 0.8 at its centre.
-    const float dx = (u - 0.62f) * float(kWidth) / kHeight, dy = v - 0.5f, r = 0.3f;
+    const float dx = (u - 0.62f) * float(kPhotoWidth) / kPhotoHeight, dy = v - 0.5f, r = 0.3f;
     const float d2 = (dx * dx + dy * dy) / (r * r);
     if (d2 < 1.0f) {
         const float z = std::sqrt(1.0f - d2);
@@ -52,12 +52,12 @@ RgbdPixel rgbdPixel(int x, int y)
 
 void writeRgbd(const std::filesystem::path& path, bool colour, bool depth)
 {
-    const int width = colour && depth ? 2 * kWidth : kWidth;
-    writePngRgb8(path, width, kHeight, [&](int y0, int rows, uint8_t* pixels) {
+    const int width = colour && depth ? 2 * kPhotoWidth : kPhotoWidth;
+    writePngRgb8(path, width, kPhotoHeight, [&](int y0, int rows, uint8_t* pixels) {
         for (int y = y0; y < y0 + rows; ++y)
             for (int x = 0; x < width; ++x) {
-                const bool depthHalf = depth && (!colour || x >= kWidth);
-                const RgbdPixel p = rgbdPixel(x % kWidth, y);
+                const bool depthHalf = depth && (!colour || x >= kPhotoWidth);
+                const RgbdPixel p = rgbdPixel(x % kPhotoWidth, y);
                 uint8_t* out = pixels + (size_t(y - y0) * size_t(width) + size_t(x)) * 3;
                 for (int c = 0; c < 3; ++c)
                     out[c] = depthHalf ? uint8_t(std::lround(p.nearness * 255.0f)) : p.rgb[c];

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Configures and builds the project into ./build (Release with debug info, warnings on).
+# Configures and builds the project into ./build (Release with debug info, warnings on, and a
+# unity build: each library's sources compile in batches, CMakeLists.txt LFD_UNITY_BUILD).
 #
 #   bash scripts/build.sh [--target NAME ...] [CMAKE_CONFIGURE_ARGS ...]
 #
@@ -37,7 +38,7 @@ while (($#)); do
   esac
 done
 
-configure_cmd=(cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLFD_WERROR=ON ${configure[@]+"${configure[@]}"})
+configure_cmd=(cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DLFD_WERROR=ON -DLFD_UNITY_BUILD=ON ${configure[@]+"${configure[@]}"})
 build_cmd=(cmake --build build -j "$jobs")
 if ((${#targets[@]})); then
   build_cmd+=(--target "${targets[@]}")

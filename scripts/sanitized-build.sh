@@ -37,5 +37,5 @@ done
 
 CC=clang CXX=clang++ cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DLFD_TEST_CXX_FLAGS="-O0;-g1" -DLFD_WERROR=ON -DLFD_SANITIZE=ON -DLFD_BUILD_FUZZERS=ON -DLFD_BUILD_PLAYER=OFF >/dev/null
+  -DLFD_TEST_CXX_FLAGS="-O0;-g1" -DLFD_WERROR=ON -DLFD_UNITY_BUILD=ON -DLFD_SANITIZE=ON -DLFD_BUILD_FUZZERS=ON -DLFD_BUILD_PLAYER=OFF >/dev/null
 cmake --build build-asan -j "$jobs" ${targets[@]+--target "${targets[@]}"} >/dev/null

@@ -25,7 +25,8 @@
 namespace lfd::bake {
 namespace {
 
-constexpr uint32_t kInvalid = std::numeric_limits<uint32_t>::max();
+// An index not assigned yet (a vertex not mapped, a primitive no mesh owns).
+constexpr uint32_t kNoIndex = std::numeric_limits<uint32_t>::max();
 
 // meshoptimizer's error (the square root of the collapse's quadric error: distance to
 // the planes of the faces merged so far) underestimates how far the input's vertices end
@@ -34,8 +35,6 @@ constexpr uint32_t kInvalid = std::numeric_limits<uint32_t>::max();
 // the bound, and its error is reported divided by it: an input vertex then stays within
 // the bound, and the report does not understate.
 constexpr double kQuadricShare = 0.4;
-
-bool usableBound(double bound) { return std::isfinite(bound) && bound > 0.0; }
 
 // What meshoptimizer sees of one welded vertex: every attribute the pack stores, so that
 // only vertices equal in all of them are welded (absent streams read as zeros).
@@ -64,11 +63,11 @@ LocalVertices numberLocally(const uint32_t* in, size_t n)
 {
     LocalVertices r;
     const auto [lo, hi] = std::minmax_element(in, in + n);
-    std::vector<uint32_t> localOf(size_t(*hi - *lo) + 1, kInvalid);
+    std::vector<uint32_t> localOf(size_t(*hi - *lo) + 1, kNoIndex);
     r.local.resize(n);
     for (size_t i = 0; i < n; ++i) {
         uint32_t& l = localOf[in[i] - *lo];
-        if (l == kInvalid) {
+        if (l == kNoIndex) {
             l = uint32_t(r.sceneVertex.size());
             r.sceneVertex.push_back(in[i]);
         }
@@ -108,11 +107,11 @@ WeldedVertices weld(const VertexStreams& v, const std::vector<uint32_t>& sceneVe
     WeldedVertices w;
     w.count = meshopt_generateVertexRemap(weldOf.data(), local.data(), local.size(), keys.data(), keys.size(),
                                           sizeof(WeldKey));
-    w.representative.assign(w.count, kInvalid);
+    w.representative.assign(w.count, kNoIndex);
     w.positions.resize(w.count * 3);
     for (size_t l = 0; l < sceneVertex.size(); ++l) {
         const uint32_t i = weldOf[l];
-        if (w.representative[i] == kInvalid) {
+        if (w.representative[i] == kNoIndex) {
             w.representative[i] = sceneVertex[l];
             std::copy(keys[l].position, keys[l].position + 3, w.positions.begin() + ptrdiff_t(i) * 3);
         }
@@ -221,7 +220,7 @@ void dropUnusedVertices(Scene& scene, const std::vector<uint8_t>& candidates)
     std::vector<uint8_t> used(n, 0);
     for (uint32_t i : scene.indices)
         used[i] = 1;
-    std::vector<uint32_t> newIndex(n, kInvalid);
+    std::vector<uint32_t> newIndex(n, kNoIndex);
     uint32_t next = 0;
     for (size_t i = 0; i < n; ++i)
         if (used[i] || !candidates[i])
@@ -234,7 +233,7 @@ void dropUnusedVertices(Scene& scene, const std::vector<uint8_t>& candidates)
         if (stream.empty() || slots == 0)
             return;
         for (size_t i = 0; i < n; ++i)
-            if (newIndex[i] != kInvalid && newIndex[i] != i)
+            if (newIndex[i] != kNoIndex && newIndex[i] != i)
                 for (size_t s = 0; s < slots; ++s)
                     stream[size_t(newIndex[i]) * slots + s] = stream[i * slots + s];
         stream.resize(size_t(next) * slots);
@@ -259,13 +258,13 @@ SimplificationStats simplifyMeshes(Scene& scene, const std::vector<double>& maxE
             deformed[size_t(scene.nodes[d.node].mesh)] = 1;
 
     // Work items: the primitives of every mesh with a bound; the mesh owning each.
-    std::vector<uint32_t> items, ownerOf(scene.primitives.size(), kInvalid);
+    std::vector<uint32_t> items, ownerOf(scene.primitives.size(), kNoIndex);
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         if (!usableBound(maxErrorObject[m]) || deformed[m])
             continue;
         const Mesh& mesh = scene.meshes[m];
         for (uint32_t p = mesh.firstPrimitive; p < mesh.firstPrimitive + mesh.primitiveCount; ++p)
-            if (ownerOf[p] == kInvalid) {
+            if (ownerOf[p] == kNoIndex) {
                 ownerOf[p] = uint32_t(m);
                 items.push_back(p);
             }

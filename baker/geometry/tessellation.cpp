@@ -725,8 +725,6 @@ void appendStreams(VertexStreams& v, const VertexStreams& added)
     d.tangents.insert(d.tangents.end(), added.deform.tangents.begin(), added.deform.tangents.end());
 }
 
-bool usableBound(double bound) { return std::isfinite(bound) && bound > 0.0; }
-
 // Primitives sorted by firstIndex; throws if two non-empty ranges overlap (the index
 // buffer is rebuilt range by range).
 std::vector<uint32_t> primitivesInIndexOrder(const Scene& scene)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "lfd/display_profile.h"
+#include "number_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,9 +14,6 @@ namespace lfd::detail {
 // Throws DisplayProfileError("<source>: <field>: <problem>"), folded onto one line.
 [[noreturn]] void throwProfileError(const std::string& source, const std::string& field,
                                     const std::string& problem);
-
-// Short decimal form of a number for error messages ("0.72", "-3", "inf").
-std::string formatNumber(double value);
 
 // Checks that `value` is a JSON integer in [0, 2^32) and returns it.
 uint32_t toUint32(const nlohmann::json& value, const std::string& source,

@@ -3,12 +3,13 @@
 // formats/display_profiles.md.
 #include "lfd/framing.h"
 
+#include "number_text.h"
+
 #include <glm/ext/matrix_clip_space.hpp>
 #include <glm/ext/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -20,13 +21,6 @@ namespace {
 // Near plane floor, and the margin of the near/far planes around the scene sphere.
 constexpr double kMinNearMm = 1.0;
 constexpr double kDepthMargin = 1.05;
-constexpr double kPi = std::numbers::pi;
-
-std::string formatNumber(double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof(buffer), "%.10g", value);
-    return buffer;
-}
 
 // Radius of the fitted sphere in display mm.
 double sceneRadiusMm(const Framing& framing) { return framing.sceneRadius * framing.mmPerUnit; }
@@ -44,10 +38,10 @@ double maxObliqueRate(double D, double rho, double offset) {
     constexpr int kIntervals = 4096;
     double best = 0.0;
     for (int j = 0; j < kIntervals; ++j) {
-        const double theta0 = kPi * j / kIntervals;
-        const double theta1 = kPi * (j + 1) / kIntervals;
+        const double theta0 = std::numbers::pi * j / kIntervals;
+        const double theta1 = std::numbers::pi * (j + 1) / kIntervals;
         const double cosMax = std::cos(theta0); // cos decreases on [0, pi]
-        const double sinMax = (theta0 <= 0.5 * kPi && theta1 >= 0.5 * kPi)
+        const double sinMax = (theta0 <= 0.5 * std::numbers::pi && theta1 >= 0.5 * std::numbers::pi)
                                   ? 1.0
                                   : std::max(std::sin(theta0), std::sin(theta1));
         // note: nothing nearer than the near plane (>= 1 mm) is drawn.
@@ -68,7 +62,7 @@ double maxObliqueRate(double D, double rho, double offset) {
 double fittedRadiusMm(const DisplayProfile& profile) {
     const double D = profile.viewingDistanceMm;
     const double halfWidth = 0.5 * profile.screenWidthMm, halfHeight = 0.5 * profile.screenHeightMm;
-    const double coneEdge = D * std::tan(0.5 * profile.viewConeDeg * kPi / 180.0);
+    const double coneEdge = D * std::tan(0.5 * profile.viewConeDeg * std::numbers::pi / 180.0);
     const double insideFrustum = D * halfWidth / std::hypot(D, halfWidth + coneEdge);
     // note: a profile without a viewing distance (D = 0) keeps the plain half width.
     return std::min(halfHeight, D > 0.0 ? insideFrustum : halfWidth);
@@ -79,7 +73,7 @@ double fittedRadiusMm(const DisplayProfile& profile) {
 Framing fitSceneToDisplay(const DisplayProfile& profile, const SceneBounds& bounds, double fill) {
     if (!std::isfinite(fill) || fill <= 0.0)
         throw std::invalid_argument("fitSceneToDisplay: fill must be > 0, got " +
-                                    formatNumber(fill));
+                                    detail::formatNumber(fill));
     Framing framing;
     framing.fill = fill;
     framing.sceneCenter = glm::dvec3(bounds.center);

@@ -5,6 +5,7 @@
 #include "lfd/pack.h"
 #include "lfd/pack_layout.h"
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -43,6 +44,19 @@ enum class TexelPolicy {
 // references, enum values, finite floats, key times...). Shared by the writer (refuses
 // to write what the reader would reject) and the reader (after decoding).
 void validateScene(const Scene& scene, const std::string& name, TexelPolicy texels);
+// Whether every component of a stored float (scalar, vector or quaternion) is finite: the
+// validators' one test for NaN and infinity.
+inline bool finite(float v) { return std::isfinite(v); }
+template <glm::length_t N, typename T, glm::qualifier Q>
+bool finite(const glm::vec<N, T, Q>& v)
+{
+    for (glm::length_t i = 0; i < N; ++i)
+        if (!std::isfinite(float(v[i])))
+            return false;
+    return true;
+}
+inline bool finite(const glm::quat& q) { return finite(q.x) && finite(q.y) && finite(q.z) && finite(q.w); }
+
 // The rules of skins, morph deltas, deformers and weight channels (part of validateScene).
 void validateDeformation(const Scene& scene, const std::string& name);
 // The rules of lights (part of validateScene).

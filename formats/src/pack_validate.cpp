@@ -11,17 +11,6 @@ namespace lfd::pack {
 
 namespace {
 
-bool finite(float v) { return std::isfinite(v); }
-template <int N, typename T, glm::qualifier Q>
-bool finite(const glm::vec<N, T, Q>& v)
-{
-    for (int i = 0; i < N; ++i)
-        if (!std::isfinite(v[i]))
-            return false;
-    return true;
-}
-bool finite(const glm::quat& q) { return finite(q.x) && finite(q.y) && finite(q.z) && finite(q.w); }
-
 // A reference is either kNone or a valid index into a table of `count` entries.
 bool validReference(int32_t ref, size_t count) { return ref == kNone || (ref >= 0 && size_t(ref) < count); }
 

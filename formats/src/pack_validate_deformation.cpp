@@ -8,15 +8,6 @@
 namespace lfd::pack {
 namespace {
 
-template <glm::length_t N, typename T, glm::qualifier Q>
-bool finite(const glm::vec<N, T, Q>& v)
-{
-    for (glm::length_t i = 0; i < N; ++i)
-        if (!std::isfinite(float(v[i])))
-            return false;
-    return true;
-}
-
 class DeformationChecker {
 public:
     DeformationChecker(const Scene& scene, const std::string& name) : scene_(scene), name_(name) {}

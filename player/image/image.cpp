@@ -8,38 +8,37 @@
 
 namespace lfd::metrics {
 
-namespace {
-
 namespace fs = std::filesystem;
 
-[[noreturn]] void fail(const fs::path& path, const std::string& problem) {
-    throw ImageError("'" + path.string() + "': " + problem);
+void throwImageError(const fs::path& path, const std::string& problem)
+{
+    std::string line = "'" + path.string() + "': " + problem;
+    std::replace_if(line.begin(), line.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+    throw ImageError(line);
 }
-
-} // namespace
 
 void writeImage(const fs::path& path, const uint8_t* pixels, uint32_t width, uint32_t height,
                 uint32_t channels) {
     if (width == 0 || height == 0)
-        fail(path, "cannot write an empty image (" + std::to_string(width) + "x" +
+        throwImageError(path, "cannot write an empty image (" + std::to_string(width) + "x" +
                        std::to_string(height) + ")");
     if (channels < 1 || channels > 4)
-        fail(path, "cannot write " + std::to_string(channels) + " channels (1..4 supported)");
+        throwImageError(path, "cannot write " + std::to_string(channels) + " channels (1..4 supported)");
     if (pixels == nullptr)
-        fail(path, "no pixel data");
+        throwImageError(path, "no pixel data");
     encodeImageFile(path, pixels, int(width), int(height), int(channels));
 }
 
 void writeImage(const fs::path& path, const Image& image) {
     if (image.pixels.size() != size_t(image.width) * image.height * image.channels)
-        fail(path, "pixel buffer does not match " + std::to_string(image.width) + "x" +
+        throwImageError(path, "pixel buffer does not match " + std::to_string(image.width) + "x" +
                        std::to_string(image.height) + "x" + std::to_string(image.channels));
     writeImage(path, image.pixels.data(), image.width, image.height, image.channels);
 }
 
 Image readImage(const fs::path& path, uint32_t channels) {
     if (channels > 4 || channels == 1 || channels == 2)
-        fail(path, "can only convert to 3 or 4 channels (0 keeps the file's)");
+        throwImageError(path, "can only convert to 3 or 4 channels (0 keeps the file's)");
     DecodedImage decoded = decodeImageFile(path); // 8 bits per channel, straight alpha
     const uint32_t fileChannels = uint32_t(std::min(decoded.channels, 4));
     Image file;

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace lfd::metrics {
@@ -17,6 +18,10 @@ class ImageError : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
 };
+
+// Throws ImageError("'<path>': <problem>"), folded onto one line: the one form of every
+// error the image library reports.
+[[noreturn]] void throwImageError(const std::filesystem::path& path, const std::string& problem);
 
 struct Image {
     uint32_t width = 0;

@@ -66,13 +66,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-[[noreturn]] void fail(const fs::path& path, const std::string& problem)
-{
-    std::string line = "'" + path.string() + "': " + problem;
-    std::replace_if(line.begin(), line.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-    throw ImageError(line);
-}
-
 std::string lowerExtension(const fs::path& path)
 {
     std::string ext = path.extension().string();
@@ -106,7 +99,7 @@ std::vector<uint8_t> readAllBytes(FILE* file, const fs::path& path)
     while ((got = std::fread(chunk, 1, sizeof chunk, file)) > 0)
         bytes.insert(bytes.end(), chunk, chunk + got);
     if (std::ferror(file))
-        fail(path, "read error");
+        throwImageError(path, "read error");
     return bytes;
 }
 
@@ -166,25 +159,25 @@ bool hdrDataComplete(std::span<const uint8_t> bytes, size_t pos, int width, int 
 DecodedImage decodeHdrBytes(const fs::path& path, std::span<const uint8_t> bytes, bool asFloat, int components)
 {
     if (bytes.size() > size_t(std::numeric_limits<int>::max()))
-        fail(path, "larger than 2 GiB");
+        throwImageError(path, "larger than 2 GiB");
     const int size = int(bytes.size());
     int w = 0, h = 0, n = 0;
     if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &n))
-        fail(path, std::string("cannot read the .hdr header: ") + stbi_failure_reason());
+        throwImageError(path, std::string("cannot read the .hdr header: ") + stbi_failure_reason());
     if (!hdrDataComplete(bytes, hdrDataStart(bytes), w, h))
-        fail(path, "truncated .hdr file: the pixel data ends early");
+        throwImageError(path, "truncated .hdr file: the pixel data ends early");
     DecodedImage image;
     const size_t values = size_t(w) * size_t(h) * size_t(components ? components : n);
     if (asFloat) {
         const std::unique_ptr<float, StbFree<float>> p(stbi_loadf_from_memory(bytes.data(), size, &w, &h, &n, components));
         if (!p)
-            fail(path, std::string("cannot read pixels: ") + stbi_failure_reason());
+            throwImageError(path, std::string("cannot read pixels: ") + stbi_failure_reason());
         image.f32.assign(p.get(), p.get() + values);
         image.bitsPerChannel = 32;
     } else {
         const std::unique_ptr<stbi_uc, StbFree<stbi_uc>> p(stbi_load_from_memory(bytes.data(), size, &w, &h, &n, components));
         if (!p)
-            fail(path, std::string("cannot read pixels: ") + stbi_failure_reason());
+            throwImageError(path, std::string("cannot read pixels: ") + stbi_failure_reason());
         image.u8.assign(p.get(), p.get() + values);
     }
     image.width = w;
@@ -209,34 +202,34 @@ DecodedImage decodeImageFile(const fs::path& path, bool keepDepth)
 {
     std::error_code ec;
     if (!fs::exists(path, ec))
-        fail(path, "no such file");
+        throwImageError(path, "no such file");
     if (fs::is_directory(path, ec))
-        fail(path, "is a directory, not an image");
+        throwImageError(path, "is a directory, not an image");
     const std::unique_ptr<FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file)
-        fail(path, "cannot open for reading");
+        throwImageError(path, "cannot open for reading");
 
     DecodedImage image;
     int w = 0, h = 0, n = 0;
     if (!stbi_info_from_file(file.get(), &w, &h, &n))
-        fail(path, std::string("cannot read image: ") + stbi_failure_reason());
+        throwImageError(path, std::string("cannot read image: ") + stbi_failure_reason());
     if (stbi_is_hdr_from_file(file.get())) // through the truncation guard, at either depth
         return decodeHdrBytes(path, readAllBytes(file.get(), path), keepDepth, 0);
     const bool sixteen = keepDepth && stbi_is_16_bit_from_file(file.get());
     if (sixteen) {
         const std::unique_ptr<stbi_us, StbFree<stbi_us>> p(stbi_load_from_file_16(file.get(), &w, &h, &n, 0));
         if (!p)
-            fail(path, std::string("cannot read pixels: ") + stbi_failure_reason());
+            throwImageError(path, std::string("cannot read pixels: ") + stbi_failure_reason());
         image.u16.assign(p.get(), p.get() + size_t(w) * size_t(h) * size_t(n));
         image.bitsPerChannel = 16;
     } else {
         const std::unique_ptr<stbi_uc, StbFree<stbi_uc>> p(stbi_load_from_file(file.get(), &w, &h, &n, 0));
         if (!p)
-            fail(path, std::string("cannot read pixels: ") + stbi_failure_reason());
+            throwImageError(path, std::string("cannot read pixels: ") + stbi_failure_reason());
         image.u8.assign(p.get(), p.get() + size_t(w) * size_t(h) * size_t(n));
     }
     if (w <= 0 || h <= 0 || n <= 0)
-        fail(path, "image has no pixels");
+        throwImageError(path, "image has no pixels");
     image.width = w;
     image.height = h;
     image.channels = n;
@@ -247,19 +240,19 @@ HdrImage readHdrImage(const fs::path& path, uint64_t maxPixels)
 {
     std::error_code ec;
     if (!fs::exists(path, ec))
-        fail(path, "no such file");
+        throwImageError(path, "no such file");
     if (fs::is_directory(path, ec))
-        fail(path, "is a directory, not a .hdr file");
+        throwImageError(path, "is a directory, not a .hdr file");
     const std::unique_ptr<FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file)
-        fail(path, "cannot open for reading");
+        throwImageError(path, "cannot open for reading");
     if (!stbi_is_hdr_from_file(file.get()))
-        fail(path, "not a Radiance .hdr file (no #?RADIANCE or #?RGBE signature)");
+        throwImageError(path, "not a Radiance .hdr file (no #?RADIANCE or #?RGBE signature)");
     int w = 0, h = 0, n = 0;
     if (!stbi_info_from_file(file.get(), &w, &h, &n))
-        fail(path, std::string("cannot read the .hdr header: ") + stbi_failure_reason());
+        throwImageError(path, std::string("cannot read the .hdr header: ") + stbi_failure_reason());
     if (uint64_t(w) * uint64_t(h) > maxPixels)
-        fail(path, std::to_string(w) + "x" + std::to_string(h) + " pixels, more than the " +
+        throwImageError(path, std::to_string(w) + "x" + std::to_string(h) + " pixels, more than the " +
                        std::to_string(maxPixels) + " allowed");
     DecodedImage decoded = decodeHdrBytes(path, readAllBytes(file.get(), path), true, 3);
     return HdrImage{decoded.width, decoded.height, std::move(decoded.f32)};
@@ -268,22 +261,22 @@ HdrImage readHdrImage(const fs::path& path, uint64_t maxPixels)
 void writeHdrImage(const fs::path& path, const HdrImage& image)
 {
     if (image.width <= 0 || image.height <= 0 || image.rgb.size() != size_t(image.width) * size_t(image.height) * 3)
-        fail(path, "cannot write a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+        throwImageError(path, "cannot write a " + std::to_string(image.width) + "x" + std::to_string(image.height) +
                        " HDR image from " + std::to_string(image.rgb.size()) + " values");
     std::vector<uint8_t> bytes;
     if (!stbi_write_hdr_to_func(appendBytes, &bytes, image.width, image.height, 3, image.rgb.data()))
-        fail(path, "encoding failed");
+        throwImageError(path, "encoding failed");
     writeEncoded(path, bytes);
 }
 
 void encodeImageFile(const fs::path& path, const uint8_t* pixels, int width, int height, int channels)
 {
     if (width <= 0 || height <= 0)
-        fail(path, "cannot write an empty image (" + std::to_string(width) + "x" + std::to_string(height) + ")");
+        throwImageError(path, "cannot write an empty image (" + std::to_string(width) + "x" + std::to_string(height) + ")");
     if (channels < 1 || channels > 4)
-        fail(path, "cannot write " + std::to_string(channels) + " channels (1 to 4)");
+        throwImageError(path, "cannot write " + std::to_string(channels) + " channels (1 to 4)");
     if (!pixels)
-        fail(path, "no pixel data");
+        throwImageError(path, "no pixel data");
     std::vector<uint8_t> bytes;
     const std::string ext = lowerExtension(path);
     int ok = 0;
@@ -296,9 +289,9 @@ void encodeImageFile(const fs::path& path, const uint8_t* pixels, int width, int
     else if (ext == ".tga")
         ok = stbi_write_tga_to_func(appendBytes, &bytes, width, height, channels, pixels);
     else
-        fail(path, "cannot write this image format '" + ext + "' (write .png, .jpg, .bmp or .tga)");
+        throwImageError(path, "cannot write this image format '" + ext + "' (write .png, .jpg, .bmp or .tga)");
     if (!ok)
-        fail(path, "encoding failed");
+        throwImageError(path, "encoding failed");
     writeEncoded(path, bytes);
 }
 

@@ -1,5 +1,6 @@
 // The glTF BRDF as shaders/pbr_shading.glsl evaluates it; see brdf.h.
 #include "brdf.h"
+#include "pi.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,6 @@
 namespace lfd::lighting {
 
 namespace {
-constexpr float kPi = std::numbers::pi_v<float>;
 }
 
 float alphaFromRoughness(float roughness)

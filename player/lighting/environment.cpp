@@ -1,5 +1,6 @@
 // Equirectangular mapping, bilinear lookup, box halving and rotation; see environment.h.
 #include "environment.h"
+#include "pi.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@ namespace lfd::lighting {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 
 // A row or column range [begin, end) of the source that one halved texel averages.
 struct BoxRange {

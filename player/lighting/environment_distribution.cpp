@@ -9,7 +9,6 @@ namespace lfd::lighting {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // The index i with cdf[i] <= target < cdf[i + 1] (cdf ascending, cdf.front() = 0,
 // target < cdf.back()), skipping empty intervals, and target's fraction inside it.
@@ -55,7 +54,7 @@ EnvironmentDistribution::EnvironmentDistribution(const Environment& environment)
     const std::vector<double> luminance = luminances(environment);
     const bool black = std::none_of(luminance.begin(), luminance.end(), [](double l) { return l > 0.0; });
     for (uint32_t y = 0; y < height_; ++y) {
-        const double sinTheta = std::sin(kPi * (y + 0.5) / height_);
+        const double sinTheta = std::sin(std::numbers::pi * (y + 0.5) / height_);
         double* row = columnCdf_.data() + size_t(y) * (width_ + 1);
         for (uint32_t x = 0; x < width_; ++x) {
             const double weight = black ? 1.0 : neighbourhoodMax(luminance, width_, height_, x, y);
@@ -84,10 +83,10 @@ float EnvironmentDistribution::pdf(glm::vec2 uv) const
     const double* row = columnCdf_.data() + size_t(y) * (width_ + 1);
     const double texelProbability = (row[x + 1] - row[x]) / rowCdf_.back();
     // Uniform inside the texel in (u, v); d omega = 2 pi^2 sin(theta) du dv.
-    const double sinTheta = std::sin(kPi * double(uv.y));
+    const double sinTheta = std::sin(std::numbers::pi * double(uv.y));
     if (sinTheta <= 1e-9)
         return 0.0f;
-    return float(texelProbability * width_ * height_ / (2.0 * kPi * kPi * sinTheta));
+    return float(texelProbability * width_ * height_ / (2.0 * std::numbers::pi * std::numbers::pi * sinTheta));
 }
 
 } // namespace lfd::lighting

@@ -10,7 +10,6 @@ namespace lfd::lighting {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 // The nine polynomials of the real SH basis, bands 0..2 (Ramamoorthi & Hanrahan 2001,
 // eq. 3, without their constants).
@@ -23,8 +22,9 @@ std::array<double, 9> shPolynomials(glm::dvec3 d)
 // times the clamped cosine's band factor A_l / pi (1, 2/3, 1/4; R&H 2001, eq. 8).
 std::array<double, 9> shWeights()
 {
-    const double y0 = 0.5 * std::sqrt(1.0 / kPi), y1 = std::sqrt(3.0 / (4.0 * kPi));
-    const double y2 = 0.5 * std::sqrt(15.0 / kPi), y20 = 0.25 * std::sqrt(5.0 / kPi), y22 = 0.25 * std::sqrt(15.0 / kPi);
+    using std::numbers::pi;
+    const double y0 = 0.5 * std::sqrt(1.0 / pi), y1 = std::sqrt(3.0 / (4.0 * pi));
+    const double y2 = 0.5 * std::sqrt(15.0 / pi), y20 = 0.25 * std::sqrt(5.0 / pi), y22 = 0.25 * std::sqrt(15.0 / pi);
     const double a1 = 2.0 / 3.0, a2 = 0.25;
     return {y0 * y0,      a1 * y1 * y1,   a1 * y1 * y1, a1 * y1 * y1,  a2 * y2 * y2,
             a2 * y2 * y2, a2 * y20 * y20, a2 * y2 * y2, a2 * y22 * y22};

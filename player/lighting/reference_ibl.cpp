@@ -1,5 +1,6 @@
 // Monte Carlo reference with three-strategy MIS; see reference_ibl.h.
 #include "reference_ibl.h"
+#include "pi.h"
 
 #include "sampling.h"
 
@@ -11,7 +12,6 @@ namespace lfd::lighting {
 
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 
 // SplitMix64 (Steele, Lea & Flood 2014): the seed's stream of offsets.
 uint64_t splitMix64(uint64_t& state)

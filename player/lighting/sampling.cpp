@@ -1,5 +1,6 @@
 // Sample points and directions; see sampling.h.
 #include "sampling.h"
+#include "pi.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +9,6 @@
 namespace lfd::lighting {
 
 namespace {
-constexpr float kPi = std::numbers::pi_v<float>;
 }
 
 glm::vec2 hammersley(uint32_t i, uint32_t n)

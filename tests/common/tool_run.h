@@ -37,6 +37,15 @@ inline RunResult run(const std::string& command)
 
 inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
+// Lines in a tool's output, a last line without its newline included.
+inline size_t lineCount(const std::string& s)
+{
+    size_t lines = 0;
+    for (char c : s)
+        lines += c == '\n';
+    return lines + (!s.empty() && s.back() != '\n');
+}
+
 #ifdef LFD_BINARY_DIR
 // The tools in this build tree (LFD_BINARY_DIR: its top folder, set by tests/CMakeLists.txt).
 inline const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";

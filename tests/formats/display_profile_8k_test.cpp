@@ -3,6 +3,7 @@
 // panel-matched render sizes of docs/player/quilts.md "8K panels" have N * w * h = W * H.
 #include "lfd/display_profile.h"
 #include "lfd/looking_glass_devices.h"
+#include "sample_profiles.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,6 @@ namespace fs = std::filesystem;
 using namespace lfd;
 
 namespace {
-const fs::path kProfiles = fs::path(LFD_SOURCE_DIR) / "samples" / "profiles";
 
 struct EightK {
     const char* file;
@@ -32,7 +32,7 @@ TEST(EightKProfiles, LoadWithTheVendorQuiltAndAPanelMatchedSize)
 {
     for (const EightK& e : kEightK) {
         SCOPED_TRACE(e.file);
-        const DisplayProfile p = loadDisplayProfile(kProfiles / e.file);
+        const DisplayProfile p = loadDisplayProfile(lfd::test::kSampleProfiles / e.file);
         EXPECT_EQ(p.panelWidth, 7680u);
         EXPECT_EQ(p.panelHeight, 4320u);
         const std::optional<StandardQuilt> quilt = standardQuiltFor(p.panelWidth, p.panelHeight, p.screenWidthMm);

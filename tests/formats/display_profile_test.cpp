@@ -3,6 +3,7 @@
 // validation and file errors.
 #include "lfd/display_profile.h"
 #include "lfd/looking_glass_devices.h"
+#include "sample_profiles.h"
 
 #include <gtest/gtest.h>
 
@@ -20,7 +21,6 @@ namespace {
 using namespace lfd;
 namespace fs = std::filesystem;
 
-const fs::path kProfiles = fs::path(LFD_SOURCE_DIR) / "samples" / "profiles";
 
 // Runs `f`, expects a DisplayProfileError, returns its message.
 std::string errorOf(const std::function<void()>& f) {
@@ -148,7 +148,7 @@ TEST(DisplayProfile, PrototypeSubpixelToViewHandWorked) {
 }
 
 TEST(DisplayProfile, PrototypeJsonMatchesBuiltIn) {
-    const DisplayProfile a = loadDisplayProfile(kProfiles / "prototype.json");
+    const DisplayProfile a = loadDisplayProfile(lfd::test::kSampleProfiles / "prototype.json");
     const DisplayProfile b = prototypeDisplayProfile();
     EXPECT_EQ(a.name, "prototype");
     EXPECT_EQ(a.panelWidth, b.panelWidth);
@@ -203,7 +203,7 @@ TEST(DisplayProfile, OptionalKeysHaveDocumentedDefaults) {
 }
 
 TEST(DisplayProfile, GenericExampleLoads) {
-    const DisplayProfile p = loadDisplayProfile(kProfiles / "generic_example.json");
+    const DisplayProfile p = loadDisplayProfile(lfd::test::kSampleProfiles / "generic_example.json");
     EXPECT_EQ(p.name, "generic-portrait-7.9in");
     EXPECT_EQ(p.panelWidth, 1536u);
     EXPECT_EQ(p.panelHeight, 2048u);
@@ -245,7 +245,7 @@ double lookingGlassShaderPhase(double pitch, double slope, double center, double
 }
 
 TEST(DisplayProfile, LookingGlassPortraitImport) {
-    const DisplayProfile p = loadDisplayProfile(kProfiles / "looking_glass_portrait_visual.json");
+    const DisplayProfile p = loadDisplayProfile(lfd::test::kSampleProfiles / "looking_glass_portrait_visual.json");
     EXPECT_EQ(p.name, "looking_glass_portrait_visual");
     EXPECT_EQ(p.panelWidth, 1536u);
     EXPECT_EQ(p.panelHeight, 2048u);

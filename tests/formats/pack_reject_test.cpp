@@ -15,8 +15,6 @@ namespace {
 
 using namespace lfd::pack;
 
-const std::string kName = "small.lfdpack";
-
 // Small but complete: every section present, so the byte loops touch all of them.
 Scene smallScene()
 {
@@ -30,29 +28,6 @@ Scene smallScene()
 // its own below).
 std::vector<uint8_t> smallPack() { return writePackToMemory(smallScene(), {}, PackWriteOptions{false}); }
 
-// Returns the error message, or "" (with a test failure) when the pack was accepted.
-std::string rejection(const std::vector<uint8_t>& bytes, const std::string& name = kName)
-{
-    try {
-        readPackFromMemory(bytes.data(), bytes.size(), name);
-    } catch (const PackError& e) {
-        const std::string what = e.what();
-        std::string shownName = name; // line breaks in names are flattened to spaces
-        std::replace(shownName.begin(), shownName.end(), '\n', ' ');
-        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-        EXPECT_EQ(what.rfind(shownName + ": ", 0), 0u) << what;
-        return what;
-    }
-    ADD_FAILURE() << "pack of " << bytes.size() << " bytes was accepted";
-    return "";
-}
-
-void expectRejected(const std::vector<uint8_t>& bytes, const std::string& needle)
-{
-    const std::string what = rejection(bytes);
-    EXPECT_NE(what.find(needle), std::string::npos) << "message: " << what << "\nexpected: " << needle;
-}
-
 // Patch, reseal the checksums, expect rejection: the semantic checks must catch it.
 template <typename Patch>
 void expectPatchRejected(Patch patch, const std::string& needle)
@@ -60,14 +35,14 @@ void expectPatchRejected(Patch patch, const std::string& needle)
     std::vector<uint8_t> bytes = smallPack();
     patch(bytes);
     resealPack(bytes);
-    expectRejected(bytes, needle);
+    expectPackRejected(bytes, needle);
 }
 
 TEST(PackReject, SmallPackIsValid)
 {
     const std::vector<uint8_t> bytes = smallPack();
     EXPECT_LT(bytes.size(), 8192u);
-    expectSameScene(smallScene(), readPackFromMemory(bytes.data(), bytes.size(), kName));
+    expectSameScene(smallScene(), readPackFromMemory(bytes.data(), bytes.size(), kTestPackName));
     // resealPack on an intact pack changes nothing.
     std::vector<uint8_t> resealed = bytes;
     resealPack(resealed);
@@ -78,8 +53,8 @@ TEST(PackReject, WrongMagic)
 {
     std::vector<uint8_t> bytes = smallPack();
     bytes[0] = 'X';
-    expectRejected(bytes, "not an .lfdpack file (bad magic)");
-    expectRejected(std::vector<uint8_t>{'g', 'l', 'T', 'F'}, "bad magic");
+    expectPackRejected(bytes, "not an .lfdpack file (bad magic)");
+    expectPackRejected(std::vector<uint8_t>{'g', 'l', 'T', 'F'}, "bad magic");
 }
 
 TEST(PackReject, WrongFormatVersion)
@@ -89,10 +64,10 @@ TEST(PackReject, WrongFormatVersion)
     h.formatVersion = 3;
     setHeader(bytes, h);
     resealPack(bytes);
-    expectRejected(bytes, "unsupported format version 3 (this reader supports 1 to 2)");
+    expectPackRejected(bytes, "unsupported format version 3 (this reader supports 1 to 2)");
     h.formatVersion = 0;
     setHeader(bytes, h);
-    expectRejected(bytes, "unsupported format version 0");
+    expectPackRejected(bytes, "unsupported format version 0");
 }
 
 TEST(PackReject, EveryTruncation)
@@ -101,9 +76,9 @@ TEST(PackReject, EveryTruncation)
     for (size_t n = 0; n < bytes.size(); ++n) {
         const std::vector<uint8_t> prefix(bytes.begin(), bytes.begin() + ptrdiff_t(n));
         SCOPED_TRACE("truncated to " + std::to_string(n) + " bytes");
-        expectRejected(prefix, "truncated");
+        expectPackRejected(prefix, "truncated");
     }
-    EXPECT_THROW(readPackFromMemory(nullptr, 0, kName), PackError);
+    EXPECT_THROW(readPackFromMemory(nullptr, 0, kTestPackName), PackError);
 }
 
 TEST(PackReject, TruncatedSectionNamesTheSection)
@@ -117,7 +92,7 @@ TEST(PackReject, TruncatedSectionNamesTheSection)
     h.fileSize = bytes.size();
     setHeader(bytes, h);
     resealPack(bytes);
-    expectRejected(bytes, "truncated: section 'TEXL' ends at byte " + std::to_string(texels.offset + texels.size) +
+    expectPackRejected(bytes, "truncated: section 'TEXL' ends at byte " + std::to_string(texels.offset + texels.size) +
                               " but file has " + std::to_string(bytes.size()) + " bytes");
 }
 
@@ -129,7 +104,7 @@ TEST(PackReject, EverySingleBitFlip)
             std::vector<uint8_t> corrupt = bytes;
             corrupt[i] ^= uint8_t(1u << bit);
             SCOPED_TRACE("byte " + std::to_string(i) + " bit " + std::to_string(bit));
-            rejection(corrupt);
+            packRejection(corrupt);
         }
     }
 }
@@ -138,20 +113,20 @@ TEST(PackReject, CorruptPayloadNamesTheSection)
 {
     std::vector<uint8_t> bytes = smallPack();
     bytes[size_t(entryFor(bytes, kTagIndices).offset) + 1] ^= 0x10;
-    expectRejected(bytes, "section 'INDX' checksum mismatch");
+    expectPackRejected(bytes, "section 'INDX' checksum mismatch");
     bytes = smallPack();
     bytes[70] ^= 1; // inside the table
-    expectRejected(bytes, "section table checksum mismatch");
+    expectPackRejected(bytes, "section table checksum mismatch");
     bytes = smallPack();
     bytes[33] ^= 1; // header fileSize
-    expectRejected(bytes, "header checksum mismatch");
+    expectPackRejected(bytes, "header checksum mismatch");
 }
 
 TEST(PackReject, TrailingGarbage)
 {
     std::vector<uint8_t> bytes = smallPack();
     bytes.push_back(0);
-    expectRejected(bytes, "trailing bytes");
+    expectPackRejected(bytes, "trailing bytes");
 
     // Even when the header claims the larger size, bytes past the last section are trailing.
     bytes = smallPack();
@@ -160,7 +135,7 @@ TEST(PackReject, TrailingGarbage)
     h.fileSize = bytes.size();
     setHeader(bytes, h);
     resealPack(bytes);
-    expectRejected(bytes, "trailing bytes: the last section ends at byte");
+    expectPackRejected(bytes, "trailing bytes: the last section ends at byte");
 }
 
 TEST(PackReject, OverlappingSections)
@@ -187,7 +162,7 @@ TEST(PackReject, EmptySectionsMayShareAnOffset)
         e.offset = entryFor(bytes, host).offset;
         setEntry(bytes, i, e);
         resealPack(bytes);
-        EXPECT_NO_THROW(readPackFromMemory(bytes.data(), bytes.size(), kName)) << tagName(host);
+        EXPECT_NO_THROW(readPackFromMemory(bytes.data(), bytes.size(), kTestPackName)) << tagName(host);
     }
 }
 
@@ -323,7 +298,7 @@ std::string rejectedUnderMemoryCap(const std::vector<uint8_t>& bytes, const std:
             ::setrlimit(RLIMIT_AS, &limit);
         }
         try {
-            readPackFromMemory(bytes.data(), bytes.size(), kName);
+            readPackFromMemory(bytes.data(), bytes.size(), kTestPackName);
             verdict = "accepted";
         } catch (const PackError& e) {
             verdict = std::string(e.what()).find(needle) != std::string::npos ? "ok" : std::string(e.what());
@@ -650,18 +625,18 @@ TEST(PackReject, UnknownSectionsAreSkipped)
     resealPack(bytes);
     Scene expected = smallScene();
     expected.vertices.tangents.clear();
-    expectSameScene(expected, readPackFromMemory(bytes.data(), bytes.size(), kName));
+    expectSameScene(expected, readPackFromMemory(bytes.data(), bytes.size(), kTestPackName));
 
     // ...but its payload is still covered by its checksum.
     bytes[size_t(e.offset)] ^= 1;
-    expectRejected(bytes, "section 'XTRA' checksum mismatch");
+    expectPackRejected(bytes, "section 'XTRA' checksum mismatch");
 }
 
 TEST(PackReject, ErrorMessagesStayOnOneLine)
 {
     std::vector<uint8_t> bytes = smallPack();
     bytes[0] = 'X';
-    const std::string what = rejection(bytes, "evil\nname.lfdpack");
+    const std::string what = packRejection(bytes, "evil\nname.lfdpack");
     EXPECT_EQ(what.find('\n'), std::string::npos);
     EXPECT_NE(what.find("evil name.lfdpack: "), std::string::npos) << what;
     // Non-printable tag bytes are escaped in messages.

@@ -1,6 +1,7 @@
 // Scenes and helpers shared by the pack tests: a scene that exercises every field of the
 // format, a small one for byte-level loops, exact field-by-field comparison, and section
-// patching (patch a record, then reseal the checksums with lfd::pack::resealPack).
+// patching (patch a record, then reseal the checksums with lfd::pack::resealPack), and the
+// reader's rejections.
 #pragma once
 
 #include "lfd/pack.h"
@@ -8,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <optional>
 #include <string>
@@ -424,6 +426,35 @@ void writeElement(std::vector<uint8_t>& bytes, uint32_t tag, uint64_t i, const T
 {
     const pack::SectionEntry e = entryFor(bytes, tag);
     std::memcpy(bytes.data() + e.offset + i * e.stride + byteOffset, &value, sizeof value);
+}
+
+// The name the rejection helpers read packs as.
+inline const std::string kTestPackName = "test.lfdpack";
+
+// The reader's rejection of `bytes` read as `name`: the PackError message, checked to be one
+// line that starts "<name>: " (a line break in the name shows as a space); "" with a test
+// failure when the pack was accepted.
+inline std::string packRejection(const std::vector<uint8_t>& bytes, const std::string& name = kTestPackName)
+{
+    try {
+        readPackFromMemory(bytes.data(), bytes.size(), name);
+    } catch (const PackError& e) {
+        const std::string what = e.what();
+        std::string shownName = name;
+        std::replace(shownName.begin(), shownName.end(), '\n', ' ');
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        EXPECT_EQ(what.rfind(shownName + ": ", 0), 0u) << what;
+        return what;
+    }
+    ADD_FAILURE() << "pack of " << bytes.size() << " bytes was accepted";
+    return "";
+}
+
+// Expects the reader to reject `bytes` with a one-line message that contains `needle`.
+inline void expectPackRejected(const std::vector<uint8_t>& bytes, const std::string& needle)
+{
+    const std::string what = packRejection(bytes);
+    EXPECT_NE(what.find(needle), std::string::npos) << "message: " << what << "\nexpected: " << needle;
 }
 
 } // namespace lfd::test

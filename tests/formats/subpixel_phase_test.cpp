@@ -13,6 +13,7 @@
 // CPU only. docs/player/subpixel-phase.md records the counts.
 #include "lfd/display_profile.h"
 #include "lfd/subpixel_phase.h"
+#include "sample_profiles.h"
 
 #include <gtest/gtest.h>
 
@@ -46,7 +47,7 @@ void PrintTo(const NamedProfile& p, std::ostream* os) { *os << p.name; }
 std::vector<NamedProfile> shippedProfiles() {
     std::vector<NamedProfile> out{{"builtin_prototype", prototypeDisplayProfile()}};
     std::vector<fs::path> files;
-    for (const fs::directory_entry& e : fs::directory_iterator(fs::path(LFD_SOURCE_DIR) / "samples" / "profiles"))
+    for (const fs::directory_entry& e : fs::directory_iterator(lfd::test::kSampleProfiles))
         if (e.path().extension() == ".json")
             files.push_back(e.path());
     std::sort(files.begin(), files.end());
@@ -182,7 +183,7 @@ TEST(SubpixelPhaseFixedPoint, ViewIsTheHighWordOfPhaseTimesN) {
 TEST(SubpixelPhaseFixedPoint, SamePhaseStrideIsOneLensOnThePrototypeAndThe8KPanels) {
     // Prototype: 3 / X = 0.12483 per pixel, 8 pixels = 0.99867 periods: 0.064 views off at 48.
     EXPECT_EQ(samePhasePixelStride(prototypeDisplayProfile(), 16, 0.5), 8u);
-    const fs::path dir = fs::path(LFD_SOURCE_DIR) / "samples" / "profiles";
+    const fs::path dir = lfd::test::kSampleProfiles;
     EXPECT_EQ(samePhasePixelStride(loadDisplayProfile(dir / "looking_glass_65_8k.json"), 16, 0.5), 8u);
     EXPECT_EQ(samePhasePixelStride(loadDisplayProfile(dir / "looking_glass_32_8k.json"), 16, 0.5), 8u);
     // About 6.22 pixels per lens: no stride up to 16 comes within half a view; plain order.

@@ -7,7 +7,7 @@
 namespace lfd::lighting {
 namespace {
 
-void expectNear(glm::vec3 a, glm::vec3 b)
+void expectColourNear(glm::vec3 a, glm::vec3 b)
 {
     EXPECT_NEAR(a.r, b.r, 1e-5f);
     EXPECT_NEAR(a.g, b.g, 1e-5f);
@@ -16,25 +16,25 @@ void expectNear(glm::vec3 a, glm::vec3 b)
 
 TEST(ToneMap, PbrNeutralBelowTheShoulderOnlyRemovesTheToeOffset)
 {
-    expectNear(pbrNeutralToneMap(glm::vec3(0.0f)), glm::vec3(0.0f));
+    expectColourNear(pbrNeutralToneMap(glm::vec3(0.0f)), glm::vec3(0.0f));
     // min channel x < 0.08: offset x - 6.25 x^2, so 0.05 -> 6.25 * 0.05^2.
-    expectNear(pbrNeutralToneMap(glm::vec3(0.05f)), glm::vec3(0.015625f));
+    expectColourNear(pbrNeutralToneMap(glm::vec3(0.05f)), glm::vec3(0.015625f));
     // Above 0.08 the offset is 0.04; a peak below 0.76 is not compressed.
-    expectNear(pbrNeutralToneMap(glm::vec3(0.5f)), glm::vec3(0.46f));
-    expectNear(pbrNeutralToneMap({0.5f, 0.3f, 0.1f}), {0.46f, 0.26f, 0.06f});
+    expectColourNear(pbrNeutralToneMap(glm::vec3(0.5f)), glm::vec3(0.46f));
+    expectColourNear(pbrNeutralToneMap({0.5f, 0.3f, 0.1f}), {0.46f, 0.26f, 0.06f});
 }
 
 TEST(ToneMap, PbrNeutralCompressesAndDesaturatesAboveTheShoulder)
 {
     // Grey 1: offset 0.04 -> peak 0.96, new peak 1 - 0.24^2 / (0.96 + 0.24 - 0.76).
-    expectNear(pbrNeutralToneMap(glm::vec3(1.0f)), glm::vec3(1.0f - 0.0576f / 0.44f));
+    expectColourNear(pbrNeutralToneMap(glm::vec3(1.0f)), glm::vec3(1.0f - 0.0576f / 0.44f));
     // (2, 0.5, 0.1): offset 0.04 -> (1.96, 0.46, 0.06), new peak 1 - 0.0576 / 1.44 = 0.96,
     // scaled by 0.96 / 1.96, then mixed towards 0.96 by g = 1 - 1 / (0.15 * 1.0 + 1).
     const float scale = 0.96f / 1.96f, g = 1.0f - 1.0f / 1.15f;
-    expectNear(pbrNeutralToneMap({2.0f, 0.5f, 0.1f}),
+    expectColourNear(pbrNeutralToneMap({2.0f, 0.5f, 0.1f}),
                {0.96f, 0.46f * scale + (0.96f - 0.46f * scale) * g, 0.06f * scale + (0.96f - 0.06f * scale) * g});
     // A toe and a shoulder at once: min 0.02 -> offset 0.0175, peak 0.8825.
-    expectNear(pbrNeutralToneMap({0.3f, 0.02f, 0.9f}), {0.272777f, 0.007559f, 0.841103f});
+    expectColourNear(pbrNeutralToneMap({0.3f, 0.02f, 0.9f}), {0.272777f, 0.007559f, 0.841103f});
     // Bright values approach 1 and never exceed it.
     EXPECT_LT(pbrNeutralToneMap(glm::vec3(1e6f)).r, 1.0f);
     EXPECT_GT(pbrNeutralToneMap(glm::vec3(1e6f)).r, 0.9999f);

@@ -43,8 +43,6 @@ Image gradient(uint32_t w, uint32_t h, uint32_t channels) {
     return image;
 }
 
-} // namespace
-
 TEST_F(ImageFileTest, RoundTripRgba8AndRgb8) {
     for (uint32_t channels : {4u, 3u}) {
         const Image original = gradient(37, 19, channels); // odd sizes: no row padding games
@@ -182,3 +180,5 @@ TEST_F(ImageFileTest, DiffImageIsScaledAbsoluteDifference) {
     ASSERT_EQ(diff.channels, 3u);
     EXPECT_EQ(diff.pixels, (std::vector<uint8_t>{24, 80, 0, 255, 0, 0}));
 }
+
+} // namespace

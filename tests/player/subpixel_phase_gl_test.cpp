@@ -6,6 +6,7 @@
 #include "display_test_profiles.h"
 #include "gl_handles.h"
 #include "gl_test_support.h"
+#include "sample_profiles.h"
 #include "shader_library.h"
 
 #include "lfd/display_profile.h"
@@ -132,7 +133,7 @@ TEST_F(SubpixelPhaseGpu, SmallPanelEveryRowEqualsTheCpu)
 TEST_F(SubpixelPhaseGpu, EightKPanelsSampledRowsEqualTheCpu)
 {
     const gl::Program program = buildProbe();
-    const std::filesystem::path dir = std::filesystem::path(LFD_SOURCE_DIR) / "samples" / "profiles";
+    const std::filesystem::path dir = lfd::test::kSampleProfiles;
     const DisplayProfile lg65 = loadDisplayProfile(dir / "looking_glass_65_8k.json");
     for (const DisplayProfile& profile : {lg65, withViews(lg65, 72, 960, 480),
                                           loadDisplayProfile(dir / "looking_glass_32_8k.json"),

@@ -36,7 +36,7 @@ if [[ -n $bin && -f $bin/build.ninja ]] && command -v ninja >/dev/null; then
   for t in $named; do
     ninja -C "$bin" -t query "$t" >/dev/null 2>&1 || fail "no target $t in $bin"
   done
-  compiles() { ninja -C "$bin" -t commands "$@" | grep -cE ' -c .*\.(cpp|cc|c)( |$)' || true; }
+  compiles() { ninja -C "$bin" -t commands "$@" | grep -cE ' -c .*\.(cpp|cc|c|cxx)( |$)' || true; }
   demo_units=$(compiles $named)
   all_units=$(compiles)
   echo "compile units: demo targets $demo_units, everything $all_units"

@@ -73,4 +73,7 @@ struct LfdprConstants {
     }
 };
 
+// Workgroups (or tiles, or chunks) of size b that cover a items: ceil(a / b).
+inline uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
+
 } // namespace lfd::player

@@ -21,8 +21,6 @@ namespace {
 
 namespace lb = lfdpr_bindings;
 
-uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
-
 // Whether two profiles give the same inverse map (the panel, its mapping and the views).
 bool sameMap(const DisplayProfile& a, const DisplayProfile& b)
 {

@@ -28,8 +28,6 @@ std::vector<std::string> atomicsDefines(bool int64)
     return int64 ? std::vector<std::string>{"LFDPR_INT64 1"} : std::vector<std::string>{};
 }
 
-uint32_t divideUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
-
 constexpr uint32_t kStreamsAll = kStreamPosition | kStreamNormal | kStreamTangent | kStreamUv;
 
 // LFDPR_SHADE_WORK_BUFFER: LfdprVisibilityShadeCountersGpu (repairCount, repairBase, repairCapacity),

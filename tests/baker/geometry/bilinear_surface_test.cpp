@@ -11,14 +11,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <random>
 #include <vector>
 
 namespace lfd::bake {
 namespace {
-
-constexpr double kPi = 3.14159265358979;
 
 struct TestMesh {
     std::vector<glm::vec3> positions;
@@ -74,7 +73,7 @@ TestMesh awkwardMesh()
     const auto apex = uint32_t(mesh.positions.size());
     mesh.positions.emplace_back(20.0f, 0.0f, 1.5f);
     for (uint32_t i = 0; i < kRim; ++i) {
-        const double a = 2.0 * kPi * double(i) / kRim;
+        const double a = 2.0 * std::numbers::pi * double(i) / kRim;
         mesh.positions.emplace_back(float(20.0 + 3.0 * std::cos(a)), float(3.0 * std::sin(a)),
                                     float(0.4 * std::sin(5.0 * a)));
     }
@@ -197,7 +196,7 @@ TEST(BilinearSurface, RefusalIsReportedNotThrown)
     constexpr uint32_t kRim = 65536;
     mesh.positions.emplace_back(0.0f, 0.0f, 0.0f);
     for (uint32_t i = 0; i < kRim; ++i) {
-        const double a = 2.0 * kPi * double(i) / kRim;
+        const double a = 2.0 * std::numbers::pi * double(i) / kRim;
         mesh.positions.emplace_back(float(0.5 * std::cos(a)), float(0.5 * std::sin(a)), 0.0f);
     }
     for (uint32_t i = 0; i < kRim; ++i)

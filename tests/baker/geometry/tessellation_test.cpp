@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <cstdio>
 #include <limits>
 #include <random>
@@ -22,8 +23,6 @@
 
 namespace lfd::bake {
 namespace {
-
-constexpr float kPi = 3.14159265358979f;
 
 // ---- Scene building -------------------------------------------------------------------
 
@@ -128,7 +127,8 @@ Scene jitteredTorus(uint32_t n, uint32_t seed)
     for (uint32_t i = 0; i <= n; ++i)
         for (uint32_t j = 0; j <= n; ++j) {
             const uint32_t iw = i % n, jw = j % n; // the seam repeats the first row/column
-            const float a = 2.0f * kPi * float(iw) / float(n), b = 2.0f * kPi * float(jw) / float(n);
+            constexpr float twoPi = 2.0f * std::numbers::pi_v<float>;
+            const float a = twoPi * float(iw) / float(n), b = twoPi * float(jw) / float(n);
             const float r = radius[size_t(iw) * n + jw];
             const float ring = 3.0f + r * std::cos(b);
             Vertex v;
@@ -765,7 +765,7 @@ TEST(Tessellation, AwkwardTopologyIsSplitOnTheSurface)
     std::vector<Vertex> cone(1 + kRim);
     cone[0].position = {0.0f, 0.0f, 2.0f};
     for (uint32_t i = 0; i < kRim; ++i) {
-        const float a = 2.0f * kPi * float(i) / float(kRim);
+        const float a = 2.0f * std::numbers::pi_v<float> * float(i) / float(kRim);
         cone[1 + i].position = {6.0f * std::cos(a), 6.0f * std::sin(a), 0.0f};
     }
     std::vector<uint32_t> triangles;

@@ -8,6 +8,7 @@
 #include "imported_scene.h"
 #include "gltf_findings.h"
 #include "gltf_import.h"
+#include "import_test_cases.h"
 #include "texture_bake.h"
 #include "gltf_test_files.h"
 
@@ -23,15 +24,16 @@
 namespace fs = std::filesystem;
 using lfd::bake::BakeError;
 using lfd::bake::ImportedScene;
+using lfd::test::hasWarning;
+using lfd::test::kGltfCases;
 using lfd::test::IssueCode;
 using nlohmann::json;
 
 namespace {
 
 const fs::path kFixtures = fs::path(LFD_TEST_DATA) / "gltf_compressed";
-const fs::path kCases = fs::path(LFD_TEST_DATA) / "gltf";
 
-ImportedScene import(const fs::path& path, unsigned threads = 0)
+ImportedScene importCompressed(const fs::path& path, unsigned threads = 0)
 {
     return lfd::bake::importGltf(path, lfd::bake::Log{}, threads);
 }
@@ -42,12 +44,6 @@ ImportedScene importStrict(const fs::path& path)
     lfd::bake::Log strict;
     strict.warn = [](const std::string& w) { throw BakeError("warning under --strict: " + w); };
     return lfd::bake::importGltf(path, strict);
-}
-
-bool hasWarning(const ImportedScene& s, const std::string& part)
-{
-    return std::any_of(s.warnings.begin(), s.warnings.end(),
-                       [&](const std::string& w) { return w.find(part) != std::string::npos; });
 }
 
 // Every triangle corner in scene space (node transforms applied at time 0), in scene order.
@@ -117,7 +113,7 @@ protected:
 
     static const ImportedScene& reference()
     {
-        static const ImportedScene r = import(kFixtures / "gallery.glb");
+        static const ImportedScene r = importCompressed(kFixtures / "gallery.glb");
         return r;
     }
 
@@ -141,7 +137,7 @@ protected:
     static void expectRefused(const fs::path& file, const std::string& path, const std::string& part)
     {
         try {
-            import(file);
+            importCompressed(file);
             ADD_FAILURE() << "accepted, expected " << path << ": ..." << part;
         } catch (const BakeError& e) {
             const std::string what = e.what();
@@ -194,7 +190,7 @@ TEST_F(GltfCompression, KhrMeshoptCompressionReadsAsTheExtPrefix)
             }
         doc["buffers"][1].erase("extensions");
     });
-    expectSameScene(reference(), import(khr), kGridTolerance);
+    expectSameScene(reference(), importCompressed(khr), kGridTolerance);
 }
 
 TEST_F(GltfCompression, MeshoptIntegersWrittenAsFloatsAreIntegers)
@@ -208,14 +204,14 @@ TEST_F(GltfCompression, MeshoptIntegersWrittenAsFloatsAreIntegers)
                     ext[key] = ext.value(key, 0.0) * 1.0;
                 }
     });
-    expectSameScene(reference(), import(floats), kGridTolerance);
+    expectSameScene(reference(), importCompressed(floats), kGridTolerance);
 }
 
 TEST_F(GltfCompression, DecodedSceneDoesNotDependOnTheThreadCount)
 {
     for (const char* name : {"gallery-draco.glb", "gallery-meshopt.glb"}) {
         SCOPED_TRACE(name);
-        const ImportedScene one = import(kFixtures / name, 1), three = import(kFixtures / name, 3);
+        const ImportedScene one = importCompressed(kFixtures / name, 1), three = importCompressed(kFixtures / name, 3);
         EXPECT_EQ(one.scene.indices, three.scene.indices);
         EXPECT_EQ(one.scene.vertices.positions, three.scene.vertices.positions);
         EXPECT_EQ(one.scene.vertices.normals, three.scene.vertices.normals);
@@ -230,7 +226,7 @@ TEST_F(GltfCompression, KhronosDracoSampleOfAssimpTestModelsImports)
     const fs::path engine = "/usr/share/assimp/models/glTF2/draco/2CylinderEngine.gltf";
     if (!fs::exists(engine))
         GTEST_SKIP() << engine << " absent (Debian assimp-testmodels): Draco sample skipped";
-    const ImportedScene r = import(engine);
+    const ImportedScene r = importCompressed(engine);
     EXPECT_EQ(r.scene.primitives.size(), 34u);
     EXPECT_EQ(r.sourceTriangles, 65311u);
 }
@@ -386,7 +382,7 @@ TEST_F(GltfCompression, WebpTexturesBakeLikeThePngOnes)
 
 TEST_F(GltfCompression, WebpIsPreferredToItsPngFallbackWithStraightAlpha)
 {
-    const ImportedScene r = importStrict(kCases / "webp_fallback.gltf");
+    const ImportedScene r = importStrict(kGltfCases / "webp_fallback.gltf");
     ASSERT_EQ(r.textureSources.size(), 1u);
     EXPECT_EQ(r.textureSources[0].mimeType, "image/webp");
     const lfd::Texture t = lfd::bake::bakeTexture(r.textureSources[0], {});
@@ -414,13 +410,13 @@ TEST_F(GltfCompression, CorruptWebpIsOneLineNamingTheImage)
 
 TEST_F(GltfCompression, KtxTextureFallsBackToItsPngOrIsRefusedWhenRequired)
 {
-    const ImportedScene r = import(kCases / "basisu_fallback.gltf");
+    const ImportedScene r = importCompressed(kGltfCases / "basisu_fallback.gltf");
     ASSERT_EQ(r.textureSources.size(), 1u);
     EXPECT_EQ(r.textureSources[0].mimeType, "image/png");
     EXPECT_TRUE(hasWarning(r, "ignores optional extension KHR_texture_basisu"));
     const lfd::Texture t = lfd::bake::bakeTexture(r.textureSources[0], {});
     EXPECT_EQ(std::vector<int>(t.texels.begin(), t.texels.begin() + 4), (std::vector<int>{255, 0, 0, 255}));
-    expectRefused(kCases / "basisu_required.gltf", "extensionsRequired[0]",
+    expectRefused(kGltfCases / "basisu_required.gltf", "extensionsRequired[0]",
                   "requires unsupported extension KHR_texture_basisu (KTX2 / Basis Universal textures: Debian 12 packages "
                   "no KTX2 decoder)");
 }
@@ -429,10 +425,10 @@ TEST_F(GltfCompression, KtxTextureFallsBackToItsPngOrIsRefusedWhenRequired)
 
 TEST_F(GltfCompression, QuantizedNormalsWithinTheirGridDoNotWarnButWrongOnesDo)
 {
-    EXPECT_NO_THROW(importStrict(kCases / "quantized_normals.gltf"));
-    const ImportedScene bad = import(kCases / "quantized_bad_normal.gltf");
+    EXPECT_NO_THROW(importStrict(kGltfCases / "quantized_normals.gltf"));
+    const ImportedScene bad = importCompressed(kGltfCases / "quantized_bad_normal.gltf");
     EXPECT_FALSE(bad.warnings.empty());
-    lfd::test::expectWarningWith(kCases / "quantized_bad_normal.gltf", IssueCode::ACCESSOR_NON_UNIT, "accessors[0]");
+    lfd::test::expectWarningWith(kGltfCases / "quantized_bad_normal.gltf", IssueCode::ACCESSOR_NON_UNIT, "accessors[0]");
 }
 
 } // namespace

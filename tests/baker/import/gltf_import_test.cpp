@@ -5,6 +5,7 @@
 #include "imported_scene.h"
 #include "gltf_findings.h"
 #include "gltf_import.h"
+#include "import_test_cases.h"
 
 #include "skip_or_fail.h"
 
@@ -23,10 +24,11 @@
 namespace fs = std::filesystem;
 using lfd::bake::BakeError;
 using lfd::bake::ImportedScene;
+using lfd::test::hasWarning;
+using lfd::test::kGltfCases;
 
 namespace {
 
-const fs::path kCases = fs::path(LFD_TEST_DATA) / "gltf";
 const fs::path kAssimp = "/usr/share/assimp/models/glTF2";
 const fs::path kShared = LFD_SHARED_SCENES;
 
@@ -43,14 +45,6 @@ ImportedScene import(const fs::path& path, Captured* captured = nullptr)
         log.warn = [captured](const std::string& s) { captured->warn.push_back(s); };
     }
     return lfd::bake::importGltf(path, log);
-}
-
-bool hasWarning(const ImportedScene& s, const std::string& part)
-{
-    for (const std::string& w : s.warnings)
-        if (w.find(part) != std::string::npos)
-            return true;
-    return false;
 }
 
 // Import must fail with a one-line BakeError that starts with the file path and says `part`.
@@ -166,7 +160,7 @@ private:
 
 TEST(GltfImport, StripBecomesListWithAlternatingWindingAndNoDegenerates)
 {
-    const ImportedScene r = import(kCases / "strip.gltf");
+    const ImportedScene r = import(kGltfCases / "strip.gltf");
     expectWellFormed(r);
     ASSERT_EQ(r.scene.primitives.size(), 2u);
     EXPECT_EQ(relativeIndices(r.scene, 0), (std::vector<uint32_t>{0, 1, 2, 1, 3, 2, 2, 3, 4, 3, 5, 4}));
@@ -179,7 +173,7 @@ TEST(GltfImport, StripBecomesListWithAlternatingWindingAndNoDegenerates)
 
 TEST(GltfImport, NonIndexedFanBecomesList)
 {
-    const ImportedScene r = import(kCases / "fan.gltf");
+    const ImportedScene r = import(kGltfCases / "fan.gltf");
     expectWellFormed(r);
     EXPECT_EQ(r.scene.indices, (std::vector<uint32_t>{1, 2, 0, 2, 3, 0, 3, 4, 0}));
     for (size_t t = 0; t < r.scene.triangleCount(); ++t)
@@ -188,7 +182,7 @@ TEST(GltfImport, NonIndexedFanBecomesList)
 
 TEST(GltfImport, MissingNormalsBecomeFlatNormalsWithWarning)
 {
-    const ImportedScene r = import(kCases / "no_normals.gltf");
+    const ImportedScene r = import(kGltfCases / "no_normals.gltf");
     expectWellFormed(r);
     EXPECT_EQ(r.scene.indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
     for (int v = 0; v < 3; ++v)
@@ -200,7 +194,7 @@ TEST(GltfImport, MissingNormalsBecomeFlatNormalsWithWarning)
 
 TEST(GltfImport, HierarchyParentsFirstMatrixDecomposedOrphansDropped)
 {
-    const ImportedScene r = import(kCases / "hierarchy.gltf");
+    const ImportedScene r = import(kGltfCases / "hierarchy.gltf");
     expectWellFormed(r);
     const lfd::Scene& s = r.scene;
     ASSERT_EQ(s.nodes.size(), 2u); // "orphan" is not in the scene
@@ -230,7 +224,7 @@ TEST(GltfImport, HierarchyParentsFirstMatrixDecomposedOrphansDropped)
 
 TEST(GltfImport, CubicSplineLinearisedWithWarningAndRotationsNormalised)
 {
-    const ImportedScene r = import(kCases / "cubic_spline.gltf");
+    const ImportedScene r = import(kGltfCases / "cubic_spline.gltf");
     expectWellFormed(r);
     ASSERT_EQ(r.scene.animations.size(), 1u);
     const std::vector<lfd::AnimationChannel>& ch = r.scene.animations[0].channels;
@@ -251,7 +245,7 @@ TEST(GltfImport, CubicSplineLinearisedWithWarningAndRotationsNormalised)
 TEST(GltfImport, LinesPrimitiveSkippedWithWarningNamingIt)
 {
     Captured log;
-    const ImportedScene r = import(kCases / "lines_and_triangles.gltf", &log);
+    const ImportedScene r = import(kGltfCases / "lines_and_triangles.gltf", &log);
     expectWellFormed(r);
     EXPECT_EQ(r.scene.triangleCount(), 1u);
     ASSERT_EQ(r.scene.meshes.size(), 1u);
@@ -265,7 +259,7 @@ TEST(GltfImport, LinesPrimitiveSkippedWithWarningNamingIt)
 TEST(GltfImport, UnusedStreamsAreNotStored)
 {
     // uvs and tangents given, but no material has a texture.
-    const ImportedScene r = import(kCases / "unused_streams.gltf");
+    const ImportedScene r = import(kGltfCases / "unused_streams.gltf");
     expectWellFormed(r);
     EXPECT_TRUE(r.scene.vertices.uvs.empty());
     EXPECT_TRUE(r.scene.vertices.tangents.empty());
@@ -278,7 +272,7 @@ TEST(GltfImport, UnusedStreamsAreNotStored)
 
 TEST(GltfImport, NormalMapGivesUvsTangentsAndSeparateColourSpaces)
 {
-    const ImportedScene r = import(kCases / "normal_map.gltf");
+    const ImportedScene r = import(kGltfCases / "normal_map.gltf");
     expectWellFormed(r);
     const lfd::Scene& s = r.scene;
     EXPECT_EQ(s.vertices.mask(), lfd::kStreamPosition | lfd::kStreamNormal | lfd::kStreamUv | lfd::kStreamTangent);
@@ -329,7 +323,7 @@ TEST(GltfImport, NormalMapGivesUvsTangentsAndSeparateColourSpaces)
 
 TEST(GltfImport, InterleavedNormalizedAndSparseAccessors)
 {
-    const ImportedScene r = import(kCases / "interleaved_sparse.gltf");
+    const ImportedScene r = import(kGltfCases / "interleaved_sparse.gltf");
     expectWellFormed(r);
     const lfd::VertexStreams& v = r.scene.vertices;
     ASSERT_EQ(v.size(), 3u);
@@ -344,7 +338,7 @@ TEST(GltfImport, InterleavedNormalizedAndSparseAccessors)
 // make_cases.py materials_and_lights(): the three extensions, required.
 TEST(GltfImport, TextureTransformUnlitAndLightsOfAHandMadeFile)
 {
-    const ImportedScene r = import(kCases / "materials_and_lights.gltf");
+    const ImportedScene r = import(kGltfCases / "materials_and_lights.gltf");
     expectWellFormed(r);
     const lfd::Scene& s = r.scene;
     ASSERT_EQ(s.materials.size(), 2u);
@@ -385,16 +379,16 @@ TEST(GltfImport, TextureTransformUnlitAndLightsOfAHandMadeFile)
 TEST(GltfImport, BrokenHandMadeFilesAreRejected)
 {
     using lfd::test::IssueCode;
-    expectRejected(kCases / "sheared_matrix.gltf", IssueCode::NODE_MATRIX_NON_TRS, "nodes[0].matrix");
-    expectRejected(kCases / "recursive_nodes.gltf", IssueCode::NODE_LOOP, "nodes[0]");
-    expectRejected(kCases / "accessor_out_of_bounds.gltf", IssueCode::ACCESSOR_TOO_LONG, "accessors[0]");
-    expectRejected(kCases / "index_out_of_range.gltf", IssueCode::ACCESSOR_INDEX_OOB, "meshes[0].primitives[0].indices");
-    expectRejected(kCases / "basisu_required.gltf", "requires unsupported extension KHR_texture_basisu");
-    expectRejected(kCases / "missing_bin.gltf", "missing_bin_does_not_exist.bin");
-    expectRejected(kCases / "malformed.gltf", "parse error");
-    expectRejected(kCases / "bad_key_times.gltf", IssueCode::ANIMATION_KEY_TIMES_NOT_INCREASING, "accessors[2]");
-    expectRejected(kCases / "does_not_exist.gltf", "file not found");
-    expectRejected(kCases, "is a directory");
+    expectRejected(kGltfCases / "sheared_matrix.gltf", IssueCode::NODE_MATRIX_NON_TRS, "nodes[0].matrix");
+    expectRejected(kGltfCases / "recursive_nodes.gltf", IssueCode::NODE_LOOP, "nodes[0]");
+    expectRejected(kGltfCases / "accessor_out_of_bounds.gltf", IssueCode::ACCESSOR_TOO_LONG, "accessors[0]");
+    expectRejected(kGltfCases / "index_out_of_range.gltf", IssueCode::ACCESSOR_INDEX_OOB, "meshes[0].primitives[0].indices");
+    expectRejected(kGltfCases / "basisu_required.gltf", "requires unsupported extension KHR_texture_basisu");
+    expectRejected(kGltfCases / "missing_bin.gltf", "missing_bin_does_not_exist.bin");
+    expectRejected(kGltfCases / "malformed.gltf", "parse error");
+    expectRejected(kGltfCases / "bad_key_times.gltf", IssueCode::ANIMATION_KEY_TIMES_NOT_INCREASING, "accessors[2]");
+    expectRejected(kGltfCases / "does_not_exist.gltf", "file not found");
+    expectRejected(kGltfCases, "is a directory");
 }
 
 TEST(GltfImport, AccessorWithoutBufferViewCannotAllocateGigabytes)

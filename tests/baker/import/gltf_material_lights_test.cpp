@@ -6,6 +6,7 @@
 #include "imported_scene.h"
 #include "gltf_findings.h"
 #include "gltf_import.h"
+#include "import_test_cases.h"
 #include "gltf_test_files.h"
 
 #include <gtest/gtest.h>
@@ -19,6 +20,7 @@ using nlohmann::json;
 using lfd::bake::BakeError;
 using lfd::test::IssueCode;
 using lfd::bake::ImportedScene;
+using lfd::test::hasWarning;
 
 namespace {
 
@@ -97,14 +99,6 @@ json litTriangle()
     doc["nodes"].push_back(lightNode("stray spot", 2));
     doc["scenes"][0]["nodes"] = {0, 2, 3};
     return doc;
-}
-
-bool hasWarning(const ImportedScene& s, const std::string& part)
-{
-    for (const std::string& w : s.warnings)
-        if (w.find(part) != std::string::npos)
-            return true;
-    return false;
 }
 
 void expectSameTransform(const lfd::TextureTransform& a, const lfd::TextureTransform& b)

@@ -81,7 +81,6 @@ float largestSpan(const lfd::Scene& s, double relief)
     return span;
 }
 
-} // namespace
 
 TEST_F(RgbdImport, FlatDepthIsTwoTrianglesSpanningTheImageWithTheTextureCorners)
 {
@@ -258,3 +257,5 @@ TEST_F(RgbdImport, ReversedDepthRangeNamesTheValues)
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.out.find("got 0.8 0.2"), std::string::npos) << r.out;
 }
+
+} // namespace

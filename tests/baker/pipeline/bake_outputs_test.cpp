@@ -43,7 +43,6 @@ std::string fileText(const fs::path& path)
     return s.str();
 }
 
-} // namespace
 
 TEST(DepfileText, EscapesForMakeAndNinjaAndListsEachFileOnce)
 {
@@ -91,3 +90,5 @@ TEST_F(BakeOutputs, MissingOutputFolderIsRefusedBeforeTheInputIsRead)
     EXPECT_NE(slash.out.find("cannot write: folder"), std::string::npos) << slash.out;
     EXPECT_FALSE(fs::exists(dir_ / "nowhere"));
 }
+
+} // namespace

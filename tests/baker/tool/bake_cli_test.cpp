@@ -30,13 +30,7 @@ using lfd::test::quoted;
 using lfd::test::readBytes;
 using lfd::test::run;
 using lfd::test::RunResult;
-size_t lineCount(const std::string& s)
-{
-    size_t lines = 0;
-    for (char c : s)
-        lines += c == '\n';
-    return lines + (!s.empty() && s.back() != '\n');
-}
+using lfd::test::lineCount;
 
 class BakeCli : public ::testing::Test {
 protected:

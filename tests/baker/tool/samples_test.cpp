@@ -36,28 +36,11 @@ namespace {
 
 using lfd::test::kMakeSamples;
 
-struct RunResult {
-    int exitCode = -1;
-    std::string output; // stdout and stderr together
-};
+using lfd::test::lineCount;
+using lfd::test::RunResult;
 
-RunResult runTool(const std::string& arguments, const fs::path& logFile)
-{
-    const std::string command = "'" + kMakeSamples + "' " + arguments + " > '" + logFile.string() + "' 2>&1";
-    const int status = std::system(command.c_str());
-    RunResult result;
-    result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(logFile);
-    std::stringstream text;
-    text << in.rdbuf();
-    result.output = text.str();
-    return result;
-}
-
-size_t lineCount(const std::string& text)
-{
-    return size_t(std::count(text.begin(), text.end(), '\n'));
-}
+// lfd-make-samples with `arguments`: its exit status and its stdout + stderr together.
+RunResult runTool(const std::string& arguments) { return lfd::test::run("'" + kMakeSamples + "' " + arguments); }
 
 tinygltf::Model loadGltf(const fs::path& path)
 {
@@ -194,15 +177,14 @@ protected:
         dir_ = fs::temp_directory_path() / ("lfd_samples_test_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
-        generated_ = runTool("'" + (dir_ / "out").string() + "' --texture-size 256 --quiet",
-                             dir_ / "generate.log");
+        generated_ = runTool("'" + (dir_ / "out").string() + "' --texture-size 256 --quiet");
     }
     static void TearDownTestSuite() { fs::remove_all(dir_); }
 
     void SetUp() override
     {
         ASSERT_EQ(generated_.exitCode, 0) << "lfd-make-samples failed (is it built?): "
-                                          << generated_.output;
+                                          << generated_.out;
     }
 
     static fs::path scenePath(const std::string& scene)
@@ -214,11 +196,10 @@ protected:
     static inline RunResult generated_;
 };
 
-} // namespace
 
 TEST_F(SamplesTest, WritesEveryScene_ExternalFilesOnly_NoStagingLeftovers)
 {
-    EXPECT_TRUE(generated_.output.empty()) << "--quiet printed: " << generated_.output;
+    EXPECT_TRUE(generated_.out.empty()) << "--quiet printed: " << generated_.out;
     for (const std::string scene : {"gallery", "car", "room"}) {
         EXPECT_TRUE(fs::is_regular_file(scenePath(scene))) << scene;
         EXPECT_TRUE(fs::is_regular_file(dir_ / "out" / scene / (scene + ".bin"))) << scene;
@@ -426,9 +407,9 @@ TEST_F(SamplesTest, Car_InteriorAndEngineAreHiddenInsideTheShell)
 TEST_F(SamplesTest, Room_InstancesOptionSetsTheNumberOfCars)
 {
     const fs::path out = dir_ / "room5";
-    const RunResult r = runTool("'" + out.string() + "' --scene room --instances 5", dir_ / "room5.log");
-    ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_EQ(lineCount(r.output), 1u) << r.output; // one progress line per scene
+    const RunResult r = runTool("'" + out.string() + "' --scene room --instances 5");
+    ASSERT_EQ(r.exitCode, 0) << r.out;
+    EXPECT_EQ(lineCount(r.out), 1u) << r.out; // one progress line per scene
     EXPECT_FALSE(fs::exists(out / "gallery"));
     const tinygltf::Model room = loadGltf(out / "room" / "room.gltf");
     const tinygltf::Model car = loadGltf(scenePath("car"));
@@ -439,9 +420,9 @@ TEST_F(SamplesTest, Room_InstancesOptionSetsTheNumberOfCars)
 TEST_F(SamplesTest, RewritingAnExistingSceneReplacesIt)
 {
     const fs::path out = dir_ / "rewrite";
-    ASSERT_EQ(runTool("'" + out.string() + "' --scene car --quiet", dir_ / "a.log").exitCode, 0);
+    ASSERT_EQ(runTool("'" + out.string() + "' --scene car --quiet").exitCode, 0);
     std::ofstream(out / "car" / "stale.txt") << "old";
-    ASSERT_EQ(runTool("'" + out.string() + "' --scene car --quiet", dir_ / "b.log").exitCode, 0);
+    ASSERT_EQ(runTool("'" + out.string() + "' --scene car --quiet").exitCode, 0);
     EXPECT_FALSE(fs::exists(out / "car" / "stale.txt")); // the whole directory was replaced
     EXPECT_TRUE(fs::is_regular_file(out / "car" / "car.gltf"));
     for (const fs::directory_entry& entry : fs::directory_iterator(out))
@@ -460,20 +441,19 @@ TEST_F(SamplesTest, BadArgumentsFailWithOneLineMessage)
         out + " --frobnicate",                // unknown option
     };
     for (const std::string& arguments : usageErrors) {
-        const RunResult r = runTool(arguments, dir_ / "bad.log");
+        const RunResult r = runTool(arguments);
         EXPECT_EQ(r.exitCode, 2) << arguments;
-        EXPECT_EQ(lineCount(r.output), 1u) << arguments << " -> " << r.output;
-        EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
+        EXPECT_EQ(lineCount(r.out), 1u) << arguments << " -> " << r.out;
+        EXPECT_NE(r.out.find("error"), std::string::npos) << r.out;
     }
     EXPECT_FALSE(fs::exists(dir_ / "bad"));
 
     // OUTDIR below a regular file cannot be created.
     std::ofstream(dir_ / "plain_file") << "x";
-    const RunResult r = runTool("'" + (dir_ / "plain_file" / "sub").string() + "' --scene car",
-                                dir_ / "unwritable.log");
+    const RunResult r = runTool("'" + (dir_ / "plain_file" / "sub").string() + "' --scene car");
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_EQ(lineCount(r.output), 1u) << r.output;
-    EXPECT_NE(r.output.find("plain_file"), std::string::npos) << r.output;
+    EXPECT_EQ(lineCount(r.out), 1u) << r.out;
+    EXPECT_NE(r.out.find("plain_file"), std::string::npos) << r.out;
 }
 
 // The skinned samples (glTF 3.7.3, 3.7.2.2): the character's limb of four bones and its
@@ -482,8 +462,8 @@ TEST_F(SamplesTest, BadArgumentsFailWithOneLineMessage)
 TEST_F(SamplesTest, CharacterAndCrowdAreSkinnedMorphedAndOutOfPhase)
 {
     const fs::path out = dir_ / "skinned";
-    ASSERT_EQ(runTool("'" + out.string() + "' --scene character", dir_ / "character.log").exitCode, 0);
-    ASSERT_EQ(runTool("'" + out.string() + "' --scene crowd --instances 4", dir_ / "crowd.log").exitCode, 0);
+    ASSERT_EQ(runTool("'" + out.string() + "' --scene character").exitCode, 0);
+    ASSERT_EQ(runTool("'" + out.string() + "' --scene crowd --instances 4").exitCode, 0);
     const lfd::bake::ImportedScene character = lfd::bake::importGltf(out / "character" / "character.gltf", {});
     EXPECT_TRUE(character.warnings.empty()) << character.warnings.front();
     const lfd::Scene& c = character.scene;
@@ -518,7 +498,7 @@ TEST_F(SamplesTest, CharacterAndCrowdAreSkinnedMorphedAndOutOfPhase)
 TEST_F(SamplesTest, CharacterKeepsTheEdgeBoundInSampledPoses)
 {
     const fs::path out = dir_ / "bound";
-    ASSERT_EQ(runTool("'" + out.string() + "' --scene character", dir_ / "bound.log").exitCode, 0);
+    ASSERT_EQ(runTool("'" + out.string() + "' --scene character").exitCode, 0);
     lfd::Scene s = lfd::bake::importGltf(out / "character" / "character.gltf", {}).scene;
     const double bound = 0.03;
     const lfd::bake::TessellationStats stats = lfd::bake::tessellateScene(s, bound, lfd::bake::Log{});
@@ -536,3 +516,5 @@ TEST_F(SamplesTest, CharacterKeepsTheEdgeBoundInSampledPoses)
     }
     EXPECT_LE(worst, bound * 1.001) << "longest posed edge over the sampled poses";
 }
+
+} // namespace
