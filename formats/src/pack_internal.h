@@ -51,7 +51,7 @@ template <glm::length_t N, typename T, glm::qualifier Q>
 bool finite(const glm::vec<N, T, Q>& v)
 {
     for (glm::length_t i = 0; i < N; ++i)
-        if (!std::isfinite(float(v[i])))
+        if (!std::isfinite(v[i]))
             return false;
     return true;
 }

@@ -1,6 +1,6 @@
 // Running the project's command-line tools from tests: the command's exit status and its
 // stdout + stderr together, shell quoting for paths, and a file's bytes. Shared by the
-// baker CLI tests (lfd-bake, lfd-make-samples).
+// tests of every command-line tool (lfd-bake, lfd-make-samples, lfd-play, lfd-bench).
 #pragma once
 
 #include <sys/wait.h>
@@ -50,6 +50,8 @@ inline size_t lineCount(const std::string& s)
 // The tools in this build tree (LFD_BINARY_DIR: its top folder, set by tests/CMakeLists.txt).
 inline const std::string kBake = std::string(LFD_BINARY_DIR) + "/baker/lfd-bake";
 inline const std::string kMakeSamples = std::string(LFD_BINARY_DIR) + "/samples/lfd-make-samples";
+inline const std::filesystem::path kPlay = std::filesystem::path(LFD_BINARY_DIR) / "player" / "lfd-play";
+inline const std::filesystem::path kBenchTool = std::filesystem::path(LFD_BINARY_DIR) / "player" / "lfd-bench";
 #endif
 
 inline std::string readBytes(const std::filesystem::path& path)

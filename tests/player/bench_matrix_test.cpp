@@ -6,6 +6,7 @@
 #include "render_test_util.h"
 #include "skip_or_fail.h"
 #include "test_scenes.h"
+#include "tool_run.h"
 
 #include "bench_matrix.h"
 #include "bench_runner.h"
@@ -25,7 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-DisplayProfile tinyProfile() { return tenthPrototypeProfile("matrix-small", 4, 64, 48); }
+DisplayProfile matrixProfile() { return tenthPrototypeProfile("matrix-small", 4, 64, 48); }
 
 player::BenchOptions matrixOptions()
 {
@@ -42,14 +43,6 @@ player::BenchOptions matrixOptions()
     return o;
 }
 
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 class BenchMatrixTest : public GlTest {};
 
 TEST_F(BenchMatrixTest, RunsEveryConfigurationAndWritesTheMatrix)
@@ -62,7 +55,7 @@ TEST_F(BenchMatrixTest, RunsEveryConfigurationAndWritesTheMatrix)
         EXPECT_EQ(partial.results.size(), size_t(calls));
     };
     const player::BenchReport report =
-        player::runBenchmark(o, tinyProfile(), cubeAndSphereScene(), "scene.lfdpack", "test GL", progress);
+        player::runBenchmark(o, matrixProfile(), cubeAndSphereScene(), "scene.lfdpack", "test GL", progress);
     const std::vector<std::string> names = {"mvr", "mvr+aa-view", "mvr+ss-2v", "mvr+aa-view+ss-2v",
                                             "lfdpr", "lfdpr+aa-view", "lfdpr+ss-2v", "lfdpr+aa-view+ss-2v"};
     ASSERT_EQ(report.results.size(), names.size()); // the reference (mvr) is a timed configuration
@@ -98,16 +91,16 @@ TEST_F(BenchMatrixTest, RunsEveryConfigurationAndWritesTheMatrix)
 
     const fs::path dir = testOutputDir("bench_matrix");
     player::writeMatrixTables(dir, {report});
-    const std::string csv = readText(dir / "results.csv");
+    const std::string csv = readBytes(dir / "results.csv");
     size_t lines = 0;
     for (char c : csv)
         lines += c == '\n';
     EXPECT_EQ(lines, names.size() + 1);
     EXPECT_NE(csv.find("lfdpr+aa-view+ss-2v,lfdpr,view,2v,1,"), std::string::npos);
-    const std::string table = readText(dir / "table.md");
+    const std::string table = readBytes(dir / "table.md");
     EXPECT_NE(table.find("| scene (tris) | views | method | AA | SS | point gen ms (points)"), std::string::npos);
     EXPECT_NE(table.find("## Pareto front"), std::string::npos);
-    const nlohmann::json j = nlohmann::json::parse(readText(dir / "results.json"));
+    const nlohmann::json j = nlohmann::json::parse(readBytes(dir / "results.json"));
     EXPECT_EQ(j["runs"][0]["renderers"].size(), names.size());
     EXPECT_FALSE(j["interrupted"].get<bool>());
 
@@ -127,10 +120,10 @@ TEST_F(BenchMatrixTest, RunsEveryConfigurationAndWritesTheMatrix)
     std::string why;
     if (!player::drawMatrixChart(dir, why))
         LFD_SKIP_OR_FAIL("chart.png not drawn: " << why);
-    const std::string png = readText(dir / "chart.png");
+    const std::string png = readBytes(dir / "chart.png");
     ASSERT_GT(png.size(), 8u);
     EXPECT_EQ(png.substr(1, 3), "PNG");
-    const std::string svg = readText(dir / "chart.svg");
+    const std::string svg = readBytes(dir / "chart.svg");
     EXPECT_NE(svg.find("<svg"), std::string::npos);
     for (const char* label : {"Pareto front", "mvr", "lfdpr SS 2v"})
         EXPECT_NE(svg.find(label), std::string::npos) << label;
@@ -145,7 +138,7 @@ TEST_F(BenchMatrixTest, StopRequestKeepsWhatFinished)
     o.onResult = [&](const player::BenchReport&) { ++finished; };
     o.shouldStop = [&] { return finished >= 2; };
     const player::BenchReport report =
-        player::runBenchmark(o, tinyProfile(), cubeAndSphereScene(), "scene.lfdpack", "test GL", progress);
+        player::runBenchmark(o, matrixProfile(), cubeAndSphereScene(), "scene.lfdpack", "test GL", progress);
     EXPECT_TRUE(report.interrupted);
     ASSERT_EQ(report.results.size(), 2u);
     EXPECT_EQ(report.results[0].name, "mvr");

@@ -5,6 +5,7 @@
 #include "gl_test_support.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
+#include "tool_run.h"
 
 #include "bench_report.h"
 #include "bench_runner.h"
@@ -41,14 +42,6 @@ BenchOptions options(std::vector<std::string> renderers)
     o.warmup = 1;
     o.quiet = true;
     return o;
-}
-
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
 }
 
 size_t countOf(const std::string& text, const std::string& needle)
@@ -285,7 +278,7 @@ TEST_F(BenchTest, WritesJsonCsvSvgAndImages)
     EXPECT_EQ(centre.width, profile.viewWidth);
     EXPECT_EQ(centre.pixels, images["mvr"].centre);
 
-    const nlohmann::json j = nlohmann::json::parse(readText(dir / "bench.json"));
+    const nlohmann::json j = nlohmann::json::parse(readBytes(dir / "bench.json"));
     EXPECT_EQ(j["gl"], "test GL");
     EXPECT_EQ(j["profile"]["views"], 4);
     EXPECT_EQ(j["options"]["frames"], 3);
@@ -300,12 +293,12 @@ TEST_F(BenchTest, WritesJsonCsvSvgAndImages)
     EXPECT_NEAR(j["renderers"][1]["quality"]["eia"]["rmse"].get<double>(), report.results[1].eia.rmse, 1e-12);
     EXPECT_TRUE(j["ratios"]["lfdpr_vs_mvr"].is_null());
 
-    const std::string csv = readText(dir / "bench.csv");
+    const std::string csv = readBytes(dir / "bench.csv");
     EXPECT_EQ(countOf(csv, "\n"), 3u); // header + one row per renderer
     EXPECT_EQ(csv.rfind("renderer,timed,frames,point_generation_ms", 0), 0u);
     EXPECT_NE(csv.find("\nmvr-layered,1,3,"), std::string::npos) << csv;
 
-    const std::string svg = readText(dir / "speed_vs_error.svg");
+    const std::string svg = readBytes(dir / "speed_vs_error.svg");
     EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
     EXPECT_EQ(svg.substr(svg.size() - 7), "</svg>\n");
     EXPECT_EQ(countOf(svg, "<circle"), 2u) << "one point per timed renderer";

@@ -4,6 +4,7 @@
 // the bundle's lfd-play renders what the build tree's does.
 #include "gl_test_support.h"
 #include "test_scenes.h"
+#include "tool_run.h"
 
 #include "image_metrics.h"
 #include "lfd/pack.h"
@@ -22,20 +23,6 @@ namespace lfd::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Runs `command` through the shell; its exit status and what it printed.
-std::pair<int, std::string> run(const std::string& command)
-{
-    std::string output;
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe)
-        return {-1, ""};
-    std::array<char, 4096> buffer{};
-    while (fgets(buffer.data(), int(buffer.size()), pipe))
-        output += buffer.data();
-    const int raw = pclose(pipe);
-    return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, output};
-}
 
 // The libraries ldd resolves for `binary` (name -> path; "not found" as the path).
 std::vector<std::pair<std::string, std::string>> resolvedLibraries(const std::string& lddOutput)

@@ -9,6 +9,7 @@
 #include "player_cli_fixture.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
+#include "tool_run.h"
 
 #include "eia_builder.h"
 #include "frame_uniforms.h"
@@ -42,43 +43,31 @@ namespace {
 namespace fs = std::filesystem;
 
 
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-struct RunResult {
+struct ToolResult {
     int status = -1;
     std::string out, err;
 };
 
-const fs::path kBench = fs::path(LFD_BINARY_DIR) / "player" / "lfd-bench";
-
 // `env`: "NAME=value " assignments put before the command (e.g. a PATH without ffmpeg).
-RunResult runTool(const fs::path& tool, const fs::path& dir, const std::string& args, const std::string& env = "")
+ToolResult runTool(const fs::path& tool, const fs::path& dir, const std::string& args, const std::string& env = "")
 {
     const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
     const std::string command = env + "'" + tool.string() + "' " + args + " > '" + out.string() + "' 2> '" +
                                 err.string() + "'";
-    RunResult r;
+    ToolResult r;
     const int raw = std::system(command.c_str());
     r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = readText(out);
-    r.err = readText(err);
+    r.out = readBytes(out);
+    r.err = readBytes(err);
     fs::remove(out);
     fs::remove(err);
     return r;
 }
 
-RunResult runPlay(const fs::path& dir, const std::string& args, const std::string& env = "")
+ToolResult runPlay(const fs::path& dir, const std::string& args, const std::string& env = "")
 {
     return runTool(kPlay, dir, args, env);
 }
-
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
 
 // Files in `dir` other than the inputs the test put there.
 std::vector<std::string> outputsIn(const fs::path& dir)
@@ -156,7 +145,7 @@ protected:
 // summary over the 3 frames, and the CSV's rows.
 void expectHeadlessStats(const fs::path& out)
 {
-    const nlohmann::json stats = nlohmann::json::parse(readText(out / "stats.json"));
+    const nlohmann::json stats = nlohmann::json::parse(readBytes(out / "stats.json"));
     for (const char* key : {"renderer", "views", "view_width", "view_height", "frames", "gpu", "view_generation_ms",
                             "eia_ms", "total_ms", "stages", "view_buffer_bytes", "panel_width", "panel_height",
                             "profile", "pack", "triangles", "drawn_triangles"})
@@ -182,7 +171,7 @@ void expectHeadlessStats(const fs::path& out)
     }
     EXPECT_GE(double(stats["total_ms"]), double(stats["view_generation_ms"]));
     // CSV: header + 3 frames x 3 stages.
-    const std::string csv = readText(out / "stats.csv");
+    const std::string csv = readBytes(out / "stats.csv");
     EXPECT_EQ(csv.rfind("frame,stage,ms\n", 0), 0u);
     EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 3 * 3);
 }
@@ -191,11 +180,11 @@ TEST_F(CliTest, HeadlessWritesEveryRequestedOutput)
 {
     const fs::path out = dir_ / "out";
     fs::create_directories(out);
-    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
-                                          " --views 4 --view-size 96x72 --frames 3 --out " + q(out / "eia.png") +
-                                          " --quilt " + q(out / "quilt.png") + " --views-out " + q(out / "views") +
-                                          " --stats " + q(out / "stats.json") + " --viewer-out " +
-                                          q(out / "viewer.png") + " --viewer-pos 1.5");
+    const ToolResult r = runPlay(dir_, "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
+                                          " --views 4 --view-size 96x72 --frames 3 --out " + quoted(out / "eia.png") +
+                                          " --quilt " + quoted(out / "quilt.png") + " --views-out " + quoted(out / "views") +
+                                          " --stats " + quoted(out / "stats.json") + " --viewer-out " +
+                                          quoted(out / "viewer.png") + " --viewer-pos 1.5");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("OpenGL"), std::string::npos) << "start-up line names the GL driver: " << r.out;
 
@@ -258,9 +247,9 @@ TEST_F(CliTest, LayeredRendererAndExplicitFrame)
     if (!caps().layerFromVertexShader)
         LFD_SKIP_OR_FAIL("driver lacks GL_ARB_shader_viewport_layer_array");
     const fs::path a = dir_ / "a", b = dir_ / "b";
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 64x48";
-    ASSERT_EQ(runPlay(dir_, common + " --renderer mvr --frames 1 --frame 30 --views-out " + q(a)).status, 0);
-    const RunResult r = runPlay(dir_, common + " --renderer mvr-layered --frames 2 --frame 30 --views-out " + q(b));
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 4 --view-size 64x48";
+    ASSERT_EQ(runPlay(dir_, common + " --renderer mvr --frames 1 --frame 30 --views-out " + quoted(a)).status, 0);
+    const ToolResult r = runPlay(dir_, common + " --renderer mvr-layered --frames 2 --frame 30 --views-out " + quoted(b));
     ASSERT_EQ(r.status, 0) << r.err;
     const DisplayProfile profile =
         tenthPrototypeProfile("cli-small", 4, 64, 48);
@@ -271,15 +260,15 @@ TEST_F(CliTest, LayeredRendererAndExplicitFrame)
     }
     // A different frame shows the turntable at another angle.
     const fs::path c = dir_ / "c";
-    ASSERT_EQ(runPlay(dir_, common + " --frames 1 --views-out " + q(c)).status, 0);
+    ASSERT_EQ(runPlay(dir_, common + " --frames 1 --views-out " + quoted(c)).status, 0);
     EXPECT_GT(metrics::rmse(metrics::readImage(a / "view_000.png"), metrics::readImage(c / "view_000.png")), 1.0);
 }
 
 TEST_F(CliTest, DefaultPrototypeProfileGivesAFullPanelEia)
 {
     const fs::path eia = dir_ / "eia.png", views = dir_ / "views";
-    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --views 8 --view-size 120x90 --out " + q(eia) +
-                                          " --views-out " + q(views));
+    const ToolResult r = runPlay(dir_, "--headless " + quoted(pack_) + " --views 8 --view-size 120x90 --out " + quoted(eia) +
+                                          " --views-out " + quoted(views));
     ASSERT_EQ(r.status, 0) << r.err;
     const metrics::Image image = metrics::readImage(eia, 4);
     EXPECT_EQ(image.width, 3840u);
@@ -311,16 +300,16 @@ TEST_F(CliTest, EnvironmentFileLightsTheScene)
         }
     const fs::path file = dir_ / "sky.hdr";
     metrics::writeHdrImage(file, sky);
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 96x72";
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 4 --view-size 96x72";
     auto render = [&](const std::string& flags, const std::string& name) {
-        const RunResult r = runPlay(dir_, common + " " + flags + " --views-out " + q(dir_ / name));
+        const ToolResult r = runPlay(dir_, common + " " + flags + " --views-out " + quoted(dir_ / name));
         EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
         return readView(dir_ / name, 1);
     };
-    const metrics::Image fromFile = render("--environment " + q(file), "sky");
+    const metrics::Image fromFile = render("--environment " + quoted(file), "sky");
     const metrics::Image neutral = render("", "neutral");
-    const metrics::Image turned = render("--environment " + q(file) + " --environment-rotation 120", "turned");
-    const metrics::Image brighter = render("--environment " + q(file) + " --exposure 1", "brighter");
+    const metrics::Image turned = render("--environment " + quoted(file) + " --environment-rotation 120", "turned");
+    const metrics::Image brighter = render("--environment " + quoted(file) + " --exposure 1", "brighter");
 
     player::FrameLighting lighting = toolDefaultLighting();
     const std::shared_ptr<const player::GpuEnvironment> uploaded =
@@ -348,45 +337,45 @@ TEST_F(CliTest, EnvironmentFileLightsTheScene)
 TEST_F(CliTest, BadInputFailsCleanly)
 {
     // A corrupt pack: a valid one with bytes flipped in the middle (checksums catch it).
-    std::string bytes = readText(pack_);
+    std::string bytes = readBytes(pack_);
     for (size_t i = bytes.size() / 2; i < bytes.size() / 2 + 16; ++i)
         bytes[i] = char(~bytes[i]);
     std::ofstream(dir_ / "corrupt.lfdpack", std::ios::binary) << bytes;
     std::ofstream(dir_ / "bad_profile.json") << R"({"format": "lfd-display-profile/1", "panel_width": 0})";
     std::ofstream(dir_ / "not_an_hdr.hdr") << "#?NOT RADIANCE\n";
 
-    const std::string outputs = " --out " + q(dir_ / "eia.png") + " --quilt " + q(dir_ / "quilt.png") +
-                                " --views-out " + q(dir_ / "views") + " --stats " + q(dir_ / "stats.json");
-    const std::string small = " --display " + q(profile_) + " --views 4 --view-size 64x48";
+    const std::string outputs = " --out " + quoted(dir_ / "eia.png") + " --quilt " + quoted(dir_ / "quilt.png") +
+                                " --views-out " + quoted(dir_ / "views") + " --stats " + quoted(dir_ / "stats.json");
+    const std::string small = " --display " + quoted(profile_) + " --views 4 --view-size 64x48";
     const std::pair<std::string, std::string> cases[] = {
-        {"--headless " + q(dir_ / "missing.lfdpack") + small + outputs, "missing.lfdpack"},
-        {"--headless " + q(dir_ / "corrupt.lfdpack") + small + outputs, "corrupt.lfdpack"},
-        {"--headless " + q(pack_) + " --display " + q(profile_) + " --view-size 96x" + outputs, "--view-size"},
-        {"--headless " + q(pack_) + small + " --renderer warp-drive" + outputs, "warp-drive"},
-        {"--headless " + q(pack_) + " --display " + q(dir_ / "bad_profile.json") + outputs, "bad_profile.json"},
-        {"--headless " + q(pack_) + small + " --views 0" + outputs, "--views"},
-        {"--headless " + q(pack_) + small + " --frames 0" + outputs, "--frames"},
-        {"--headless " + q(pack_) + small + " --out " + q(dir_ / "no_such_dir" / "eia.png"), "no_such_dir"},
-        {"--headless " + q(pack_) + small + " --bogus-flag", "--bogus-flag"},
-        {"--headless " + q(pack_) + small + " --environment " + q(dir_ / "no_sky.hdr") + outputs, "no_sky.hdr"},
-        {"--headless " + q(pack_) + small + " --environment " + q(dir_ / "not_an_hdr.hdr") + outputs, "not_an_hdr.hdr"},
-        {"--headless " + q(pack_) + small + " --tone-map aces" + outputs, "--tone-map"},
-        {"--headless " + q(pack_) + small + " --exposure inf" + outputs, "--exposure"},
+        {"--headless " + quoted(dir_ / "missing.lfdpack") + small + outputs, "missing.lfdpack"},
+        {"--headless " + quoted(dir_ / "corrupt.lfdpack") + small + outputs, "corrupt.lfdpack"},
+        {"--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --view-size 96x" + outputs, "--view-size"},
+        {"--headless " + quoted(pack_) + small + " --renderer warp-drive" + outputs, "warp-drive"},
+        {"--headless " + quoted(pack_) + " --display " + quoted(dir_ / "bad_profile.json") + outputs, "bad_profile.json"},
+        {"--headless " + quoted(pack_) + small + " --views 0" + outputs, "--views"},
+        {"--headless " + quoted(pack_) + small + " --frames 0" + outputs, "--frames"},
+        {"--headless " + quoted(pack_) + small + " --out " + quoted(dir_ / "no_such_dir" / "eia.png"), "no_such_dir"},
+        {"--headless " + quoted(pack_) + small + " --bogus-flag", "--bogus-flag"},
+        {"--headless " + quoted(pack_) + small + " --environment " + quoted(dir_ / "no_sky.hdr") + outputs, "no_sky.hdr"},
+        {"--headless " + quoted(pack_) + small + " --environment " + quoted(dir_ / "not_an_hdr.hdr") + outputs, "not_an_hdr.hdr"},
+        {"--headless " + quoted(pack_) + small + " --tone-map aces" + outputs, "--tone-map"},
+        {"--headless " + quoted(pack_) + small + " --exposure inf" + outputs, "--exposure"},
         // Beyond GL limits (docs/player/quilts.md "8K panels"): refused before anything is
         // allocated.
-        {"--headless " + q(pack_) + " --display " + q(profile_) + " --views 100000 --view-size 64x48" + outputs,
+        {"--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 100000 --view-size 64x48" + outputs,
          "--views"},
-        {"--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 100000x16" + outputs,
+        {"--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 4 --view-size 100000x16" + outputs,
          "view_width"},
         // Within the profile's rules but past the driver's (frame_limits.h, docs/player/quilts.md
         // "8K panels"): 2^29 lfdpr view-buffer texels against llvmpipe's 2^27 (any driver's is
         // below 2^29).
-        {"--headless " + q(pack_) + " --display " + q(profile_) + " --renderer lfdpr --views 8 --view-size 8192x8192" +
+        {"--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --renderer lfdpr --views 8 --view-size 8192x8192" +
              outputs,
          "GL_MAX_TEXTURE_BUFFER_SIZE"},
     };
     for (const auto& [args, culprit] : cases) {
-        const RunResult r = runPlay(dir_, args);
+        const ToolResult r = runPlay(dir_, args);
         EXPECT_NE(r.status, 0) << args;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected: " << r.err;
         EXPECT_NE(r.err.find(culprit), std::string::npos) << "error must name " << culprit << ": " << r.err;
@@ -404,9 +393,9 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
 {
     const fs::path out = dir_ / "out";
     fs::create_directories(out);
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 96x72";
-    const RunResult r = runPlay(dir_, common + " --renderer lfdpr --stats " + q(out / "lfdpr.json") + " --out " +
-                                          q(out / "lfdpr_eia.png") + " --views-out " + q(out / "lfdpr_views"));
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 4 --view-size 96x72";
+    const ToolResult r = runPlay(dir_, common + " --renderer lfdpr --stats " + quoted(out / "lfdpr.json") + " --out " +
+                                          quoted(out / "lfdpr_eia.png") + " --views-out " + quoted(out / "lfdpr_views"));
     ASSERT_EQ(r.status, 0) << r.err;
     // Content: lfdpr's frame 0 rendered here (identical on llvmpipe). RMSE rather than
     // equality: a driver's 32-bit visibility path may resolve a depth tie to either point
@@ -424,7 +413,7 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
     std::printf("[ numbers  ] lfd-play --renderer lfdpr: EIA RMSE %.3f, max difference %d against lfdpr here\n",
                 metrics::rmse(eia, reference.eia), metrics::maxAbsDiff(eia, reference.eia));
     EXPECT_LT(metrics::rmse(eia, reference.eia), 1.0);
-    const nlohmann::json stats = nlohmann::json::parse(readText(out / "lfdpr.json"));
+    const nlohmann::json stats = nlohmann::json::parse(readBytes(out / "lfdpr.json"));
     for (const char* key : {"points", "bytes_per_point", "point_generation_ms", "view_generation_ms", "eia_ms",
                             "total_ms", "point_buffer_bytes", "view_buffer_bytes", "atomics"})
         EXPECT_TRUE(stats.contains(key)) << key;
@@ -432,12 +421,12 @@ TEST_F(CliTest, LfdprRendererWithAblationFlagsWritesItsStats)
     EXPECT_GT(stats["points"].get<double>(), 0.0);
 
     // Isotropic sampling (the LFD-biased innovation off) needs more points on the same frame.
-    const RunResult iso = runPlay(dir_, common + " --renderer lfdpr --no-lfd-sampling --stats " + q(out / "iso.json"));
+    const ToolResult iso = runPlay(dir_, common + " --renderer lfdpr --no-lfd-sampling --stats " + quoted(out / "iso.json"));
     ASSERT_EQ(iso.status, 0) << iso.err;
-    const nlohmann::json isoStats = nlohmann::json::parse(readText(out / "iso.json"));
+    const nlohmann::json isoStats = nlohmann::json::parse(readBytes(out / "iso.json"));
     EXPECT_GT(isoStats["points"].get<double>(), stats["points"].get<double>());
 
-    const RunResult bad = runPlay(dir_, common + " --renderer lfdpr --atomics 16");
+    const ToolResult bad = runPlay(dir_, common + " --renderer lfdpr --atomics 16");
     EXPECT_NE(bad.status, 0);
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
 }
@@ -449,14 +438,14 @@ TEST_F(CliTest, WorkCountersArePerFrameInTheStatsWorkCsv)
 {
     const fs::path out = dir_ / "out";
     fs::create_directories(out);
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) +
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
                                " --views 4 --view-size 96x72 --frames 3 --lfdpr-work-counters";
     for (const char* renderer : {"lfdpr", "mvr"}) {
         const fs::path json = out / (std::string(renderer) + ".json");
-        const RunResult r = runPlay(dir_, common + " --renderer " + renderer + " --stats " + q(json));
+        const ToolResult r = runPlay(dir_, common + " --renderer " + renderer + " --stats " + quoted(json));
         ASSERT_EQ(r.status, 0) << r.err;
-        const nlohmann::json stats = nlohmann::json::parse(readText(json));
-        std::istringstream csv(readText(out / (std::string(renderer) + ".work.csv")));
+        const nlohmann::json stats = nlohmann::json::parse(readBytes(json));
+        std::istringstream csv(readBytes(out / (std::string(renderer) + ".work.csv")));
         std::string header, row;
         std::getline(csv, header);
         std::vector<std::string> names;
@@ -494,9 +483,9 @@ TEST_F(CliTest, WorkCountersArePerFrameInTheStatsWorkCsv)
             EXPECT_EQ(rows.front()[column], rows.back()[column]);
     }
     // Without the counters there is no work file.
-    const RunResult plain = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+    const ToolResult plain = runPlay(dir_, "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
                                               " --views 4 --view-size 96x72 --renderer lfdpr --stats " +
-                                              q(out / "plain.json"));
+                                              quoted(out / "plain.json"));
     ASSERT_EQ(plain.status, 0) << plain.err;
     EXPECT_FALSE(fs::exists(out / "plain.work.csv"));
 }
@@ -505,11 +494,11 @@ TEST_F(CliTest, GstdRendererHeadlessWithFactor)
 {
     const fs::path out = dir_ / "out";
     fs::create_directories(out);
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 96x72";
-    const RunResult r = runPlay(dir_, common + " --renderer gstd --gstd-factor 2 --stats " + q(out / "gstd.json") +
-                                          " --views-out " + q(out / "gstd_views"));
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 4 --view-size 96x72";
+    const ToolResult r = runPlay(dir_, common + " --renderer gstd --gstd-factor 2 --stats " + quoted(out / "gstd.json") +
+                                          " --views-out " + quoted(out / "gstd_views"));
     ASSERT_EQ(r.status, 0) << r.err;
-    const nlohmann::json stats = nlohmann::json::parse(readText(out / "gstd.json"));
+    const nlohmann::json stats = nlohmann::json::parse(readBytes(out / "gstd.json"));
     EXPECT_EQ(stats["renderer"], "gstd");
     EXPECT_EQ(stats["gstd_factor"], 2.0);
     EXPECT_EQ(stats["gstd_samples"], 32.0);
@@ -524,13 +513,13 @@ TEST_F(CliTest, GstdRendererHeadlessWithFactor)
     for (uint32_t v = 0; v < 4; ++v)
         EXPECT_EQ(imageMismatch(readView(out / "gstd_views", v), reference.views[v], 1), "") << "view " << v;
 
-    const RunResult bad = runPlay(dir_, common + " --renderer gstd --gstd-factor 0");
+    const ToolResult bad = runPlay(dir_, common + " --renderer gstd --gstd-factor 0");
     EXPECT_NE(bad.status, 0);
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
     EXPECT_NE(bad.err.find("--gstd-factor"), std::string::npos) << bad.err;
     for (const auto& [flags, named] : {std::pair{" --gstd-model light", "--gstd-model"},
                                        std::pair{" --gstd-sub-views 17", "--gstd-sub-views"}}) {
-        const RunResult refused = runPlay(dir_, common + " --renderer gstd" + flags);
+        const ToolResult refused = runPlay(dir_, common + " --renderer gstd" + flags);
         EXPECT_NE(refused.status, 0) << flags;
         EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
         EXPECT_NE(refused.err.find(named), std::string::npos) << refused.err;
@@ -544,17 +533,17 @@ TEST_F(CliTest, GstdModelsFromTheCommandLine)
 {
     const fs::path out = dir_ / "out";
     fs::create_directories(out);
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 48x36" +
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 4 --view-size 48x36" +
                                " --renderer gstd --gstd-factor 2";
     const DisplayProfile profile =
         tenthPrototypeProfile("cli-small", 4, 48, 36);
     for (const player::GstdModel model : {player::GstdModel::Panel, player::GstdModel::Views}) {
         const std::string name = player::gstdModelName(model);
         const fs::path eia = out / (name + "_eia.png"), stats = out / (name + ".json");
-        const RunResult r = runPlay(dir_, common + " --gstd-model " + name + " --gstd-sub-views 3 --out " + q(eia) +
-                                              " --stats " + q(stats));
+        const ToolResult r = runPlay(dir_, common + " --gstd-model " + name + " --gstd-sub-views 3 --out " + quoted(eia) +
+                                              " --stats " + quoted(stats));
         ASSERT_EQ(r.status, 0) << r.err;
-        const nlohmann::json json = nlohmann::json::parse(readText(stats));
+        const nlohmann::json json = nlohmann::json::parse(readBytes(stats));
         EXPECT_EQ(json["gstd_sub_views"], 3.0) << name;
         EXPECT_EQ(json["gstd_model_panel"], model == player::GstdModel::Panel ? 1.0 : 0.0) << name;
         player::GstdOptions options;
@@ -570,11 +559,11 @@ TEST_F(CliTest, GstdModelsFromTheCommandLine)
 
 TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
 {
-    ASSERT_TRUE(fs::exists(kBench)) << kBench << " not built (build target lfd-bench)";
+    ASSERT_TRUE(fs::exists(kBenchTool)) << kBenchTool << " not built (build target lfd-bench)";
     const fs::path out = dir_ / "bench";
-    const RunResult r = runTool(kBench, dir_, q(pack_) + " --display " + q(profile_) +
-                                                  " --views 4 --view-size 96x72 --frames 2 --warmup 1 --out " + q(out) +
-                                                  " --gstd-cache " + q(dir_ / "gstd-cache"));
+    const ToolResult r = runTool(kBenchTool, dir_, quoted(pack_) + " --display " + quoted(profile_) +
+                                                  " --views 4 --view-size 96x72 --frames 2 --warmup 1 --out " + quoted(out) +
+                                                  " --gstd-cache " + quoted(dir_ / "gstd-cache"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("gstd: quality frame rendered"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("lfdpr/mvr total-time ratio:"), std::string::npos) << r.out;
@@ -592,7 +581,7 @@ TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
     const double lfdprRmse = metrics::rmse(lfdprEia, mvr.eia);
     std::printf("[ numbers  ] lfd-bench EIA RMSE: lfdpr against mvr rendered here %.3f\n", lfdprRmse);
     EXPECT_LT(lfdprRmse, 3.0) << "lfdpr against mvr";
-    const nlohmann::json bench = nlohmann::json::parse(readText(out / "bench.json"));
+    const nlohmann::json bench = nlohmann::json::parse(readBytes(out / "bench.json"));
     EXPECT_FALSE(bench.dump().find("\"lfdpr\"") == std::string::npos) << "bench.json names lfdpr";
     // gstd is the default reference; every renderer's quality carries FLIP next to RMSE, SSIM.
     EXPECT_EQ(bench["options"]["reference"], "gstd");
@@ -604,18 +593,18 @@ TEST_F(CliTest, BenchPrintsRatiosAndWritesResults)
         }
     }
     // The second run takes gstd's views from the cache; --reference mvr still works.
-    const RunResult again = runTool(kBench, dir_, q(pack_) + " --display " + q(profile_) +
+    const ToolResult again = runTool(kBenchTool, dir_, quoted(pack_) + " --display " + quoted(profile_) +
                                                       " --views 4 --view-size 96x72 --frames 1 --warmup 0 --renderers mvr"
-                                                      " --gstd-cache " + q(dir_ / "gstd-cache"));
+                                                      " --gstd-cache " + quoted(dir_ / "gstd-cache"));
     ASSERT_EQ(again.status, 0) << again.err;
     EXPECT_NE(again.out.find("quality frame from the gstd cache"), std::string::npos) << again.out;
-    const RunResult vsMvr = runTool(kBench, dir_, q(pack_) + " --display " + q(profile_) +
+    const ToolResult vsMvr = runTool(kBenchTool, dir_, quoted(pack_) + " --display " + quoted(profile_) +
                                                       " --views 4 --view-size 96x72 --frames 1 --warmup 0"
                                                       " --renderers lfdpr --reference mvr");
     ASSERT_EQ(vsMvr.status, 0) << vsMvr.err;
     EXPECT_NE(vsMvr.out.find("against mvr"), std::string::npos) << vsMvr.out;
 
-    const RunResult missing = runTool(kBench, dir_, q(dir_ / "missing.lfdpack"));
+    const ToolResult missing = runTool(kBenchTool, dir_, quoted(dir_ / "missing.lfdpack"));
     EXPECT_NE(missing.status, 0);
     EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
     EXPECT_NE(missing.err.find("missing.lfdpack"), std::string::npos) << missing.err;
@@ -654,14 +643,14 @@ TEST_F(CliTest, QuiltWrittenAndReadBackGivesTheDirectEia)
         const fs::path out = dir_ / ("round_trip_" + std::to_string(views));
         fs::create_directories(out);
         const std::string tag = "q" + std::to_string(views);
-        const RunResult direct = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) + " --views " +
+        const ToolResult direct = runPlay(dir_, "--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views " +
                                                    std::to_string(views) + " --view-size 96x72 --frame 20 --out " +
-                                                   q(out / "direct.png") + " --quilt " + q(out / (tag + ".png")));
+                                                   quoted(out / "direct.png") + " --quilt " + quoted(out / (tag + ".png")));
         ASSERT_EQ(direct.status, 0) << direct.err;
         const fs::path quilt = out / (quiltPrefix + ".png");
         ASSERT_TRUE(fs::exists(quilt)) << quilt;
-        const RunResult back = runPlay(dir_, "--headless --quilt-in " + q(quilt) + " --display " + q(profile_) +
-                                                 extra + " --out " + q(out / "back.png"));
+        const ToolResult back = runPlay(dir_, "--headless --quilt-in " + quoted(quilt) + " --display " + quoted(profile_) +
+                                                 extra + " --out " + quoted(out / "back.png"));
         ASSERT_EQ(back.status, 0) << back.err;
         const metrics::Image a = metrics::readImage(out / "direct.png"), b = metrics::readImage(out / "back.png");
         ASSERT_EQ(a.width, b.width);
@@ -673,10 +662,10 @@ TEST_F(CliTest, QuiltWrittenAndReadBackGivesTheDirectEia)
 // hand-worked projections in camera_controls_test.cpp).
 TEST_F(CliTest, CameraFlagsChangeTheViewsAsDocumented)
 {
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) +
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
                                " --views 4 --view-size 96x72 --no-turntable --views-out ";
     auto render = [&](const std::string& name, const std::string& flags) {
-        const RunResult r = runPlay(dir_, common + q(dir_ / name) + " " + flags);
+        const ToolResult r = runPlay(dir_, common + quoted(dir_ / name) + " " + flags);
         EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
         return std::array<metrics::Image, 2>{metrics::readImage(dir_ / name / "view_000.png"),
                                             metrics::readImage(dir_ / name / "view_003.png")};
@@ -714,10 +703,10 @@ TEST_F(CliTest, AnimatedQuiltSequenceAndVideo)
 {
     const fs::path out = dir_ / "anim";
     fs::create_directories(out);
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) +
-                               " --views 12 --view-size 96x72 --frames 3 --fps 4 --quilt " + q(out / "spin.png");
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
+                               " --views 12 --view-size 96x72 --frames 3 --fps 4 --quilt " + quoted(out / "spin.png");
     const bool haveFfmpeg = !player::findOnPath("ffmpeg").empty();
-    const RunResult r = runPlay(dir_, common + (haveFfmpeg ? " --quilt-video " + q(out / "spin.mp4") : ""));
+    const ToolResult r = runPlay(dir_, common + (haveFfmpeg ? " --quilt-video " + quoted(out / "spin.mp4") : ""));
     ASSERT_EQ(r.status, 0) << r.err;
     std::vector<metrics::Image> frames;
     for (const char* name : {"spin_0000_qs4x3a1.78.png", "spin_0001_qs4x3a1.78.png", "spin_0002_qs4x3a1.78.png"}) {
@@ -730,9 +719,9 @@ TEST_F(CliTest, AnimatedQuiltSequenceAndVideo)
         ASSERT_TRUE(fs::exists(video)) << r.out;
         EXPECT_GT(fs::file_size(video), 1000u);
         if (!player::findOnPath("ffprobe").empty()) {
-            const RunResult probe = runTool(player::findOnPath("ffprobe"), out,
+            const ToolResult probe = runTool(player::findOnPath("ffprobe"), out,
                                             "-v error -count_frames -select_streams v:0 -show_entries "
-                                            "stream=nb_read_frames,width,height,codec_name -of csv=p=0 " + q(video));
+                                            "stream=nb_read_frames,width,height,codec_name -of csv=p=0 " + quoted(video));
             EXPECT_EQ(probe.out, "h264,384,216,3\n") << probe.err;
         }
     } else {
@@ -742,10 +731,10 @@ TEST_F(CliTest, AnimatedQuiltSequenceAndVideo)
     // No ffmpeg on PATH: the sequence is written, the video step fails with one line.
     const fs::path noFfmpeg = dir_ / "no_ffmpeg";
     fs::create_directories(noFfmpeg);
-    const RunResult missing = runPlay(dir_,
-                                      "--headless " + q(pack_) + " --display " + q(profile_) +
-                                          " --views 12 --view-size 96x72 --frames 2 --quilt " + q(noFfmpeg / "s.png") +
-                                          " --quilt-video " + q(noFfmpeg / "s.mp4"),
+    const ToolResult missing = runPlay(dir_,
+                                      "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
+                                          " --views 12 --view-size 96x72 --frames 2 --quilt " + quoted(noFfmpeg / "s.png") +
+                                          " --quilt-video " + quoted(noFfmpeg / "s.mp4"),
                                       "PATH=/nonexistent ");
     EXPECT_EQ(missing.status, 1);
     EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
@@ -755,8 +744,8 @@ TEST_F(CliTest, AnimatedQuiltSequenceAndVideo)
     // A video alone (no --quilt to keep) fails before rendering and leaves nothing.
     const fs::path videoOnly = dir_ / "video_only";
     fs::create_directories(videoOnly);
-    const RunResult early = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
-                                              " --views 4 --view-size 96x72 --quilt-video " + q(videoOnly / "v.mp4"),
+    const ToolResult early = runPlay(dir_, "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
+                                              " --views 4 --view-size 96x72 --quilt-video " + quoted(videoOnly / "v.mp4"),
                                     "PATH=/nonexistent ");
     EXPECT_EQ(early.status, 1);
     EXPECT_NE(early.err.find("ffmpeg is missing"), std::string::npos) << early.err;
@@ -769,19 +758,19 @@ TEST_F(CliTest, PreviewRendersFewerSmallerViewsIntoTheFullPanel)
 {
     const fs::path out = dir_ / "preview";
     fs::create_directories(out);
-    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+    const ToolResult r = runPlay(dir_, "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
                                           " --views 8 --view-size 96x72 --preview always --stats " +
-                                          q(out / "s.json") + " --out " + q(out / "eia.png"));
+                                          quoted(out / "s.json") + " --out " + quoted(out / "eia.png"));
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("(preview), 4 views of 48x36"), std::string::npos) << r.out;
-    const nlohmann::json stats = nlohmann::json::parse(readText(out / "s.json"));
+    const nlohmann::json stats = nlohmann::json::parse(readBytes(out / "s.json"));
     EXPECT_EQ(stats["views"], 4);
     EXPECT_EQ(stats["view_width"], 48);
     const metrics::Image eia = metrics::readImage(out / "eia.png");
     EXPECT_EQ(eia.width, 384u);
     EXPECT_EQ(eia.height, 216u);
     // Three views at a third of the size with --preview-view-step 3 --preview-size-divisor 3.
-    const RunResult custom = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+    const ToolResult custom = runPlay(dir_, "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
                                                " --views 8 --view-size 96x72 --preview always --preview-view-step 3"
                                                " --preview-size-divisor 3");
     ASSERT_EQ(custom.status, 0) << custom.err;
@@ -791,14 +780,14 @@ TEST_F(CliTest, PreviewRendersFewerSmallerViewsIntoTheFullPanel)
 TEST_F(CliTest, DisplayDrivingBadInputFailsCleanly)
 {
     std::ofstream(dir_ / "plain.png") << "not a quilt";
-    const std::string small = " --display " + q(profile_) + " --views 4 --view-size 64x48 --out " + q(dir_ / "e.png");
-    const std::string pack = "--headless " + q(pack_) + small;
+    const std::string small = " --display " + quoted(profile_) + " --views 4 --view-size 64x48 --out " + quoted(dir_ / "e.png");
+    const std::string pack = "--headless " + quoted(pack_) + small;
     const std::pair<std::string, std::string> cases[] = {
-        {"--headless --quilt-in " + q(dir_ / "missing_qs2x2a1.png") + " --display " + q(profile_), "missing_qs2x2a1.png"},
-        {"--headless --quilt-in " + q(dir_ / "plain.png") + " --display " + q(profile_), "plain.png"},
-        {pack + " --quilt-in " + q(dir_ / "x_qs2x2a1.png"), "--quilt-in"},
-        {"--headless --quilt-in " + q(dir_ / "x_qs2x2a1.png") + small, "--views"},
-        {"--headless --display " + q(profile_), "PACK"},
+        {"--headless --quilt-in " + quoted(dir_ / "missing_qs2x2a1.png") + " --display " + quoted(profile_), "missing_qs2x2a1.png"},
+        {"--headless --quilt-in " + quoted(dir_ / "plain.png") + " --display " + quoted(profile_), "plain.png"},
+        {pack + " --quilt-in " + quoted(dir_ / "x_qs2x2a1.png"), "--quilt-in"},
+        {"--headless --quilt-in " + quoted(dir_ / "x_qs2x2a1.png") + small, "--views"},
+        {"--headless --display " + quoted(profile_), "PACK"},
         {pack + " --monitor 1", "--monitor"},
         {pack + " --fullscreen", "--fullscreen"},
         {pack + " --orbit 30", "--orbit"},
@@ -807,13 +796,13 @@ TEST_F(CliTest, DisplayDrivingBadInputFailsCleanly)
         {pack + " --zoom 0", "--zoom"},
         {pack + " --preview sometimes", "--preview"},
         {pack + " --preview-view-step 0", "--preview-view-step"},
-        {pack + " --quilt-video " + q(dir_ / "clip.avi"), "--quilt-video"},
-        {q(pack_) + small + " --quilt-video " + q(dir_ / "clip.mp4"), "--quilt-video: needs --headless"},
-        {"--headless " + q(pack_) + " --display " + q(profile_) + " --out " + q(dir_ / "e_%s.png"), "--out"},
-        {"--quilt-in " + q(dir_ / "x_qs2x2a1.mp4") + " --display " + q(profile_) + " --quilt-frame 1", "--quilt-frame"},
+        {pack + " --quilt-video " + quoted(dir_ / "clip.avi"), "--quilt-video"},
+        {quoted(pack_) + small + " --quilt-video " + quoted(dir_ / "clip.mp4"), "--quilt-video: needs --headless"},
+        {"--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --out " + quoted(dir_ / "e_%s.png"), "--out"},
+        {"--quilt-in " + quoted(dir_ / "x_qs2x2a1.mp4") + " --display " + quoted(profile_) + " --quilt-frame 1", "--quilt-frame"},
     };
     for (const auto& [args, culprit] : cases) {
-        const RunResult r = runPlay(dir_, args);
+        const ToolResult r = runPlay(dir_, args);
         EXPECT_NE(r.status, 0) << args;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line expected: " << r.err;
         EXPECT_NE(r.err.find(culprit), std::string::npos) << "error must name " << culprit << ": " << r.err;
@@ -827,26 +816,26 @@ TEST_F(CliTest, QuiltLayoutFlagWritesAndReadsOtherLayouts)
 {
     const fs::path out = dir_ / "layout";
     fs::create_directories(out);
-    const std::string common = "--headless " + q(pack_) + " --display " + q(profile_) + " --views 12 --view-size 96x72";
-    const RunResult direct = runPlay(dir_, common + " --frame 20 --out " + q(out / "direct.png") + " --quilt " +
-                                               q(out / "q.png") + " --quilt-layout 6x2a2");
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 12 --view-size 96x72";
+    const ToolResult direct = runPlay(dir_, common + " --frame 20 --out " + quoted(out / "direct.png") + " --quilt " +
+                                               quoted(out / "q.png") + " --quilt-layout 6x2a2");
     ASSERT_EQ(direct.status, 0) << direct.err;
     const fs::path written = out / "q_qs6x2a2.png";
     ASSERT_TRUE(fs::exists(written));
     EXPECT_EQ(metrics::readImage(written).width, 6u * 96u);
-    const RunResult tooFew = runPlay(dir_, common + " --quilt " + q(out / "few.png") + " --quilt-layout 3x3");
+    const ToolResult tooFew = runPlay(dir_, common + " --quilt " + quoted(out / "few.png") + " --quilt-layout 3x3");
     EXPECT_EQ(tooFew.status, 1);
     EXPECT_NE(tooFew.err.find("fewer tiles"), std::string::npos) << tooFew.err;
 
     fs::copy_file(written, out / "old_qs6x2.png");
     for (const std::string& flags : {std::string(""), std::string(" --quilt-layout 6x2a1.78")}) {
-        const RunResult back = runPlay(dir_, "--headless --quilt-in " + q(out / "old_qs6x2.png") + " --display " +
-                                                 q(profile_) + flags + " --out " + q(out / "back.png"));
+        const ToolResult back = runPlay(dir_, "--headless --quilt-in " + quoted(out / "old_qs6x2.png") + " --display " +
+                                                 quoted(profile_) + flags + " --out " + quoted(out / "back.png"));
         ASSERT_EQ(back.status, 0) << back.err;
         const metrics::Image a = metrics::readImage(out / "direct.png"), b = metrics::readImage(out / "back.png");
         EXPECT_EQ(metrics::maxAbsDiff(a, b), 0) << flags;
     }
-    const RunResult bad = runPlay(dir_, common + " --quilt-layout 6by2");
+    const ToolResult bad = runPlay(dir_, common + " --quilt-layout 6by2");
     EXPECT_EQ(bad.status, 2);
     EXPECT_NE(bad.err.find("--quilt-layout"), std::string::npos) << bad.err;
 }
@@ -855,15 +844,15 @@ TEST_F(CliTest, QuiltLayoutFlagWritesAndReadsOtherLayouts)
 // written and which flags write; --help says --quilt-video needs --headless.
 TEST_F(CliTest, HeadlessWithoutOutputsSaysNothingWasWritten)
 {
-    const RunResult r = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
+    const ToolResult r = runPlay(dir_, "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
                                           " --views 4 --view-size 64x48");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("lfd-play: no output written (timing only; --out"), std::string::npos) << r.out;
     EXPECT_TRUE(outputsIn(dir_).empty());
-    const RunResult withOutput = runPlay(dir_, "--headless " + q(pack_) + " --display " + q(profile_) +
-                                                   " --views 4 --view-size 64x48 --out " + q(dir_ / "e.png"));
+    const ToolResult withOutput = runPlay(dir_, "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
+                                                   " --views 4 --view-size 64x48 --out " + quoted(dir_ / "e.png"));
     EXPECT_EQ(withOutput.out.find("no output written"), std::string::npos) << withOutput.out;
-    const RunResult help = runPlay(dir_, "--help");
+    const ToolResult help = runPlay(dir_, "--help");
     EXPECT_NE(help.out.find("headless only (--headless)"), std::string::npos);
 }
 
@@ -878,8 +867,8 @@ TEST_F(CliTest, PackBakedForAnotherDisplayWarns)
     scene.settings.viewCount = 48;
     const fs::path other = dir_ / "other.lfdpack";
     writePack(other, scene);
-    const std::string args = " --display " + q(profile_) + " --views 4 --view-size 64x48";
-    const RunResult r = runPlay(dir_, "--headless " + q(other) + args);
+    const std::string args = " --display " + quoted(profile_) + " --views 4 --view-size 64x48";
+    const ToolResult r = runPlay(dir_, "--headless " + quoted(other) + args);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find("lfd-play: warning: other.lfdpack: its tessellation bound (100 view pixels) was made for "
@@ -891,7 +880,7 @@ TEST_F(CliTest, PackBakedForAnotherDisplayWarns)
     scene.settings.viewWidth = 64;
     scene.settings.viewHeight = 48;
     writePack(other, scene);
-    const RunResult same = runPlay(dir_, "--headless " + q(other) + args);
+    const ToolResult same = runPlay(dir_, "--headless " + quoted(other) + args);
     EXPECT_EQ(same.err, "");
 }
 

@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 
 class CompressedTextureTest : public GlTest {};
 
-DisplayProfile smallProfile() { return withViews(prototypeDisplayProfile(), 4, 64, 48); }
+DisplayProfile textureProfile() { return withViews(prototypeDisplayProfile(), 4, 64, 48); }
 
 // A level-0 pattern with a box-filtered chain (byte averages, as the checker does).
 Texture patternTexture(uint32_t size, bool srgb, const std::function<glm::u8vec4(uint32_t, uint32_t)>& texel)
@@ -109,7 +109,7 @@ player::FrameOutputs render(const std::string& renderer, const Scene& scene)
     // gstd at 1x and 4 samples: the texture comparison needs its sampling path, not its
     // convergence (its defaults took 4.5 s a frame on llvmpipe here, this about 1.3 s).
     options.rendererOptions = quickGstdOptions();
-    player::PlayerSession session(options, smallProfile(), scene, "compressed");
+    player::PlayerSession session(options, textureProfile(), scene, "compressed");
     session.renderFrame(0.0);
     return session.readOutputs(0);
 }
@@ -165,8 +165,8 @@ TEST_F(CompressedTextureTest, GpuHoldsTheCompressedBytes)
     const Scene rgba8 = materialScene();
     const Scene blocks = blockCompressed(rgba8);
     player::PlayOptions options;
-    player::PlayerSession a(options, smallProfile(), rgba8, "rgba8");
-    player::PlayerSession b(options, smallProfile(), blocks, "blocks");
+    player::PlayerSession a(options, textureProfile(), rgba8, "rgba8");
+    player::PlayerSession b(options, textureProfile(), blocks, "blocks");
     uint64_t rgbaBytes = 0, blockBytes = 0;
     for (size_t t = 0; t < rgba8.textures.size(); ++t) {
         rgbaBytes += rgba8.textures[t].texels.size();
@@ -216,11 +216,11 @@ TEST_F(CompressedTextureTest, StreamedBlockRowsRenderLikeTheEagerUpload)
         EXPECT_TRUE(anyZstd);
     }
     player::PlayOptions options;
-    player::PlayerSession eager(options, smallProfile(), readPack(path), "eager");
+    player::PlayerSession eager(options, textureProfile(), readPack(path), "eager");
     eager.renderFrame(0.0);
     const player::FrameOutputs want = eager.readOutputs(0);
     options.streamChunkBytes = 4096; // a 64-wide BC5 level is 256 bytes per block row: partial levels
-    player::PlayerSession streamed(options, smallProfile(), std::make_shared<MappedPack>(path), "streamed");
+    player::PlayerSession streamed(options, textureProfile(), std::make_shared<MappedPack>(path), "streamed");
     streamed.streamer()->untilResident();
     EXPECT_EQ(streamed.scene().gpuBytes(), eager.scene().gpuBytes());
     streamed.renderFrame(0.0);

@@ -8,6 +8,7 @@
 #include "gl_test_support.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
+#include "tool_run.h"
 #include "xvfb_support.h"
 
 #include "image_metrics.h"
@@ -34,15 +35,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kPlay = fs::path(LFD_BINARY_DIR) / "player" / "lfd-play";
-
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-
-std::string readText(const fs::path& path)
-{
-    std::ifstream in(path);
-    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 // Where two screen captures differ: how many pixels, and their bounding box.
 struct Difference {
@@ -92,7 +84,7 @@ protected:
         dir_ = testOutputDir(std::string("display_") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         writePack(dir_ / "scene.lfdpack", cubeAndSphereScene());
         std::ofstream(dir_ / "panel.json") << tenthPrototypeProfileJson("panel-384");
-        common_ = q(dir_ / "scene.lfdpack") + " --display " + q(dir_ / "panel.json") + " --views 8 --view-size 48x36";
+        common_ = quoted(dir_ / "scene.lfdpack") + " --display " + quoted(dir_ / "panel.json") + " --views 8 --view-size 48x36";
     }
     void startServer(const std::string& screen)
     {
@@ -104,10 +96,10 @@ protected:
     // Runs lfd-play to the end; returns the exit status, stderr in `err`.
     int run(const std::string& args, std::string& err)
     {
-        const int raw = std::system((env_ + q(kPlay) + " " + args + " > " + q(dir_ / "out.txt") + " 2> " +
-                                     q(dir_ / "err.txt"))
+        const int raw = std::system((env_ + quoted(kPlay) + " " + args + " > " + quoted(dir_ / "out.txt") + " 2> " +
+                                     quoted(dir_ / "err.txt"))
                                         .c_str());
-        err = readText(dir_ / "err.txt");
+        err = readBytes(dir_ / "err.txt");
         return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
     }
     // Starts lfd-play in the background and waits for its window to have drawn a frame
@@ -115,8 +107,8 @@ protected:
     std::string start(const std::string& args)
     {
         const std::string pidFile = (dir_ / "play.pid").string();
-        const std::string command = env_ + q(kPlay) + " " + args + " > " + q(dir_ / "play.log") + " 2>&1 & echo $! > " +
-                                    q(pidFile);
+        const std::string command = env_ + quoted(kPlay) + " " + args + " > " + quoted(dir_ / "play.log") + " 2>&1 & echo $! > " +
+                                    quoted(fs::path(pidFile));
         EXPECT_EQ(std::system(command.c_str()), 0);
         std::ifstream(pidFile) >> pid_;
         std::string window;
@@ -125,7 +117,7 @@ protected:
             if (window.empty())
                 std::this_thread::sleep_for(std::chrono::milliseconds(100));
         }
-        EXPECT_FALSE(window.empty()) << "no lfd-play window: " << readText(dir_ / "play.log");
+        EXPECT_FALSE(window.empty()) << "no lfd-play window: " << readBytes(dir_ / "play.log");
         window_ = window;
         if (!window.empty())
             titleContains("| full: total");
@@ -187,7 +179,7 @@ protected:
     metrics::Image headlessEia()
     {
         std::string err;
-        EXPECT_EQ(run("--headless " + common_ + " --no-turntable --out " + q(dir_ / "eia.png"), err), 0) << err;
+        EXPECT_EQ(run("--headless " + common_ + " --no-turntable --out " + quoted(dir_ / "eia.png"), err), 0) << err;
         return metrics::readImage(dir_ / "eia.png", 3);
     }
 
@@ -211,7 +203,7 @@ TEST_F(DisplayWindowTest, FullscreenShowsTheHeadlessEiaPixelForPixel)
     EXPECT_TRUE(screen.pixels == eia.pixels) << "max difference " << metrics::maxAbsDiff(screen, eia);
     metrics::writeImage(dir_ / "screen.png", screen);
     quit();
-    const std::string log = readText(dir_ / "play.log");
+    const std::string log = readBytes(dir_ / "play.log");
     EXPECT_NE(log.find("fullscreen on monitor 0 'screen' 384x216"), std::string::npos) << log;
     EXPECT_NE(log.find("(pixel for pixel)"), std::string::npos) << log;
     EXPECT_NE(log.find("lfd-play: "), std::string::npos);
@@ -220,7 +212,7 @@ TEST_F(DisplayWindowTest, FullscreenShowsTheHeadlessEiaPixelForPixel)
 
     // The back buffer (--screenshot) agrees too.
     std::string err;
-    ASSERT_EQ(run(common_ + " --no-turntable --fullscreen --frames 2 --screenshot " + q(dir_ / "shot.png"), err), 0)
+    ASSERT_EQ(run(common_ + " --no-turntable --fullscreen --frames 2 --screenshot " + quoted(dir_ / "shot.png"), err), 0)
         << err;
     EXPECT_TRUE(metrics::readImage(dir_ / "shot.png", 3).pixels == eia.pixels);
 }
@@ -237,8 +229,8 @@ TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
     EXPECT_EQ(run(common_ + " --fullscreen --monitor 0", err), 1);
     EXPECT_NE(err.find("monitor 0 'screen' runs at 640x400"), std::string::npos) << err;
 
-    ASSERT_EQ(run("--list-monitors --display " + q(dir_ / "panel.json"), err), 0) << err;
-    EXPECT_EQ(readText(dir_ / "out.txt"), "0: screen 640x400 @ 0 Hz at +0+0 (primary) - does not match the panel 384x216\n");
+    ASSERT_EQ(run("--list-monitors --display " + quoted(dir_ / "panel.json"), err), 0) << err;
+    EXPECT_EQ(readBytes(dir_ / "out.txt"), "0: screen 640x400 @ 0 Hz at +0+0 (primary) - does not match the panel 384x216\n");
 
     // --allow-mismatch: the EIA unscaled at ((640 - 384) / 2, (400 - 216) / 2) = (128, 92), black around it.
     const metrics::Image eia = headlessEia();
@@ -247,11 +239,11 @@ TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
     quit();
     // The readout lines start once something is measured: no empty "lfd-play: " line, also
     // for a one-frame run whose only readout comes before any frame time is known.
-    const std::string log = readText(dir_ / "play.log");
+    const std::string log = readBytes(dir_ / "play.log");
     EXPECT_EQ(("\n" + log).find("\nlfd-play: \n"), std::string::npos) << log;
     EXPECT_NE(log.find("mismatch allowed"), std::string::npos) << log;
     ASSERT_EQ(run(common_ + " --fullscreen --allow-mismatch --frames 1", err), 0) << err;
-    const std::string oneFrame = readText(dir_ / "out.txt");
+    const std::string oneFrame = readBytes(dir_ / "out.txt");
     EXPECT_EQ(("\n" + oneFrame).find("\nlfd-play: \n"), std::string::npos) << oneFrame;
     ASSERT_EQ(screen.width, 640u);
     size_t differing = 0, litOutside = 0;
@@ -312,7 +304,7 @@ TEST_F(DisplayWindowTest, CameraControlsAndPreviewFromMouseAndKeys)
     send("key --window " + w + " Home");
     titleContains("yaw 0.0 pitch 0.0 zoom 1.00 pan 0.0,0.0 mm focal 0.0 mm depthiness 1.0 turntable off");
     quit();
-    const std::string log = readText(dir_ / "play.log");
+    const std::string log = readBytes(dir_ / "play.log");
     EXPECT_NE(log.find("preview frames (total"), std::string::npos) << log;
 }
 
@@ -321,11 +313,11 @@ TEST_F(DisplayWindowTest, QuiltInputFullscreenEqualsItsHeadlessEia)
 {
     startServer("384x216x24");
     std::string err;
-    ASSERT_EQ(run("--headless " + common_ + " --no-turntable --quilt " + q(dir_ / "q.png"), err), 0) << err;
+    ASSERT_EQ(run("--headless " + common_ + " --no-turntable --quilt " + quoted(dir_ / "q.png"), err), 0) << err;
     const fs::path quilt = dir_ / "q_qs3x3a1.78.png";
     ASSERT_TRUE(fs::exists(quilt));
-    const std::string quiltArgs = "--quilt-in " + q(quilt) + " --quilt-views 8 --display " + q(dir_ / "panel.json");
-    ASSERT_EQ(run("--headless " + quiltArgs + " --out " + q(dir_ / "quilt_eia.png"), err), 0) << err;
+    const std::string quiltArgs = "--quilt-in " + quoted(quilt) + " --quilt-views 8 --display " + quoted(dir_ / "panel.json");
+    ASSERT_EQ(run("--headless " + quiltArgs + " --out " + quoted(dir_ / "quilt_eia.png"), err), 0) << err;
     start(quiltArgs + " --fullscreen");
     titleContains("q_qs3x3a1.78.png");
     const metrics::Image screen = server_->readScreen();
@@ -341,11 +333,11 @@ TEST_F(DisplayWindowTest, QuiltVideoPausesAndStepsOneFrame)
         GTEST_SKIP() << "ffmpeg not installed: no quilt video to play";
     startServer("1280x800x24");
     std::string err;
-    ASSERT_EQ(run("--headless " + common_ + " --frames 3 --fps 4 --quilt-video " + q(dir_ / "clip.mp4"), err), 0)
+    ASSERT_EQ(run("--headless " + common_ + " --frames 3 --fps 4 --quilt-video " + quoted(dir_ / "clip.mp4"), err), 0)
         << err;
     const fs::path video = dir_ / "clip_qs3x3a1.78.mp4";
     ASSERT_TRUE(fs::exists(video));
-    const std::string w = start("--quilt-in " + q(video) + " --quilt-views 8 --display " + q(dir_ / "panel.json") +
+    const std::string w = start("--quilt-in " + quoted(video) + " --quilt-views 8 --display " + quoted(dir_ / "panel.json") +
                                 " --window-size 320x200");
     titleContains(" of 3");
     send("key --window " + w + " space");
@@ -377,7 +369,7 @@ TEST_F(DisplayWindowTest, ReadoutTogglesOverTheWindowAndStaysOutOfScreenshots)
     startServer("1280x720x24");
     const std::string args = common_ + " --no-turntable --window-size 1280x720";
     std::string err;
-    ASSERT_EQ(run(args + " --readout --frames 2 --screenshot " + q(dir_ / "shot.png"), err), 0) << err;
+    ASSERT_EQ(run(args + " --readout --frames 2 --screenshot " + quoted(dir_ / "shot.png"), err), 0) << err;
     const std::string w = start(args + " --no-readout");
     metrics::Image last;
     const metrics::Image plain = screenUntil(

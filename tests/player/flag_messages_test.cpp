@@ -19,7 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kBenchBinary = fs::path(LFD_BINARY_DIR) / "player" / "lfd-bench";
 
 TEST(FlagMessages, NameTheFlagAndTheValue)
 {
@@ -32,7 +31,7 @@ TEST(FlagMessages, NameTheFlagAndTheValue)
         {"--environment-rotation inf", "--environment-rotation: must be a finite number of degrees, got inf"},
         {"--frames 0", "--frames: must be at least 1, got 0"},
     };
-    for (const fs::path& tool : {kPlay, kBenchBinary}) {
+    for (const fs::path& tool : {kPlay, kBenchTool}) {
         ASSERT_TRUE(fs::exists(tool)) << tool << " not built";
         const std::string prefix = "'" + tool.string() + "'" + (tool == kPlay ? " --headless" : "") + missing;
         for (const auto& [args, message] : cases) {

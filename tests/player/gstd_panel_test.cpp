@@ -256,7 +256,7 @@ DisplayProfile tenthPrototype()
     return parseDisplayProfile(tenthPrototypeProfileJson("gstd-panel"), "gstd-panel.json");
 }
 
-RenderedFrame renderGstd(const Scene& scene, const DisplayProfile& profile, const player::GstdOptions& options)
+RenderedFrame renderGstdEia(const Scene& scene, const DisplayProfile& profile, const player::GstdOptions& options)
 {
     RenderRequest request;
     request.eia = true;
@@ -279,7 +279,7 @@ TEST_F(GstdPanelTest, EiaConvergesWhenSubViewsAndResolutionDouble)
         options.subViews = subViews;
         options.factor = factor;
         options.model = model;
-        return renderGstd(scene, profile, options);
+        return renderGstdEia(scene, profile, options);
     };
     const player::GstdModel panel = player::GstdModel::Panel;
     const RenderedFrame base = render(4, 4, panel), both = render(8, 8, panel), more = render(8, 4, panel);
@@ -313,8 +313,8 @@ TEST_F(GstdPanelTest, AngularReconstructionLowersTheErrorAgainstThePanelModel)
     player::GstdOptions panelOptions;
     player::GstdOptions viewsOptions = panelOptions;
     viewsOptions.model = player::GstdModel::Views;
-    const metrics::Image panel = renderGstd(scene, profile, panelOptions).eia;
-    const metrics::Image views = renderGstd(scene, profile, viewsOptions).eia;
+    const metrics::Image panel = renderGstdEia(scene, profile, panelOptions).eia;
+    const metrics::Image views = renderGstdEia(scene, profile, viewsOptions).eia;
     const RenderedFrame mvr = renderFrame("mvr", scene, profile);
     std::vector<std::vector<uint8_t>> pixels;
     for (const metrics::Image& view : mvr.views)
@@ -338,7 +338,7 @@ TEST_F(GstdPanelTest, TwoRunsGiveBitIdenticalEias)
     const DisplayProfile profile = withViews(tenthPrototype(), 8, 48, 36);
     const Scene scene = cubeAndSphereScene();
     const player::GstdOptions options;
-    const RenderedFrame a = renderGstd(scene, profile, options), b = renderGstd(scene, profile, options);
+    const RenderedFrame a = renderGstdEia(scene, profile, options), b = renderGstdEia(scene, profile, options);
     EXPECT_EQ(a.eia.pixels, b.eia.pixels);
     EXPECT_EQ(blankReason(a.eia), "");
 }

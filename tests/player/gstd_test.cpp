@@ -420,7 +420,7 @@ TEST_F(GstdTest, CacheReturnsIdenticalViewsAndMissesOnAnyChange)
 
 // ---- lfd-bench against gstd ------------------------------------------------------------
 
-DisplayProfile benchProfile()
+DisplayProfile gstdBenchProfile()
 {
     return parseDisplayProfile(tenthPrototypeProfileJson("gstd-bench"), "gstd-bench.json");
 }
@@ -438,7 +438,7 @@ TEST_F(GstdTest, BenchMeasuresFlipAgainstGstdAndCachesIt)
     o.quiet = true;
     o.gstdCache = dir / "cache";
     ASSERT_EQ(o.reference, "gstd") << "gstd is lfd-bench's default reference";
-    const DisplayProfile profile = benchProfile();
+    const DisplayProfile profile = gstdBenchProfile();
     std::ostringstream progress;
 
     const player::BenchReport first =

@@ -50,13 +50,6 @@ using Frame = RenderedFrame;
 
 // ---- Scenes ---------------------------------------------------------------------------
 
-// One view pixel (horizontal, vertical) on the zero-parallax plane, in scene units, for
-// scenes framed by unitBounds().
-glm::dvec2 pixelUnits(const DisplayProfile& profile)
-{
-    return viewPixelSizeMm(profile) / fitSceneToDisplay(profile, unitBounds()).mmPerUnit;
-}
-
 // Footprint scale of a view pixel at scene depth z (display z = z * mmPerUnit) for a
 // surface facing the screen: (D - z) / D (framing.h: cameras at distance D).
 double depthScale(const DisplayProfile& profile, double zScene)
@@ -80,15 +73,6 @@ Material texturedMaterial(int32_t texture, bool doubleSided = false)
     Material m = plainMaterial(glm::vec3(1.0f), doubleSided);
     m.baseColorTexture = texture;
     return m;
-}
-
-// Appends a vertex with every stream the scenes here use (normals and uvs).
-uint32_t addVertex(Scene& scene, glm::vec3 p, glm::vec3 n, glm::vec2 uv)
-{
-    scene.vertices.positions.push_back(p);
-    scene.vertices.normals.push_back(n);
-    scene.vertices.uvs.push_back(uv);
-    return uint32_t(scene.vertices.positions.size() - 1);
 }
 
 // A quad of two triangles (c0 c1 c2, c0 c2 c3; counter-clockwise seen from the side its
@@ -167,16 +151,16 @@ Plausibility plausibility(const std::vector<Image>& lfdpr, const std::vector<Ima
 // RMSE (colour channels) over the pixels both images cover, and SSIM (luma) over the
 // bounding box of the pixels either covers (plus the SSIM window radius): the background
 // would otherwise dilute every difference.
-struct Agreement {
+struct RegionAgreement {
     double rmse = 0.0, ssim = 1.0;
     size_t both = 0;
 };
 
-Agreement regionAgreement(const Image& a, const Image& reference)
+RegionAgreement regionAgreement(const Image& a, const Image& reference)
 {
     const std::vector<uint8_t> ma = coverageMask(a), mr = coverageMask(reference);
     std::vector<uint8_t> both(ma.size()), either(ma.size());
-    Agreement out;
+    RegionAgreement out;
     for (size_t i = 0; i < ma.size(); ++i) {
         both[i] = ma[i] & mr[i];
         either[i] = ma[i] | mr[i];
@@ -209,7 +193,7 @@ Comparison compare(const Frame& lfdpr, const Frame& mvr, int colourMargin,
         c.worstViewHoleRate = std::max(c.worstViewHoleRate, s.holeRate());
         c.coveredSum += s.covered;
         c.coveredMax = std::max(c.coveredMax, s.covered);
-        const Agreement a = regionAgreement(lfdpr.views[v], mvr.views[v]);
+        const RegionAgreement a = regionAgreement(lfdpr.views[v], mvr.views[v]);
         c.meanRmse += a.rmse / n;
         c.worstRmse = std::max(c.worstRmse, a.rmse);
         c.meanSsim += a.ssim / n;

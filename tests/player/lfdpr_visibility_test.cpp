@@ -108,15 +108,15 @@ class LfdprVisibilityTest : public GlTest {};
 
 // One frame through the shared harness at turntable angle `angle`, plus what an lfdpr
 // renderer reports about it.
-struct Frame {
+struct VisibilityFrame {
     std::vector<Image> views;
     player::LfdprFrameInfo info;
     std::vector<uint32_t> pointsPerTriangle;
 };
 
-Frame render(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile, double angle = 0.0)
+VisibilityFrame render(player::Renderer& renderer, const Scene& scene, const DisplayProfile& profile, double angle = 0.0)
 {
-    Frame out;
+    VisibilityFrame out;
     out.views = renderFrame(renderer, scene, profile, atTurntableAngle(angle)).views;
     if (auto* lfdpr = dynamic_cast<player::LfdprRenderer*>(&renderer)) {
         out.info = lfdpr->lastFrame();
@@ -139,8 +139,8 @@ TEST_F(LfdprVisibilityTest, ComputePointGenerationSamplesLikeTheGeometryShader)
                 {.lfdBiasedSampling = lfdSampling, .pixelCentreCulling = false, .cellScale = 1});
             auto paper = player::createLfdprRenderer(
                 {.pipeline = LfdprOptions::Pipeline::Paper, .lfdBiasedSampling = lfdSampling});
-            const Frame a = render(*visibility, scene, profile, 0.4);
-            const Frame b = render(*paper, scene, profile, 0.4);
+            const VisibilityFrame a = render(*visibility, scene, profile, 0.4);
+            const VisibilityFrame b = render(*paper, scene, profile, 0.4);
             ASSERT_GT(a.info.points, 1000u);
             EXPECT_EQ(a.info.points, b.info.points);
             ASSERT_EQ(a.pointsPerTriangle.size(), b.pointsPerTriangle.size());
@@ -167,8 +167,8 @@ TEST_F(LfdprVisibilityTest, PixelCentreCullingDropsOnlyPointsThatCanWinNoPixel)
         auto culled = player::createLfdprRenderer();
         auto full = player::createLfdprRenderer({.pixelCentreCulling = false});
         for (const double angle : {0.0, 1.3}) {
-            const Frame a = render(*culled, denseTestScene(), profile, angle);
-            const Frame b = render(*full, denseTestScene(), profile, angle);
+            const VisibilityFrame a = render(*culled, denseTestScene(), profile, angle);
+            const VisibilityFrame b = render(*full, denseTestScene(), profile, angle);
             ASSERT_GT(b.info.points, 1000u);
             EXPECT_LT(a.info.points, b.info.points) << width << " px wide views";
             EXPECT_LT(a.info.triangles, b.info.triangles);
@@ -191,10 +191,10 @@ TEST_F(LfdprVisibilityTest, CellScalingKeepsTheViewsAndCutsThePoints)
     const DisplayProfile profile = smallProfile(6, 160, 120);
     for (const Scene& scene : {cubeAndSphereScene(), denseTestScene()}) {
         auto paper = player::createLfdprRenderer({.cellScale = 1});
-        const Frame reference = render(*paper, scene, profile, 0.7);
+        const VisibilityFrame reference = render(*paper, scene, profile, 0.7);
         for (const uint32_t scale : {2u, 3u}) {
             auto scaled = player::createLfdprRenderer({.cellScale = scale});
-            const Frame f = render(*scaled, scene, profile, 0.7);
+            const VisibilityFrame f = render(*scaled, scene, profile, 0.7);
             EXPECT_LT(f.info.points, reference.info.points) << "cell scale " << scale;
             std::printf("cell scale %u: %llu -> %llu points\n", scale, (unsigned long long)reference.info.points,
                         (unsigned long long)f.info.points);
@@ -216,8 +216,8 @@ TEST_F(LfdprVisibilityTest, ShadesLikeMvr)
     for (const Scene& scene : {cubeAndSphereScene(), denseTestScene()}) {
         auto lfdpr = player::createLfdprRenderer();
         auto mvr = player::createRenderer("mvr");
-        const Frame a = render(*lfdpr, scene, profile, 0.9);
-        const Frame b = render(*mvr, scene, profile, 0.9);
+        const VisibilityFrame a = render(*lfdpr, scene, profile, 0.9);
+        const VisibilityFrame b = render(*mvr, scene, profile, 0.9);
         CoverageStats coverage;
         for (uint32_t v = 0; v < profile.viewCount; ++v) {
             EXPECT_GT(metrics::ssim(a.views[v], b.views[v]), 0.99) << "view " << v;
@@ -265,8 +265,8 @@ TEST_F(LfdprVisibilityTest, DecidesEdgePixelsAsTheRasteriser)
     for (const Scene& scene : {cubeAndSphereScene(), denseTestScene()}) {
         auto lfdpr = player::createLfdprRenderer();
         auto mvr = player::createRenderer("mvr");
-        const Frame a = render(*lfdpr, scene, profile, 0.4);
-        const Frame b = render(*mvr, scene, profile, 0.4);
+        const VisibilityFrame a = render(*lfdpr, scene, profile, 0.4);
+        const VisibilityFrame b = render(*mvr, scene, profile, 0.4);
         for (uint32_t v = 0; v < profile.viewCount; ++v) {
             changed += surfaceChanges(a.views[v], b.views[v]);
             covered += compareCoverage(b.views[v], a.views[v]).covered;
@@ -286,8 +286,8 @@ TEST_F(LfdprVisibilityTest, OverflowGrowsAndTheFrameIsRenderedAgain)
     const DisplayProfile profile = smallProfile(4, 96, 72);
     auto roomy = player::createLfdprRenderer();
     auto tight = player::createLfdprRenderer({.initialPointCapacity = 64});
-    const Frame a = render(*roomy, scene, profile);
-    const Frame b = render(*tight, scene, profile);
+    const VisibilityFrame a = render(*roomy, scene, profile);
+    const VisibilityFrame b = render(*tight, scene, profile);
     EXPECT_EQ(a.info.bufferGrowths, 0u);
     EXPECT_GE(b.info.bufferGrowths, 1u);
     EXPECT_FALSE(b.info.overflowed) << "the frame was redone with room for every point";
@@ -302,7 +302,7 @@ TEST_F(LfdprVisibilityTest, OverflowGrowsAndTheFrameIsRenderedAgain)
     // overflowed at 16 points, was rendered again at the cap of 64 and overflowed again:
     // both renders are counted).
     auto capped = player::createLfdprRenderer({.initialPointCapacity = 16, .maxPointCapacity = 64});
-    const Frame c = render(*capped, scene, profile);
+    const VisibilityFrame c = render(*capped, scene, profile);
     EXPECT_TRUE(c.info.overflowed);
     EXPECT_EQ(c.info.pointCapacity, 64u);
     EXPECT_EQ(c.info.pointsStored, 64u);
@@ -317,7 +317,7 @@ TEST_F(LfdprVisibilityTest, PointBufferSizedAtLoadSoTheFirstFrameDoesNotOverflow
     const Scene scene = denseTestScene();
     const DisplayProfile profile = smallProfile(8, 160, 120);
     auto renderer = player::createLfdprRenderer();
-    const Frame a = render(*renderer, scene, profile, 0.4);
+    const VisibilityFrame a = render(*renderer, scene, profile, 0.4);
     EXPECT_EQ(a.info.overflowFrames, 0u);
     EXPECT_EQ(a.info.bufferGrowths, 0u);
     EXPECT_GT(a.info.points, 10000u) << "a moderately dense scene";
@@ -346,7 +346,7 @@ TEST_F(LfdprVisibilityTest, WorkCountersAreConsistent)
         return -1.0;
     };
     auto lfdpr = player::createLfdprRenderer();
-    const Frame a = render(*lfdpr, scene, profile);
+    const VisibilityFrame a = render(*lfdpr, scene, profile);
     const double points = value(*lfdpr, "work_points");
     EXPECT_GT(points, 0.0);
     EXPECT_EQ(points, double(a.info.pointsStored));
@@ -370,7 +370,7 @@ TEST_F(LfdprVisibilityTest, CompactPointsAndReportedMemory)
 {
     auto renderer = player::createLfdprRenderer();
     const DisplayProfile profile = smallProfile(4, 96, 72);
-    const Frame f = render(*renderer, cubeAndSphereScene(), profile);
+    const VisibilityFrame f = render(*renderer, cubeAndSphereScene(), profile);
     EXPECT_EQ(f.info.bytesPerPoint, 8u);
     EXPECT_EQ(f.info.viewBufferBytes, 4u * 96u * 72u * 8u); // depth + index
     EXPECT_GT(f.info.triangleBufferBytes, 0u);
@@ -403,12 +403,12 @@ TEST_F(LfdprVisibilityTest, IndexRepairRestoresTheImageFromTheListAndTheWholeFra
     const DisplayProfile profile = smallProfile(6, 96, 72);
     const Scene scene = denseTestScene();
     auto clean = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::TwoPass32});
-    const Frame reference = render(*clean, scene, profile, 0.6);
+    const VisibilityFrame reference = render(*clean, scene, profile, 0.6);
     ASSERT_EQ(reference.info.repairs, 0u) << "the unforced frame needs no repair here";
     bool listed = false, wholeFrame = false;
     for (const uint32_t every : {61u, 3u}) { // measured: 53 and 1116 repairs
         auto racy = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::TwoPass32, .testIndexRaces = every});
-        const Frame a = render(*racy, scene, profile, 0.6);
+        const VisibilityFrame a = render(*racy, scene, profile, 0.6);
         std::printf("every %u-th point racing: %llu repairs\n", every, (unsigned long long)a.info.repairs);
         EXPECT_GT(a.info.repairs, 0u) << "every " << every;
         listed = listed || (a.info.repairs > 0 && a.info.repairs <= 108);
@@ -437,8 +437,8 @@ TEST_F(LfdprVisibilityTest, ShadingGroupsShadeEachMaterialWithItsOwnTextures)
     finishScene(scene);
     auto lfdpr = player::createLfdprRenderer();
     auto mvr = player::createRenderer("mvr");
-    const Frame a = render(*lfdpr, scene, profile);
-    const Frame b = render(*mvr, scene, profile);
+    const VisibilityFrame a = render(*lfdpr, scene, profile);
+    const VisibilityFrame b = render(*mvr, scene, profile);
     std::map<std::string, double> stats;
     for (const auto& [key, value] : lfdpr->extraStats())
         stats[key] = value;
@@ -466,8 +466,8 @@ TEST_F(LfdprVisibilityTest, Int64AndSingle32BitPassGiveTheSameImage)
     const DisplayProfile profile = smallProfile(4, 160, 120);
     auto r64 = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::Int64});
     auto r32 = player::createLfdprRenderer({.atomics = LfdprOptions::Atomics::TwoPass32});
-    const Frame a = render(*r64, scene, profile);
-    const Frame b = render(*r32, scene, profile);
+    const VisibilityFrame a = render(*r64, scene, profile);
+    const VisibilityFrame b = render(*r32, scene, profile);
     for (uint32_t v = 0; v < profile.viewCount; ++v)
         EXPECT_EQ(metrics::maxAbsDiff(a.views[v], b.views[v]), 0) << "view " << v;
 }
@@ -492,9 +492,9 @@ TEST_F(LfdprVisibilityTest, AlphaMaskedCellsEmitNoPointsAndShowTheirHoles)
     // counts compare.
     auto lfdpr = player::createLfdprRenderer({.cellScale = 1});
     auto mvr = player::createRenderer("mvr");
-    const Frame solid = render(*lfdpr, opaque, profile);
-    const Frame cut = render(*lfdpr, masked, profile);
-    const Frame reference = render(*mvr, masked, profile);
+    const VisibilityFrame solid = render(*lfdpr, opaque, profile);
+    const VisibilityFrame cut = render(*lfdpr, masked, profile);
+    const VisibilityFrame reference = render(*mvr, masked, profile);
     ASSERT_EQ(cut.pointsPerTriangle.size(), solid.pointsPerTriangle.size());
     uint64_t cubeSolid = 0, cubeCut = 0, othersSolid = 0, othersCut = 0;
     const size_t cubeTriangles = 12; // the first draw: the checker cube
@@ -547,12 +547,12 @@ TEST_F(LfdprVisibilityTest, BothWorkShapesRenderTheSameViews)
     for (const Case& c : cases) {
         auto cpu = player::createLfdprRenderer({.workShape = Shape::Cpu, .atomics = LfdprOptions::Atomics::TwoPass32});
         auto gpu = player::createLfdprRenderer({.workShape = Shape::Gpu, .atomics = LfdprOptions::Atomics::TwoPass32});
-        const Frame a = render(*cpu, c.scene, c.profile, 0.6);
+        const VisibilityFrame a = render(*cpu, c.scene, c.profile, 0.6);
         // The GPU shape clears its view words and colours in a shader
         // (lfdpr_visibility_clear.comp): a frame from another angle first, so a word or
         // colour the clear missed would show in the compared frame.
         render(*gpu, c.scene, c.profile, 0.0);
-        const Frame b = render(*gpu, c.scene, c.profile, 0.6);
+        const VisibilityFrame b = render(*gpu, c.scene, c.profile, 0.6);
         ASSERT_GT(a.info.points, 0u) << c.name;
         EXPECT_GE(b.info.points, a.info.points) << c.name << ": a cell never grows";
         EXPECT_GE(b.info.trianglesLarge, a.info.trianglesLarge) << c.name;

@@ -152,14 +152,6 @@ TEST_F(MaterialExtensionsTest, TextureTransformTurnsTheNormalMapsFrame)
     }
 }
 
-// sRGB byte of a linear value, as the shaders encode (srgb.glsl).
-int srgbByte(float linear)
-{
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    const float e = c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    return int(std::lround(e * 255.0f));
-}
-
 // Pixels of `image` whose (2 margin + 1)^2 neighbourhood is all covered (not the
 // background, player::kBackground: 13), so edge pixels that a reconstruction filter blends
 // with the background are left out.

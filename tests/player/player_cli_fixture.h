@@ -4,13 +4,12 @@
 #pragma once
 
 #include "gl_test_support.h"
+#include "tool_run.h"
 
 #include <filesystem>
 #include <string>
 
 namespace lfd::test {
-
-inline const std::filesystem::path kPlay = std::filesystem::path(LFD_BINARY_DIR) / "player" / "lfd-play";
 
 class PlayerCliTest : public GlTest {
 protected:

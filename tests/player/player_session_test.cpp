@@ -17,7 +17,7 @@ namespace {
 
 class PlayerSessionTest : public GlTest {};
 
-DisplayProfile tinyProfile()
+DisplayProfile sessionProfile()
 {
     return withViews(prototypeDisplayProfile(), 4, 32, 24);
 }
@@ -38,7 +38,7 @@ TEST_F(PlayerSessionTest, RKeyCycleRebuildsLfdprWithTheUsersOptions)
     options.rendererOptions.lfdpr.pipeline = player::LfdprOptions::Pipeline::Paper;
     options.rendererOptions.lfdpr.lfdBiasedSampling = false;
     options.rendererOptions.lfdpr.multiviewMipmapping = false;
-    player::PlayerSession session(options, tinyProfile(), cubeAndSphereScene(), "scene");
+    player::PlayerSession session(options, sessionProfile(), cubeAndSphereScene(), "scene");
 
     // The window's cycle: every other interactive renderer, then lfdpr again.
     const std::vector<std::string> cycle = player::windowRendererCycle(options.renderer);
@@ -64,7 +64,7 @@ TEST_F(PlayerSessionTest, VariantsStartFromTheUsersOptionsAndChangeOneThing)
     options.renderer = "lfdpr-no-texture-splatting";
     options.rendererOptions.lfdpr.atomics = player::LfdprOptions::Atomics::TwoPass32;
     options.rendererOptions.lfdpr.lfdBiasedSampling = false;
-    player::PlayerSession session(options, tinyProfile(), cubeAndSphereScene(), "scene");
+    player::PlayerSession session(options, sessionProfile(), cubeAndSphereScene(), "scene");
     const player::LfdprOptions& o = asLfdpr(session.renderer()).options();
     EXPECT_FALSE(o.textureSplatting);
     EXPECT_FALSE(o.lfdBiasedSampling);
@@ -79,7 +79,7 @@ TEST_F(PlayerSessionTest, FailedSwitchKeepsTheCurrentRenderer)
 {
     player::PlayOptions options;
     options.renderer = "mvr";
-    player::PlayerSession session(options, tinyProfile(), cubeAndSphereScene(), "scene");
+    player::PlayerSession session(options, sessionProfile(), cubeAndSphereScene(), "scene");
     EXPECT_THROW(session.switchRenderer("warp-drive"), std::invalid_argument);
     EXPECT_EQ(session.rendererName(), "mvr");
     EXPECT_EQ(session.renderer().name(), "mvr");

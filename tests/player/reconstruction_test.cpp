@@ -345,14 +345,14 @@ TEST_F(ReconstructionGpu, EveryModeMatchesTheCpuReference)
 }
 
 // 4 views of 64x48 on a 384x216 panel: a frame takes milliseconds on llvmpipe.
-DisplayProfile tinyProfile() { return tenthPrototypeProfile("ss-small", 4, 64, 48); }
+DisplayProfile superSampledProfile() { return tenthPrototypeProfile("ss-small", 4, 64, 48); }
 
 TEST_F(ReconstructionGpu, DownsampleIsTheLinearMeanOfTheSupersampledViews)
 {
     // The pipeline's views under 2s / 2v against the CPU mean (linear light) of the
     // supersampled views rendered directly by the same renderer for the same frame.
     // Tolerance: one level (the shader decodes with pow(), the test exactly).
-    const DisplayProfile p = tinyProfile();
+    const DisplayProfile p = superSampledProfile();
     const Scene scene = cubeAndSphereScene();
     for (Supersampling ss : {Supersampling::Spatial2x, Supersampling::Angular2x}) {
         player::FramePipeline pipeline(p, scene, 10.0);
@@ -404,7 +404,7 @@ TEST_F(ReconstructionGpu, AngularSupersamplingKeepsLfdprsPointCloud)
 {
     // Paper section 5: angular supersampling projects the same points into more views and
     // does not grow the point cloud; spatial supersampling needs about 2-4x the points.
-    const DisplayProfile p = tinyProfile();
+    const DisplayProfile p = superSampledProfile();
     const Scene scene = cubeAndSphereScene();
     for (const char* name : {"lfdpr", "lfdpr-paper"}) {
         std::map<Supersampling, double> points;
@@ -435,7 +435,7 @@ TEST_F(ReconstructionGpu, LfdprViewsEqualMvrsUnderEverySupersampling)
     // the GPU one). Regression: point generation sized the splat's dispatch for the
     // sampling's 40 views, so under 2v only the first half of the points (here the cube,
     // generated first) reached the views, while the point count stayed right.
-    DisplayProfile p = tinyProfile();
+    DisplayProfile p = superSampledProfile();
     p.viewCount = 40;
     p.viewWidth = 32;
     p.viewHeight = 24;

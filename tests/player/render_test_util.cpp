@@ -163,6 +163,13 @@ double ssimOverMaskBox(const metrics::Image& a, const metrics::Image& reference,
     return metrics::ssim(crop(a), crop(reference));
 }
 
+uint8_t srgbByte(float linear)
+{
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    const float e = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return uint8_t(std::lround(e * 255.0f));
+}
+
 std::vector<uint8_t> coverageMask(const metrics::Image& image)
 {
     const uint8_t bg = uint8_t(std::lround(player::kBackground[0] * 255.0f));

@@ -89,6 +89,9 @@ std::string imageMismatch(const metrics::Image& written, const metrics::Image& r
 // factor x factor box filter of RGBA8 bytes (downsamples a supersampled reference render).
 metrics::Image boxDownsample(const metrics::Image& image, uint32_t factor);
 
+// sRGB byte of a linear value, as the shaders encode it (srgb.glsl).
+uint8_t srgbByte(float linear);
+
 // ---- Coverage of one renderer against a reference (lfdpr against mvr) ----------------
 
 // 1 where a pixel is covered: its colour differs from the renderers' clear colour

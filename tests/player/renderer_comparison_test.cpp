@@ -44,7 +44,7 @@ DisplayProfile comparisonProfile(uint32_t views, uint32_t width, uint32_t height
 
 // Cube of half size 0.5, each face a 4 x 4 grid (uvs 0..1 per face), so no triangle
 // spans more than the baker's 100-pixel bound at these view sizes.
-std::vector<uint32_t> addCube(Scene& scene)
+std::vector<uint32_t> addGridCube(Scene& scene)
 {
     std::vector<uint32_t> indices;
     const glm::quat faces[6] = {
@@ -68,7 +68,7 @@ std::vector<uint32_t> addCube(Scene& scene)
     return indices;
 }
 
-Material texturedMaterial(int32_t texture)
+Material namedTexturedMaterial(int32_t texture)
 {
     Material m;
     m.name = "textured";
@@ -83,8 +83,8 @@ Scene texturedCubeScene()
 {
     Scene scene;
     scene.textures.push_back(checkerTexture(64, 8, {230, 200, 60, 255}, {40, 90, 200, 255}, true));
-    scene.materials.push_back(texturedMaterial(0));
-    const int32_t cube = addMesh(scene, addCube(scene), 0);
+    scene.materials.push_back(namedTexturedMaterial(0));
+    const int32_t cube = addMesh(scene, addGridCube(scene), 0);
     addNode(scene, cube, glm::vec3(0.0f),
             glm::angleAxis(0.6f, glm::normalize(glm::vec3(1.0f, 1.5f, 0.2f))), glm::vec3(1.0f));
     finishScene(scene);
@@ -97,8 +97,8 @@ Scene instancedCubesScene()
 {
     Scene scene;
     scene.textures.push_back(checkerTexture(64, 8, {230, 200, 60, 255}, {40, 90, 200, 255}, true));
-    scene.materials.push_back(texturedMaterial(0));
-    const int32_t cube = addMesh(scene, addCube(scene), 0);
+    scene.materials.push_back(namedTexturedMaterial(0));
+    const int32_t cube = addMesh(scene, addGridCube(scene), 0);
     addNode(scene, cube, {-0.8f, 0.5f, 0.0f}, glm::angleAxis(0.4f, glm::normalize(glm::vec3(1, 1, 0))), glm::vec3(0.7f));
     addNode(scene, cube, {0.8f, 0.5f, -0.3f}, glm::angleAxis(1.1f, glm::normalize(glm::vec3(0, 1, 1))), glm::vec3(0.9f));
     addNode(scene, cube, {-0.7f, -0.6f, 0.3f}, glm::angleAxis(2.0f, glm::normalize(glm::vec3(1, 0, 1))), glm::vec3(0.5f));
@@ -126,7 +126,7 @@ Scene texturedQuadScene(Texture texture)
 {
     Scene scene;
     scene.textures.push_back(std::move(texture));
-    scene.materials.push_back(texturedMaterial(0));
+    scene.materials.push_back(namedTexturedMaterial(0));
     const int32_t quad = addMesh(scene, addGrid(scene, 0.5f, 4, 1.0f), 0);
     addNode(scene, quad, glm::vec3(0.0f), glm::quat(1, 0, 0, 0), glm::vec3(1.0f));
     finishScene(scene);

@@ -22,13 +22,6 @@ using metrics::Image;
 
 class RendererTest : public GlTest {};
 
-uint8_t srgbByte(float linear)
-{
-    const float c = std::clamp(linear, 0.0f, 1.0f);
-    const float e = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    return uint8_t(std::lround(e * 255.0f));
-}
-
 struct PixelStats {
     size_t count = 0;
     double cx = 0.0, cy = 0.0; // centroid in pixel-centre coordinates, image order

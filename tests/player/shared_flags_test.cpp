@@ -23,7 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kBenchTool = fs::path(LFD_BINARY_DIR) / "player" / "lfd-bench";
 
 // A valid value for each shared flag ("" for a switch). A flag added to tool_flags.h
 // without an entry here fails the test, so the list cannot fall behind.

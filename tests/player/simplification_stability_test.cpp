@@ -46,20 +46,6 @@ class SimplificationStabilityTest : public GlTest {};
 
 DisplayProfile testProfile() { return smallProfile(8, 160, 120); }
 
-// One view pixel (horizontal, vertical) on the zero-parallax plane, in scene units.
-glm::dvec2 pixelUnits(const DisplayProfile& profile)
-{
-    return viewPixelSizeMm(profile) / fitSceneToDisplay(profile, unitBounds()).mmPerUnit;
-}
-
-uint32_t addVertex(Scene& scene, glm::vec3 p, glm::vec3 n, glm::vec2 uv)
-{
-    scene.vertices.positions.push_back(p);
-    scene.vertices.normals.push_back(n);
-    scene.vertices.uvs.push_back(uv);
-    return uint32_t(scene.vertices.positions.size() - 1);
-}
-
 // A closed ellipsoid about `centre`: radius r across (x, z), half-length h along y,
 // `slices` x `stacks` segments, smooth normals, one vertex per pole, the wrap shared (no
 // seam), uvs all 0 (untextured).

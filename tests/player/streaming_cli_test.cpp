@@ -6,6 +6,7 @@
 #include "player_cli_fixture.h"
 #include "render_test_util.h"
 #include "test_scenes.h"
+#include "tool_run.h"
 
 #include "lfd/pack.h"
 #include "lfd/pack_layout.h"
@@ -47,14 +48,12 @@ PlayRun play(const fs::path& dir, const std::string& args)
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(err)};
 }
 
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-
 class StreamingCliTest : public PlayerCliTest {
 protected:
     StreamingCliTest() : PlayerCliTest("streaming_", "streaming-small") {}
     std::string common() const
     {
-        return "--headless " + q(pack_) + " --display " + q(profile_) + " --views 4 --view-size 48x36 --frames 2";
+        return "--headless " + quoted(pack_) + " --display " + quoted(profile_) + " --views 4 --view-size 48x36 --frames 2";
     }
 };
 
@@ -64,8 +63,8 @@ TEST_F(StreamingCliTest, StreamedAndNotStreamedWriteTheSameViewsAndReportLoading
     for (int streamed = 0; streamed < 2; ++streamed) {
         const fs::path out = dir_ / (streamed ? "streamed" : "eager");
         fs::create_directories(out);
-        const PlayRun r = play(dir_, common() + (streamed ? "" : " --no-streaming") + " --views-out " + q(out / "views") +
-                                     " --stats " + q(out / "stats.json"));
+        const PlayRun r = play(dir_, common() + (streamed ? "" : " --no-streaming") + " --views-out " + quoted(out / "views") +
+                                     " --stats " + quoted(out / "stats.json"));
         ASSERT_EQ(r.status, 0) << r.err;
         stats[streamed] = nlohmann::json::parse(slurp(out / "stats.json"));
     }
@@ -114,7 +113,7 @@ TEST_F(StreamingCliTest, CorruptTexelIsAOneLineErrorNamingTheFile)
     }
     const fs::path bad = dir_ / "corrupt.lfdpack";
     std::ofstream(bad, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-    const PlayRun r = play(dir_, "--headless " + q(bad) + " --display " + q(profile_) + " --views 4 --view-size 48x36");
+    const PlayRun r = play(dir_, "--headless " + quoted(bad) + " --display " + quoted(profile_) + " --views 4 --view-size 48x36");
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_NE(r.err.find(bad.string()), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("TEXL"), std::string::npos) << r.err;

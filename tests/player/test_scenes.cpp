@@ -3,6 +3,8 @@
 #include "scene_bounds.h"
 #include "triangle_stats.h"
 
+#include "lfd/framing.h"
+
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
@@ -136,6 +138,19 @@ SceneBounds unitBounds()
     b.center = glm::vec3(0.0f);
     b.radius = 1.0f;
     return b;
+}
+
+glm::dvec2 pixelUnits(const DisplayProfile& profile)
+{
+    return viewPixelSizeMm(profile) / fitSceneToDisplay(profile, unitBounds()).mmPerUnit;
+}
+
+uint32_t addVertex(Scene& scene, glm::vec3 p, glm::vec3 n, glm::vec2 uv)
+{
+    scene.vertices.positions.push_back(p);
+    scene.vertices.normals.push_back(n);
+    scene.vertices.uvs.push_back(uv);
+    return uint32_t(scene.vertices.positions.size() - 1);
 }
 
 Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec4 b, bool srgb)

@@ -1,6 +1,7 @@
 // Small deterministic scenes built in memory for the player tests (no files needed).
 #pragma once
 
+#include "lfd/display_profile.h"
 #include "lfd/scene.h"
 
 #include <glm/glm.hpp>
@@ -27,6 +28,13 @@ void finishScene(Scene& scene);
 
 // Bounds of the cube [-1, 1]^3 (centre 0, radius 1): a framing the tests can work by hand.
 SceneBounds unitBounds();
+// One view pixel (horizontal, vertical) on the zero-parallax plane, in scene units, for
+// scenes framed by unitBounds().
+glm::dvec2 pixelUnits(const DisplayProfile& profile);
+
+// Appends a vertex with a position, a normal and a uv (the streams the stability scenes
+// use); returns its index.
+uint32_t addVertex(Scene& scene, glm::vec3 p, glm::vec3 n, glm::vec2 uv);
 
 // RGBA8 checker texture (squares of `square` texels) with its full box-filtered mip chain.
 Texture checkerTexture(uint32_t size, uint32_t square, glm::u8vec4 a, glm::u8vec4 b, bool srgb);

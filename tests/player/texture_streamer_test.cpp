@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 class TextureStreamerTest : public GlTest {};
 
-DisplayProfile tinyProfile() { return withViews(prototypeDisplayProfile(), 4, 32, 24); }
+DisplayProfile streamerProfile() { return withViews(prototypeDisplayProfile(), 4, 32, 24); }
 
 fs::path writeScene(const std::string& name, const Scene& scene)
 {
@@ -44,12 +44,12 @@ TEST_F(TextureStreamerTest, StreamedUploadRendersTheSameViewsAsEagerOnceResident
 {
     const fs::path path = writeScene("same.lfdpack", cubeAndSphereScene());
     player::PlayOptions options;
-    player::PlayerSession eager(options, tinyProfile(), readPack(path), "same.lfdpack");
+    player::PlayerSession eager(options, streamerProfile(), readPack(path), "same.lfdpack");
     eager.renderFrame(0.0);
     const player::FrameOutputs want = eager.readOutputs(0);
 
     options.streamChunkBytes = 4096; // many chunks, partial levels
-    player::PlayerSession streamed(options, tinyProfile(), std::make_shared<MappedPack>(path), "same.lfdpack");
+    player::PlayerSession streamed(options, streamerProfile(), std::make_shared<MappedPack>(path), "same.lfdpack");
     ASSERT_NE(streamed.streamer(), nullptr);
     streamed.streamer()->untilResident();
     EXPECT_TRUE(streamed.streamer()->resident());
@@ -68,7 +68,7 @@ TEST_F(TextureStreamerTest, LevelsArriveCoarsestFirstAndTheBaseLevelFollowsThem)
     const fs::path path = writeScene("order.lfdpack", cubeAndSphereScene());
     player::PlayOptions options;
     options.streamChunkBytes = 4096;
-    player::PlayerSession session(options, tinyProfile(), std::make_shared<MappedPack>(path), "order.lfdpack");
+    player::PlayerSession session(options, streamerProfile(), std::make_shared<MappedPack>(path), "order.lfdpack");
     player::TextureStreamer& streamer = *session.streamer();
     const player::GpuScene& scene = session.scene();
     ASSERT_FALSE(scene.cpu().textures.empty());
@@ -92,7 +92,7 @@ TEST_F(TextureStreamerTest, LevelsArriveCoarsestFirstAndTheBaseLevelFollowsThem)
     t.texels = std::vector<uint8_t>(t.texels.end() - 4, t.texels.end());
     t.width = t.height = 1;
     t.mips = {MipLevel{1, 1, 0, 4}};
-    player::PlayerSession reference(options, tinyProfile(), onlyCoarsest, "coarsest");
+    player::PlayerSession reference(options, streamerProfile(), onlyCoarsest, "coarsest");
     reference.renderFrame(0.0);
     const player::FrameOutputs want = reference.readOutputs(0);
     ASSERT_EQ(coarse.views.size(), want.views.size());
@@ -126,7 +126,7 @@ TEST_F(TextureStreamerTest, CorruptTexelsFailTheUploadWithOneLineNamingTheFile)
     const fs::path path = fs::temp_directory_path() / ("lfd_streamer_" + std::to_string(::getpid()) + "_bad.lfdpack");
     std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     player::PlayOptions options;
-    player::PlayerSession session(options, tinyProfile(), std::make_shared<MappedPack>(path), "bad.lfdpack");
+    player::PlayerSession session(options, streamerProfile(), std::make_shared<MappedPack>(path), "bad.lfdpack");
     try {
         session.streamer()->untilResident();
         FAIL() << "corrupt texels accepted";
@@ -214,7 +214,7 @@ TEST_F(TextureStreamerTest, SessionWithAZeroBudgetRefusesThePack)
     player::PlayOptions options;
     options.gpuMemoryBudgetMiB = 0;
     try {
-        player::PlayerSession session(options, tinyProfile(), std::make_shared<MappedPack>(path), "zero.lfdpack");
+        player::PlayerSession session(options, streamerProfile(), std::make_shared<MappedPack>(path), "zero.lfdpack");
         FAIL() << "pack accepted with a zero budget";
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("zero.lfdpack"), std::string::npos) << e.what();

@@ -4,6 +4,7 @@
 // scale, columns), and the key help table against docs/player/display.md and the key handler. The
 // drawn overlay is tested under Xvfb in display_window_test.cpp.
 #include "text_overlay_layout.h"
+#include "tool_run.h"
 #include "window_key_help.h"
 #include "window_readout.h"
 
@@ -245,18 +246,10 @@ TEST(TextOverlayLayout, TabsAlignAColumnAndOddCharactersShowAsQuestionMarks)
 
 // ---- key help: one table, the manual's and the key handler's -----------------------------
 
-std::string readText(const std::filesystem::path& path)
-{
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 // The table lives in lfd-play's manual, docs/player/display.md "On-screen readout and window keys".
 TEST(WindowKeyHelp, ManualTableIsTheKeyHelpTable)
 {
-    const std::string manual = readText(std::filesystem::path(LFD_SOURCE_DIR) / "docs/player/display.md");
+    const std::string manual = readBytes(std::filesystem::path(LFD_SOURCE_DIR) / "docs/player/display.md");
     const size_t begin = manual.find("<!-- window-keys -->"), end = manual.find("<!-- /window-keys -->");
     ASSERT_NE(begin, std::string::npos) << "docs/player/display.md has no <!-- window-keys --> table";
     ASSERT_NE(end, std::string::npos);
@@ -290,7 +283,7 @@ TEST(WindowKeyHelp, ManualTableIsTheKeyHelpTable)
 // Every key window_app.cpp handles is in the table (keypad aliases of = and - aside).
 TEST(WindowKeyHelp, EveryHandledKeyIsListed)
 {
-    const std::string source = readText(std::filesystem::path(LFD_SOURCE_DIR) / "player/app/window_app.cpp");
+    const std::string source = readBytes(std::filesystem::path(LFD_SOURCE_DIR) / "player/app/window_app.cpp");
     const std::map<std::string, std::string> label = {
         {"SPACE", "Space"}, {"PERIOD", "."},      {"LEFT", "Left"},  {"RIGHT", "Right"},     {"ESCAPE", "Esc"},
         {"F1", "F1"},       {"RIGHT_BRACKET", "]"}, {"LEFT_BRACKET", "["}, {"EQUAL", "="},   {"MINUS", "-"},
