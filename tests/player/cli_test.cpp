@@ -42,7 +42,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
+// A tool's exit status with its stdout and stderr apart (tool_run.h's run merges them).
 struct ToolResult {
     int status = -1;
     std::string out, err;
