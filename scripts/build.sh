@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Configures and builds the project into ./build (Release with debug info, warnings on, and a
-# unity build: each library's sources compile in batches, CMakeLists.txt LFD_UNITY_BUILD).
+# unity build: each target's sources compile in batches, CMakeLists.txt LFD_UNITY_BUILD).
 #
 #   bash scripts/build.sh [--target NAME ...] [CMAKE_CONFIGURE_ARGS ...]
 #

@@ -5,6 +5,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -37,14 +38,9 @@ inline RunResult run(const std::string& command)
 
 inline std::string quoted(const std::filesystem::path& p) { return "'" + p.string() + "'"; }
 
-// Lines in a tool's output, a last line without its newline included.
-inline size_t lineCount(const std::string& s)
-{
-    size_t lines = 0;
-    for (char c : s)
-        lines += c == '\n';
-    return lines + (!s.empty() && s.back() != '\n');
-}
+// Lines in a tool's output: its newline characters, since every line a tool prints, the
+// last included, ends with one (a last line without it is not counted).
+inline size_t lineCount(const std::string& s) { return size_t(std::count(s.begin(), s.end(), '\n')); }
 
 #ifdef LFD_BINARY_DIR
 // The tools in this build tree (LFD_BINARY_DIR: its top folder, set by tests/CMakeLists.txt).

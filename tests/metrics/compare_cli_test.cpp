@@ -1,6 +1,7 @@
 // End-to-end tests of lfd-compare: text and JSON output on PNGs written here, the --diff
 // heat map, and one-line errors with a non-zero exit.
 #include "metric_test_images.h"
+#include "tool_run.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -18,6 +19,9 @@ namespace lfd::metrics {
 namespace {
 
 using namespace lfd::metrics::test;
+using lfd::test::lineCount;
+using lfd::test::quoted;
+using lfd::test::readBytes;
 
 const std::string kCompare = std::string(LFD_BINARY_DIR) + "/player/metrics/lfd-compare";
 
@@ -26,24 +30,6 @@ struct RunResult {
     std::string out; // stdout
     std::string err; // stderr
 };
-
-std::string slurp(const fs::path& path)
-{
-    std::ifstream in(path);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::string quoted(const fs::path& p) { return "'" + p.string() + "'"; }
-
-size_t lineCount(const std::string& s)
-{
-    size_t lines = 0;
-    for (char c : s)
-        lines += c == '\n';
-    return lines + (!s.empty() && s.back() != '\n');
-}
 
 std::vector<uint8_t> toBytes(const RgbImage& image)
 {
@@ -76,8 +62,8 @@ protected:
         const int status = std::system((kCompare + " " + arguments + " >" + quoted(out) + " 2>" +
                                         quoted(err)).c_str());
         r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        r.out = slurp(out);
-        r.err = slurp(err);
+        r.out = readBytes(out);
+        r.err = readBytes(err);
         fs::remove(out);
         fs::remove(err);
         return r;

@@ -106,9 +106,9 @@ protected:
     // (the title carries frame times after the first swap); returns the window id.
     std::string start(const std::string& args)
     {
-        const std::string pidFile = (dir_ / "play.pid").string();
+        const fs::path pidFile = dir_ / "play.pid";
         const std::string command = env_ + quoted(kPlay) + " " + args + " > " + quoted(dir_ / "play.log") + " 2>&1 & echo $! > " +
-                                    quoted(fs::path(pidFile));
+                                    quoted(pidFile);
         EXPECT_EQ(std::system(command.c_str()), 0);
         std::ifstream(pidFile) >> pid_;
         std::string window;
