@@ -46,6 +46,12 @@
 // overlap slightly: pixel centres on a cell boundary are never lost to rounding. The
 // overlap is resolved by the depth test (same plane) and the colour minimum.
 #define LFDPR_SPLAT_OVERLAP 1.02
+// ... and, in the visibility pipeline, by this many window pixels: a triangle's vertices are
+// snapped to 1/256 pixel for its coverage test (lfdSnapToSubpixels), so it may own a pixel
+// centre up to 1/362 pixel outside its exact projection, which a cell much smaller than a
+// pixel in some view would not reach by LFDPR_SPLAT_OVERLAP alone. Extra coverage is free
+// of effect: a triangle writes the same word wherever its cells overlap.
+#define LFDPR_SPLAT_SLACK (1.0 / 64.0)
 
 // Invocations per workgroup of the point-indexed compute passes (local_size_x).
 #define LFDPR_GROUP_SIZE 64

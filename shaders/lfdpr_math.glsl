@@ -336,6 +336,24 @@ LFD_FN bool lfdInsideQuad(vec2 a, vec2 b, vec2 c, vec2 d, vec2 p)
            (e0 <= 0.0f && e1 <= 0.0f && e2 <= 0.0f && e3 <= 0.0f);
 }
 
+// lfdInsideQuad with each edge moved outwards by at least `slack` window pixels: the
+// quad's edge functions scaled by their L1 lengths (>= the Euclidean ones, so a point
+// within `slack` of the quad always passes; one within sqrt(2) slack may).
+LFD_FN vec4 lfdQuadEdgeSlack(vec2 a, vec2 b, vec2 c, vec2 d, float slack)
+{
+    vec2 ab = abs(b - a), bc = abs(c - b), cd = abs(d - c), da = abs(a - d);
+    return slack * vec4(ab.x + ab.y, bc.x + bc.y, cd.x + cd.y, da.x + da.y);
+}
+LFD_FN bool lfdInsideQuadWithSlack(vec2 a, vec2 b, vec2 c, vec2 d, vec4 edgeSlack, vec2 p)
+{
+    float e0 = lfdEdge(a, b, p);
+    float e1 = lfdEdge(b, c, p);
+    float e2 = lfdEdge(c, d, p);
+    float e3 = lfdEdge(d, a, p);
+    return (e0 >= -edgeSlack.x && e1 >= -edgeSlack.y && e2 >= -edgeSlack.z && e3 >= -edgeSlack.w) ||
+           (e0 <= edgeSlack.x && e1 <= edgeSlack.y && e2 <= edgeSlack.z && e3 <= edgeSlack.w);
+}
+
 // Conservative rasterisation in the sampling viewport: does the unit pixel square centred
 // at `center` overlap triangle (a, b, c)? Separating-axis test: the two box axes (the
 // caller's bounding box) and the three edge normals; for an edge, the square is outside

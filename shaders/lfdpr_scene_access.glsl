@@ -145,12 +145,16 @@ struct LfdSamplingFrame {
     LfdFrame frame;
     vec2 spacing;
     vec3 origin;
+    vec2 triangleHi; // the triangle's greatest sampling coordinates (its least are (1, 1))
 };
 
 LfdSamplingFrame lfdRecordFrame(vec3 p0, vec3 p1, vec3 p2, vec2 spacing)
 {
     LfdSamplingFrame f;
-    vec3 faceNormal = normalize(cross(p1 - p0, p2 - p0));
+    // The face normal as lfdSetupTriangle computes it (cross / length, not normalize), so the
+    // frame's axes, and v's sign above all, come out as they did there.
+    vec3 faceCross = cross(p1 - p0, p2 - p0);
+    vec3 faceNormal = faceCross / length(faceCross);
     f.frame = lfdAlignFrame(faceNormal, u_lfd.displayX.xyz, u_lfd.displayY.xyz, u_lfd.displayZ.xyz);
     f.spacing = spacing;
     vec2 q0 = lfdSamplingFromScene(p0, p0, f.frame, spacing);
@@ -158,6 +162,7 @@ LfdSamplingFrame lfdRecordFrame(vec3 p0, vec3 p1, vec3 p2, vec2 spacing)
     vec2 q2 = lfdSamplingFromScene(p2, p0, f.frame, spacing);
     vec2 lo = min(min(q0, q1), q2);
     f.origin = lfdSceneFromSampling(lo - vec2(1.0), p0, f.frame, spacing);
+    f.triangleHi = (max(max(q0, q1), q2) - lo) + vec2(1.0); // as lfdPlaceSampling places it
     return f;
 }
 

@@ -21,6 +21,17 @@
 // view pixel centre in any view (lfdMayCoverPixelCentre) emits no points, since none of
 // them could win a pixel. Sub-pixel triangles of dense scenes are mostly such triangles.
 //
+// LFDPR_TRIM_MARGIN (beyond the paper, on by default): the sampling box's first row and
+// column are not sampled. They are the one-cell margin lfdPlaceSampling adds for the paper's
+// conservative rasteriser, and lie wholly below the triangle's least x or y (which it puts
+// at 1), so their cells only touch the triangle: with the closed test of
+// lfdPixelOverlapsTriangle every such cell holding a vertex emits a point, and a sub-pixel
+// triangle gets three or four points where one cell holds all of it. The splat clips each
+// cell to its triangle's box and reaches LFDPR_SPLAT_SLACK pixels past it, which covers
+// what those points wrote (centres that the snapped triangle owns just outside the exact
+// one). A triangle narrower than the rounding of its placement (greatest x or y below 1)
+// keeps that row or column, so that it still emits.
+//
 // Alpha-masked materials (glTF MASK): a cell whose base-colour alpha at the finest LOD
 // any view needs (eq. minLOD) is below the cutoff emits no point, so the visibility pass
 // never needs the material's textures. That test is compiled in only for draws of masked
@@ -38,6 +49,16 @@
 #include "lfdpr_camera_line.glsl"
 
 layout(local_size_x = LFDPR_GROUP_SIZE) in;
+
+// The first sampled column and row of triangle s's box (LFDPR_TRIM_MARGIN above).
+uvec2 firstCell(LfdTriangleSetup s)
+{
+#ifdef LFDPR_TRIM_MARGIN
+    return uvec2(greaterThanEqual(max(max(s.q0, s.q1), s.q2), vec2(1.0)));
+#else
+    return uvec2(0u);
+#endif
+}
 
 layout(location = LFD_LOC_STREAMS) uniform uint u_streams;
 layout(location = LFDPR_LOC_FIRST_WORKGROUP) uniform uint u_firstWorkgroup;
@@ -195,22 +216,23 @@ void main()
 
     // Step 2: count the cells, reserve them, write them (the capacity is never exceeded;
     // the count still grows so the renderer sees the overflow).
+    uvec2 first = firstCell(t.s);
     uint count = 0u;
-    for (uint y = 0u; y < ey; ++y)
-        for (uint x = 0u; x < ex; ++x)
+    for (uint y = first.y; y < ey; ++y)
+        for (uint x = first.x; x < ex; ++x)
             if (emits(t, vec2(x, y) + 0.5))
                 ++count;
     if (count == 0u)
         return;
     uint record = writeRecord(primitive, t);
-    uint first = reservePoints(count);
+    uint index = reservePoints(count);
     uint capacity = u_lfd.counts.y;
-    for (uint y = 0u; y < ey; ++y)
-        for (uint x = 0u; x < ex; ++x)
+    for (uint y = first.y; y < ey; ++y)
+        for (uint x = first.x; x < ex; ++x)
             if (emits(t, vec2(x, y) + 0.5)) {
-                if (first < capacity)
-                    points[first] = LfdprVisibilityPointGpu(record, x | (y << 16));
-                ++first;
+                if (index < capacity)
+                    points[index] = LfdprVisibilityPointGpu(record, x | (y << 16));
+                ++index;
             }
 }
 
@@ -240,13 +262,15 @@ void main()
     }
     barrier();
     Sampled t = s_triangle;
-    uint ex = s_emitting ? uint(t.s.extent.x) : 0u, ey = s_emitting ? uint(t.s.extent.y) : 0u;
+    // The sampled part of the box: columns first.x.. and rows first.y.. of the extent.
+    uvec2 first = firstCell(t.s);
+    uint ex = s_emitting ? uint(t.s.extent.x) - first.x : 0u, ey = s_emitting ? uint(t.s.extent.y) - first.y : 0u;
     uint cells = ex * ey;
 
     // Step 2: each thread counts its cells (cells i, i + group, i + 2 group, ...).
     uint mine = 0u;
     for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))
-        if (emits(t, vec2(c % ex, c / ex) + 0.5))
+        if (emits(t, vec2(first.x + c % ex, first.y + c / ex) + 0.5))
             ++mine;
     uint offset = atomicAdd(s_count, mine);
     barrier();
@@ -264,9 +288,9 @@ void main()
     uint index = s_first + offset;
     uint capacity = u_lfd.counts.y;
     for (uint c = gl_LocalInvocationIndex; c < cells; c += uint(LFDPR_GROUP_SIZE))
-        if (emits(t, vec2(c % ex, c / ex) + 0.5)) {
+        if (emits(t, vec2(first.x + c % ex, first.y + c / ex) + 0.5)) {
             if (index < capacity)
-                points[index] = LfdprVisibilityPointGpu(s_record, (c % ex) | ((c / ex) << 16));
+                points[index] = LfdprVisibilityPointGpu(s_record, (first.x + c % ex) | ((first.y + c / ex) << 16));
             ++index;
         }
 }

@@ -124,17 +124,23 @@ layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) buffer ViewIndex {
 };
 #endif
 
-// The cell's corners projected once onto the camera line (camera-line coherence), the
-// cell enlarged by LFDPR_SPLAT_OVERLAP so neighbouring splats leave no cracks.
-void projectCell(vec3 centre, LfdSamplingFrame f, vec2 viewSize, out LfdLinePoint ca, out LfdLinePoint cb,
+// The cell's corners projected once onto the camera line (camera-line coherence): the
+// cell (sampling coordinates `cell`, its centre) enlarged by LFDPR_SPLAT_OVERLAP so
+// neighbouring splats leave no cracks, and clipped to the triangle's bounding box, since
+// only centres inside the triangle are written. The clip keeps a cell much larger than
+// its triangle (a coarse texture's, around a sub-pixel triangle at its corner) from
+// reaching behind a camera, where its projection would fail, and the window-space slack
+// (LFDPR_SPLAT_SLACK) keeps the centres the snapped triangle owns just past the box. A
+// cell that only touches the box becomes a quad of zero width along it.
+void projectCell(vec2 cell, LfdSamplingFrame f, vec2 viewSize, out LfdLinePoint ca, out LfdLinePoint cb,
                  out LfdLinePoint cc, out LfdLinePoint cd)
 {
-    vec3 halfU = f.frame.u * (0.5 * f.spacing.x * LFDPR_SPLAT_OVERLAP);
-    vec3 halfV = f.frame.v * (0.5 * f.spacing.y * LFDPR_SPLAT_OVERLAP);
-    ca = lfdProjectOnLine(centre - halfU - halfV, viewSize);
-    cb = lfdProjectOnLine(centre + halfU - halfV, viewSize);
-    cc = lfdProjectOnLine(centre + halfU + halfV, viewSize);
-    cd = lfdProjectOnLine(centre - halfU + halfV, viewSize);
+    vec2 lo = max(cell - vec2(0.5 * LFDPR_SPLAT_OVERLAP), vec2(1.0));
+    vec2 hi = max(min(cell + vec2(0.5 * LFDPR_SPLAT_OVERLAP), f.triangleHi), lo);
+    ca = lfdProjectOnLine(lfdSceneFromSampling(lo, f.origin, f.frame, f.spacing), viewSize);
+    cb = lfdProjectOnLine(lfdSceneFromSampling(vec2(hi.x, lo.y), f.origin, f.frame, f.spacing), viewSize);
+    cc = lfdProjectOnLine(lfdSceneFromSampling(hi, f.origin, f.frame, f.spacing), viewSize);
+    cd = lfdProjectOnLine(lfdSceneFromSampling(vec2(lo.x, hi.y), f.origin, f.frame, f.spacing), viewSize);
 }
 
 // The point's triangle (v*) and cell (c*) projected once onto the camera line; false when
@@ -146,11 +152,10 @@ bool projectSplat(LfdprVisibilityPointGpu point, LfdprVisibilityRecordGpu r, Lfd
     vec3 p0, p1, p2;
     lfdTrianglePositions(draw, lfdTriangleVertices(draw, r.primitive), p0, p1, p2);
     LfdSamplingFrame f = lfdRecordFrame(p0, p1, p2, r.spacing);
-    vec3 centre = lfdSceneFromSampling(lfdPointCell(point), f.origin, f.frame, f.spacing);
     v0 = lfdProjectOnLine(p0, viewSize);
     v1 = lfdProjectOnLine(p1, viewSize);
     v2 = lfdProjectOnLine(p2, viewSize);
-    projectCell(centre, f, viewSize, ca, cb, cc, cd);
+    projectCell(lfdPointCell(point), f, viewSize, ca, cb, cc, cd);
     return v0.invW > 0.0 && v1.invW > 0.0 && v2.invW > 0.0 && ca.invW > 0.0 && cb.invW > 0.0 && cc.invW > 0.0 &&
            cd.invW > 0.0;
 }
@@ -163,12 +168,15 @@ void gatherMarks(uint v, int colLo, int colHi, inout int markLo, inout int markH
     markViews[v >> 5] |= 1u << (v & 31u);
 }
 
-// The pixel rows (or columns) both the cell (its four corners' coordinates) and the
-// triangle (its three vertices') cover, clipped to 0..size - 1; empty when x > y.
+// The pixel rows (or columns) both the cell (its four corners' coordinates, widened by
+// LFDPR_SPLAT_SLACK) and the triangle (its three vertices') cover, clipped to
+// 0..size - 1; empty when x > y.
 ivec2 pixelSpan(vec4 cell, vec3 triangle, int size)
 {
-    float lo = max(min(min(cell.x, cell.y), min(cell.z, cell.w)), min(min(triangle.x, triangle.y), triangle.z));
-    float hi = min(max(max(cell.x, cell.y), max(cell.z, cell.w)), max(max(triangle.x, triangle.y), triangle.z));
+    float lo = max(min(min(cell.x, cell.y), min(cell.z, cell.w)) - LFDPR_SPLAT_SLACK,
+                   min(min(triangle.x, triangle.y), triangle.z));
+    float hi = min(max(max(cell.x, cell.y), max(cell.z, cell.w)) + LFDPR_SPLAT_SLACK,
+                   max(max(triangle.x, triangle.y), triangle.z));
     return ivec2(max(int(ceil(lo - 0.5)), 0), min(int(floor(hi - 0.5)), size - 1));
 }
 
@@ -176,8 +184,8 @@ ivec2 pixelSpan(vec4 cell, vec3 triangle, int size)
 // 0..size - 1 (pixelSpan's test with the cell alone: its span holds pixelSpan's).
 bool cellSpansCentre(vec4 cell, int size)
 {
-    float lo = min(min(cell.x, cell.y), min(cell.z, cell.w));
-    float hi = max(max(cell.x, cell.y), max(cell.z, cell.w));
+    float lo = min(min(cell.x, cell.y), min(cell.z, cell.w)) - LFDPR_SPLAT_SLACK;
+    float hi = max(max(cell.x, cell.y), max(cell.z, cell.w)) + LFDPR_SPLAT_SLACK;
     return max(int(ceil(lo - 0.5)), 0) <= min(int(floor(hi - 0.5)), size - 1);
 }
 
@@ -230,13 +238,13 @@ bool centresDecided(ivec4 box)
 
 // Pixel centres of `box` inside the cell's window quad (a, b, c, d), as bits
 // (y - box.y) * columns + (x - box.x) (a box centresDecided decides).
-uint cellCentres(ivec4 box, vec2 a, vec2 b, vec2 c, vec2 d)
+uint cellCentres(ivec4 box, vec2 a, vec2 b, vec2 c, vec2 d, vec4 slack)
 {
     int columns = box.z - box.x + 1;
     uint bits = 0u;
     for (int y = box.y; y <= box.w; ++y)
         for (int x = box.x; x <= box.z; ++x)
-            if (lfdInsideQuad(a, b, c, d, vec2(x, y) + 0.5))
+            if (lfdInsideQuadWithSlack(a, b, c, d, slack, vec2(x, y) + 0.5))
                 bits |= 1u << uint((y - box.y) * columns + (x - box.x));
     return bits;
 }
@@ -281,7 +289,7 @@ void writeSample(uint pixel, uint key, uint record, uint index)
 // `record` is what the view words hold; `index` the point's (the test hook's races key on
 // it). Returns whether any pixel was written.
 bool splatIntoView(uint view, uint viewCount, int viewWidth, ivec4 box, bool decided, uint centres, vec2 a,
-                   vec2 b, vec2 c, vec2 d, LfdViewTriangle t, uvec2 keyRange, uint record, uint index)
+                   vec2 b, vec2 c, vec2 d, vec4 slack, LfdViewTriangle t, uvec2 keyRange, uint record, uint index)
 {
     bool wrote = false;
     int columns = box.z - box.x + 1;
@@ -289,7 +297,7 @@ bool splatIntoView(uint view, uint viewCount, int viewWidth, ivec4 box, bool dec
         for (int x = box.x; x <= box.z; ++x) {
             vec2 p = vec2(x, y) + 0.5;
             bool inCell = decided ? (centres & (1u << uint((y - box.y) * columns + (x - box.x)))) != 0u
-                                  : lfdInsideQuad(a, b, c, d, p);
+                                  : lfdInsideQuadWithSlack(a, b, c, d, slack, p);
             if (!inCell)
                 continue;
             vec3 edges = lfdEdgeValues(t, p);
@@ -332,7 +340,8 @@ ivec2 splatView(uint view, uint viewCount, LfdSplatPoint sp, ivec2 viewPixels, b
         return ivec2(0, -1);
     }
     bool decided = centresDecided(box);
-    uint centres = decided ? cellCentres(box, a, b, c, d) : 0u;
+    vec4 slack = lfdQuadEdgeSlack(a, b, c, d, LFDPR_SPLAT_SLACK);
+    uint centres = decided ? cellCentres(box, a, b, c, d, slack) : 0u;
     if (decided && centres == 0u) {
         LFDPR_COUNT(culled, 1u);
         LFDPR_COUNT(culledCentres, 1u);
@@ -347,7 +356,8 @@ ivec2 splatView(uint view, uint viewCount, LfdSplatPoint sp, ivec2 viewPixels, b
 
     // Step 6: covered pixels, their plane depth, the atomic depth test.
     bool wrote =
-        splatIntoView(view, viewCount, viewPixels.x, box, decided, centres, a, b, c, d, t, keyRange, record, index);
+        splatIntoView(view, viewCount, viewPixels.x, box, decided, centres, a, b, c, d, slack, t, keyRange, record,
+                      index);
     return wrote ? columns : ivec2(0, -1);
 }
 

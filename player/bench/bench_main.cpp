@@ -74,7 +74,7 @@ void addBenchFlags(CLI::App& app, BenchFlags& flags, lfd::player::BenchOptions& 
     app.add_flag("--lfdpr-variants", flags.variants,
                  "also time the paper's pipeline (lfdpr-paper) and lfdpr with each innovation "
                  "disabled (lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting, lfdpr-no-pixel-culling, "
-                 "lfdpr-no-cell-scaling, lfdpr-no-mv-mipmapping)");
+                 "lfdpr-no-margin-trim, lfdpr-no-cell-scaling, lfdpr-no-mv-mipmapping)");
     flags.shared.fps = options.fps;
     flags.shared.turntablePeriod = options.turntablePeriod;
     flags.shared.gstdFactor = options.rendererOptions.gstd.factor;

@@ -41,6 +41,8 @@ void addLfdprFlags(CLI::App& app, SharedFlags& flags)
                  "lfdpr paper pipeline: texture values at LOD 0 (no multiview mipmapping)");
     app.add_flag("--no-pixel-culling", flags.noPixelCulling,
                  "lfdpr: sample every triangle, also those that hold no view pixel centre");
+    app.add_flag("--no-margin-trim", flags.noMarginTrim,
+                 "lfdpr visibility pipeline: also sample the cells of the sampling box's margin, as the paper");
     app.add_flag("--lfdpr-work-counters", flags.lfdprWorkCounters,
                  "lfdpr visibility pipeline: count the splat's and the shading's work on the GPU (work_* stats: "
                  "point-views culled, samples, atomics, words lowered, shadings; docs/player/8k-panels.md)");
@@ -102,6 +104,7 @@ void finishFrameAndLfdprFlags(SharedFlags& flags)
     flags.textureSplatting = !flags.noTextureSplatting;
     flags.mvMipmapping = !flags.noMvMipmapping;
     flags.pixelCulling = !flags.noPixelCulling;
+    flags.marginTrim = !flags.noMarginTrim;
     try { // the parsers name their flag
         flags.atomics = parseLfdprAtomics(flags.atomicsText);
         flags.pipeline = parseLfdprPipeline(flags.pipelineText);
@@ -242,6 +245,7 @@ void applySharedFlags(const SharedFlags& flags, RendererOptions& options)
     options.lfdpr.textureSplatting = flags.textureSplatting;
     options.lfdpr.multiviewMipmapping = flags.mvMipmapping;
     options.lfdpr.pixelCentreCulling = flags.pixelCulling;
+    options.lfdpr.trimSamplingMargin = flags.marginTrim;
     options.lfdpr.cellScale = flags.lfdprCellScale;
     options.lfdpr.countWork = flags.lfdprWorkCounters;
     options.lfdpr.atomics = flags.atomics;

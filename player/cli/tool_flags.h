@@ -44,7 +44,7 @@ struct SharedFlags {
     std::vector<Reconstruction> aa;                         // --aa / --reconstruction
     std::vector<Supersampling> ss;                          // --ss
     // lfdpr's switches (the lfdpr-* variants of the registry start from them).
-    bool lfdSampling = true, textureSplatting = true, mvMipmapping = true, pixelCulling = true;
+    bool lfdSampling = true, textureSplatting = true, mvMipmapping = true, pixelCulling = true, marginTrim = true;
     uint32_t lfdprCellScale = LfdprOptions{}.cellScale;     // --lfdpr-cell-scale
     bool lfdprWorkCounters = false;                         // --lfdpr-work-counters
     LfdprOptions::Atomics atomics = LfdprOptions{}.atomics;  // --atomics
@@ -62,7 +62,7 @@ struct SharedFlags {
     std::string viewSizeText, lfdprWorkText = "auto", lfdprAnisoText = "auto";
     std::string viewsText, aaText = "none", ssText = "1", atomicsText = "auto", pipelineText = "visibility";
     bool noTurntable = false, noLfdSampling = false, noTextureSplatting = false, noMvMipmapping = false,
-         noPixelCulling = false;
+         noPixelCulling = false, noMarginTrim = false;
     CLI::Option *viewSizeOpt = nullptr, *viewsOpt = nullptr, *framesOpt = nullptr;
 };
 

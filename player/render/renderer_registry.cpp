@@ -49,6 +49,8 @@ const std::vector<Entry>& registry()
         lfdprVariant("lfdpr-no-texture-splatting", [](LfdprOptions& o) { o.textureSplatting = false; }),
         // Beyond the paper: the visibility pipeline without pixel-centre culling.
         lfdprVariant("lfdpr-no-pixel-culling", [](LfdprOptions& o) { o.pixelCentreCulling = false; }),
+        // Beyond the paper: the visibility pipeline sampling the margin cells as well.
+        lfdprVariant("lfdpr-no-margin-trim", [](LfdprOptions& o) { o.trimSamplingMargin = false; }),
         // Beyond the paper: the visibility pipeline at the paper's point density.
         lfdprVariant("lfdpr-no-cell-scaling", [](LfdprOptions& o) { o.cellScale = 1; }),
         lfdprVariant("lfdpr-no-mv-mipmapping",

@@ -24,7 +24,7 @@ struct RendererOptions {
 // The methods: mvr, mvr-layered, lfdpr, gstd.
 std::vector<std::string> rendererNames();
 // The lfdpr variants: lfdpr-paper, lfdpr-no-lfd-sampling, lfdpr-no-texture-splatting,
-// lfdpr-no-pixel-culling, lfdpr-no-cell-scaling, lfdpr-no-mv-mipmapping.
+// lfdpr-no-pixel-culling, lfdpr-no-margin-trim, lfdpr-no-cell-scaling, lfdpr-no-mv-mipmapping.
 std::vector<std::string> lfdprVariantNames();
 // Every name createRenderer accepts: the methods, then the variants, and the experiments
 // selectable by name only (lfdpr-direct, docs/player/direct-splat.md).

@@ -313,6 +313,37 @@ TEST(LfdprMath, ConservativePixelOverlap)
     EXPECT_FALSE(lfdPixelOverlapsTriangle(vec2(4.5f, 1.5f), vec2(0.2f, 0.5f), vec2(9.0f, 0.5f), vec2(5.0f, 0.5f)));
 }
 
+TEST(LfdprMath, QuadSlackWidensEveryEdgeByAtLeastItsPixels)
+{
+    // Square (1, 1)-(3, 3), counter-clockwise: each edge is 2 long on one axis, so its L1
+    // length is 2 and its edge function grows by 2 per pixel of distance; a slack of 0.25 px
+    // is 0.5 in edge-function units.
+    const vec2 a(1, 1), b(3, 1), c(3, 3), d(1, 3);
+    const vec4 slack = lfdQuadEdgeSlack(a, b, c, d, 0.25f);
+    EXPECT_EQ(slack, vec4(0.5f));
+    EXPECT_TRUE(lfdInsideQuadWithSlack(a, b, c, d, slack, vec2(2.0f, 2.0f)));
+    EXPECT_TRUE(lfdInsideQuadWithSlack(a, b, c, d, slack, vec2(0.8f, 2.0f)));  // 0.2 px outside
+    EXPECT_FALSE(lfdInsideQuadWithSlack(a, b, c, d, slack, vec2(0.7f, 2.0f))); // 0.3 px outside
+    EXPECT_FALSE(lfdInsideQuad(a, b, c, d, vec2(0.8f, 2.0f)));
+    // Either winding.
+    EXPECT_TRUE(lfdInsideQuadWithSlack(d, c, b, a, slack, vec2(3.2f, 2.0f)));
+    // A diagonal edge's L1 length exceeds its length (by up to sqrt(2)): a point 0.25 px
+    // outside it in Euclidean distance passes, one 0.36 px outside does not.
+    const vec2 p(0, 0), q(2, 2), r(0, 4), s(-2, 2);
+    const vec4 diagonal = lfdQuadEdgeSlack(p, q, r, s, 0.25f);
+    EXPECT_EQ(diagonal, vec4(1.0f));
+    const vec2 outward = glm::normalize(vec2(1, -1)); // outside edge p-q
+    EXPECT_TRUE(lfdInsideQuadWithSlack(p, q, r, s, diagonal, vec2(1, 1) + 0.25f * outward));
+    EXPECT_TRUE(lfdInsideQuadWithSlack(p, q, r, s, diagonal, vec2(1, 1) + 0.35f * outward));
+    EXPECT_FALSE(lfdInsideQuadWithSlack(p, q, r, s, diagonal, vec2(1, 1) + 0.36f * outward));
+    // A quad of zero width (a cell clipped to the edge of its triangle's box) holds the
+    // points within the slack of its segment.
+    const vec2 e(5, 1), f(5, 3);
+    const vec4 thin = lfdQuadEdgeSlack(e, e, f, f, 0.25f);
+    EXPECT_TRUE(lfdInsideQuadWithSlack(e, e, f, f, thin, vec2(5.2f, 2.0f)));
+    EXPECT_FALSE(lfdInsideQuadWithSlack(e, e, f, f, thin, vec2(5.3f, 2.0f)));
+}
+
 TEST(LfdprMath, ClampedBarycentricsStayOnTheTriangle)
 {
     const vec2 a(0, 0), b(4, 0), c(0, 4);

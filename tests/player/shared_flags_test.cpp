@@ -54,6 +54,7 @@ const std::map<std::string, std::string>& sampleValues()
         {"--no-texture-splatting", ""},
         {"--no-mv-mipmapping", ""},
         {"--no-pixel-culling", ""},
+        {"--no-margin-trim", ""},
         {"--lfdpr-work-counters", ""},
         {"--lfdpr-cell-scale", "1"},
         {"--atomics", "32"},

@@ -32,13 +32,16 @@ void dispatchCovering(uint32_t n)
 
 } // namespace
 
-LfdprVisibilityPointGeneration::LfdprVisibilityPointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork)
+LfdprVisibilityPointGeneration::LfdprVisibilityPointGeneration(bool pixelCentreCulling, bool trimMargin,
+                                                               uint32_t cellScale, bool gpuWork)
 {
     for (int alpha = 0; alpha < 2; ++alpha)
         for (int large = 0; large < 2; ++large) {
             std::vector<std::string> defines;
             if (pixelCentreCulling)
                 defines.emplace_back("LFDPR_PIXEL_CENTRE_CULLING 1");
+            if (trimMargin)
+                defines.emplace_back("LFDPR_TRIM_MARGIN 1");
             if (alpha)
                 defines.emplace_back("LFDPR_ALPHA_TEST 1");
             if (large)

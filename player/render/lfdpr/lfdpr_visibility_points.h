@@ -20,10 +20,11 @@ class GpuScene;
 class LfdprVisibilityPointGeneration {
 public:
     // Builds the programs (per pass, with and without alpha test); `pixelCentreCulling`
-    // compiles in LFDPR_PIXEL_CENTRE_CULLING (LfdprOptions::pixelCentreCulling);
+    // compiles in LFDPR_PIXEL_CENTRE_CULLING (LfdprOptions::pixelCentreCulling),
+    // `trimMargin` LFDPR_TRIM_MARGIN (LfdprOptions::trimSamplingMargin);
     // cellScale > 1 compiles in LFDPR_CELL_SCALE (LfdprOptions::cellScale) for the programs
     // of materials without an alpha test; `gpuWork` LFDPR_WORK_GPU (lfdpr_work_shape.glsl).
-    LfdprVisibilityPointGeneration(bool pixelCentreCulling, uint32_t cellScale, bool gpuWork);
+    LfdprVisibilityPointGeneration(bool pixelCentreCulling, bool trimMargin, uint32_t cellScale, bool gpuWork);
 
     // The workgroup table and the large-triangle queues for `scene`'s draws (again only
     // when the scene changes).

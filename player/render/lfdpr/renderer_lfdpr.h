@@ -58,6 +58,14 @@ struct LfdprOptions {
     // sub-pixel triangles generate and splat fewer points. false: every triangle is sampled
     // as in the paper (the point set then equals the paper pipeline's).
     bool pixelCentreCulling = true;
+    // Beyond the paper, visibility pipeline only: the sampling box's one-cell margin on its
+    // low sides (for the paper's conservative rasteriser) is not sampled. Those cells lie
+    // wholly outside the triangle and only touch it, yet the closed overlap test gives each
+    // that holds a vertex a point: a sub-pixel triangle gets three or four points where one
+    // cell holds it. The splat clips every cell to its triangle's box and reaches
+    // LFDPR_SPLAT_SLACK pixels past it, so the views are unchanged (tested). false: the margin
+    // is sampled as in the paper.
+    bool trimSamplingMargin = true;
     // Beyond the paper, visibility pipeline only: each point's cell spans cellScale x
     // cellScale of the paper's sampling spacings (so cellScale^2 fewer points on triangles
     // that span several cells). Each pixel is shaded from its winning point's triangle at

@@ -57,7 +57,7 @@ class LfdprVisibilityRenderer final : public LfdprRenderer {
 public:
     explicit LfdprVisibilityRenderer(const LfdprOptions& options)
         : options_(options), k_(LfdprConstants::get()), gpuWork_(lfdprGpuWorkShape(options.workShape)),
-          pointGeneration_(options.pixelCentreCulling, options.cellScale, gpuWork_),
+          pointGeneration_(options.pixelCentreCulling, options.trimSamplingMargin, options.cellScale, gpuWork_),
           shading_(lfdprUseInt64(options.atomics), gpuWork_, lfdprHardwareAniso(options.anisoFilter),
                    options.testIndexRaces, options.countWork, options.direct != LfdprOptions::Direct::Off)
     {
@@ -270,6 +270,7 @@ private:
             {"lfd_sampling", options_.lfdBiasedSampling ? 1.0 : 0.0},
             {"texture_splatting", options_.textureSplatting ? 1.0 : 0.0},
             {"pixel_centre_culling", options_.pixelCentreCulling ? 1.0 : 0.0},
+            {"trim_sampling_margin", options_.trimSamplingMargin ? 1.0 : 0.0},
             {"cell_scale", double(options_.cellScale)},
             {"work_shape_gpu", gpuWork_ ? 1.0 : 0.0},
             {"aniso_hardware", shading_.hardwareAniso() ? 1.0 : 0.0},
