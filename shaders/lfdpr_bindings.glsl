@@ -226,7 +226,8 @@ struct LfdprVisibilityPointGpu {
 struct LfdprVisibilityRecordGpu {
     uint draw;       // LfdprVisibilityDrawGpu index
     uint primitive;  // triangle within the draw
-    vec2 spacing;    // along T_align's U and V (texture splatting, coarsening applied)
+    vec2 spacing;    // along T_align's U and V (texture splatting, coarsening applied),
+                     // signed with the frame's choices (lfdSignedSpacing)
 };
 
 // One workgroup of compute point generation (std430): LFDPR_GROUP_SIZE consecutive

@@ -132,21 +132,56 @@ struct LfdFrame {
     vec3 n; // sampling z: the triangle normal (u x v)
 };
 
-LFD_FN LfdFrame lfdAlignFrame(vec3 faceNormal, vec3 displayX, vec3 displayY, vec3 displayZ)
+// The frame's two discrete choices, as bits: 1, u from the depth axis (display x projects
+// to almost nothing); 2, v negated so that it points up. Each is decided by a sign or a
+// threshold that a nearly horizontal (or nearly side-on) triangle sits on, where two
+// programs that round differently could decide apart: the visibility pipeline stores the
+// choices with the triangle's record (lfdSignedSpacing), so the splat rebuilds the very
+// frame point generation sampled in (lfdAlignFrameWith).
+LFD_FN int lfdAlignFrameChoices(vec3 faceNormal, vec3 displayX, vec3 displayY, vec3 displayZ)
 {
     vec3 n = normalize(faceNormal);
     vec3 h = displayX - n * dot(n, displayX);
-    if (dot(h, h) < 1e-6f)
+    int choices = 0;
+    if (dot(h, h) < 1e-6f) {
         h = displayZ - n * dot(n, displayZ);
+        choices = 1;
+    }
+    vec3 v = cross(n, normalize(h));
+    if (dot(v, displayY) < 0.0f)
+        choices += 2;
+    return choices;
+}
+
+LFD_FN LfdFrame lfdAlignFrameWith(vec3 faceNormal, vec3 displayX, vec3 displayZ, int choices)
+{
+    vec3 n = normalize(faceNormal);
+    vec3 h = (choices & 1) != 0 ? displayZ - n * dot(n, displayZ) : displayX - n * dot(n, displayX);
     vec3 u = normalize(h);
     vec3 v = cross(n, u);
-    if (dot(v, displayY) < 0.0f)
+    if ((choices & 2) != 0)
         v = -v;
     LfdFrame frame;
     frame.u = u;
     frame.v = normalize(v);
     frame.n = cross(frame.u, frame.v);
     return frame;
+}
+
+LFD_FN LfdFrame lfdAlignFrame(vec3 faceNormal, vec3 displayX, vec3 displayY, vec3 displayZ)
+{
+    return lfdAlignFrameWith(faceNormal, displayX, displayZ, lfdAlignFrameChoices(faceNormal, displayX, displayY, displayZ));
+}
+
+// A record's spacings with the frame's choices in their signs (spacings are positive):
+// x negative for choice 1, y negative for choice 2 (lfdAlignFrameChoices).
+LFD_FN vec2 lfdSignedSpacing(vec2 spacing, int choices)
+{
+    return vec2((choices & 1) != 0 ? -spacing.x : spacing.x, (choices & 2) != 0 ? -spacing.y : spacing.y);
+}
+LFD_FN int lfdSpacingChoices(vec2 signedSpacing)
+{
+    return (signedSpacing.x < 0.0f ? 1 : 0) + (signedSpacing.y < 0.0f ? 2 : 0);
 }
 
 // ---------------------------------------------------------------------------------------

@@ -148,14 +148,17 @@ struct LfdSamplingFrame {
     vec2 triangleHi; // the triangle's greatest sampling coordinates (its least are (1, 1))
 };
 
-LfdSamplingFrame lfdRecordFrame(vec3 p0, vec3 p1, vec3 p2, vec2 spacing)
+LfdSamplingFrame lfdRecordFrame(vec3 p0, vec3 p1, vec3 p2, vec2 signedSpacing)
 {
     LfdSamplingFrame f;
-    // The face normal as lfdSetupTriangle computes it (cross / length, not normalize), so the
-    // frame's axes, and v's sign above all, come out as they did there.
+    // The face normal as lfdSetupTriangle computes it (cross / length, not normalize), and
+    // the frame's choices as point generation made them (the spacings' signs,
+    // lfdSignedSpacing), so the frame comes out as it did there: a v of the other sign would
+    // put the point's cells in mirrored places.
+    vec2 spacing = abs(signedSpacing);
     vec3 faceCross = cross(p1 - p0, p2 - p0);
     vec3 faceNormal = faceCross / length(faceCross);
-    f.frame = lfdAlignFrame(faceNormal, u_lfd.displayX.xyz, u_lfd.displayY.xyz, u_lfd.displayZ.xyz);
+    f.frame = lfdAlignFrameWith(faceNormal, u_lfd.displayX.xyz, u_lfd.displayZ.xyz, lfdSpacingChoices(signedSpacing));
     f.spacing = spacing;
     vec2 q0 = lfdSamplingFromScene(p0, p0, f.frame, spacing);
     vec2 q1 = lfdSamplingFromScene(p1, p0, f.frame, spacing);

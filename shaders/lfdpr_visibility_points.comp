@@ -152,7 +152,9 @@ bool emits(Sampled t, vec2 q)
 uint writeRecord(uint primitive, Sampled t)
 {
     uint record = atomicAdd(vis.recordCount, 1u);
-    records[record] = LfdprVisibilityRecordGpu(t.draw, primitive, t.s.spacing);
+    // The spacings carry the frame's choices in their signs (lfdSignedSpacing), so the splat
+    // rebuilds this very frame (lfdRecordFrame).
+    records[record] = LfdprVisibilityRecordGpu(t.draw, primitive, lfdSignedSpacing(t.s.spacing, t.s.frameChoices));
     return record;
 }
 

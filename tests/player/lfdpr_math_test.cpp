@@ -117,6 +117,34 @@ TEST(LfdprMath, AlignFrameIsOrthonormalInPlaneAndHorizontal)
     EXPECT_NEAR(glm::dot(nearly.u, nearly.v), 0.0f, 1e-5f);
 }
 
+TEST(LfdprMath, AlignFrameChoicesRebuildTheSameFrame)
+{
+    // The frame rebuilt from its recorded choices is the frame, bit for bit.
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int i = 0; i < 500; ++i) {
+        const vec3 n = glm::normalize(vec3(u(rng), u(rng), u(rng)));
+        const int choices = lfdAlignFrameChoices(n, kX, kY, kZ);
+        const LfdFrame a = lfdAlignFrame(n, kX, kY, kZ), b = lfdAlignFrameWith(n, kX, kZ, choices);
+        EXPECT_EQ(a.u, b.u);
+        EXPECT_EQ(a.v, b.v);
+        EXPECT_EQ(choices, lfdSpacingChoices(lfdSignedSpacing(vec2(0.5f, 2.0f), choices)));
+        EXPECT_EQ(glm::abs(lfdSignedSpacing(vec2(0.5f, 2.0f), choices)), vec2(0.5f, 2.0f));
+    }
+    // Hand-worked: a floor (n = y) keeps v = y x x = -z (no choice), its underside (n = -y)
+    // gets v = -y x x = +z (no choice either); a side wall (n = x) takes u from the depth axis.
+    EXPECT_EQ(lfdAlignFrameChoices(kY, kX, kY, kZ), 0);
+    EXPECT_EQ(lfdAlignFrameChoices(kX, kX, kY, kZ) & 1, 1);
+    // Where the sign test sits on its edge (a floor tilted by 1e-7 rad, within rounding), two
+    // normals that differ by rounding may choose apart; rebuilt with one of them's choices,
+    // the other's frame keeps the same v.
+    const vec3 up = glm::normalize(vec3(0.0f, 1.0f, 1e-7f)), down = glm::normalize(vec3(0.0f, 1.0f, -1e-7f));
+    const int chosen = lfdAlignFrameChoices(up, kX, kY, kZ);
+    EXPECT_NE(chosen, lfdAlignFrameChoices(down, kX, kY, kZ)) << "the two normals decide apart";
+    EXPECT_GT(glm::dot(lfdAlignFrameWith(up, kX, kZ, chosen).v, lfdAlignFrameWith(down, kX, kZ, chosen).v),
+              0.99f);
+}
+
 TEST(LfdprMath, ClosestPointToTheViewingLine)
 {
     // The viewing line is y = 0, z = D (direction x).
