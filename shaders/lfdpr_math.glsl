@@ -130,6 +130,7 @@ struct LfdFrame {
     vec3 u; // sampling x: the triangle's "horizontal" axis
     vec3 v; // sampling y: the triangle's "vertical" axis
     vec3 n; // sampling z: the triangle normal (u x v)
+    int choices; // lfdAlignFrameChoices: what lfdAlignFrameWith needs to rebuild this frame
 };
 
 // The frame's two discrete choices, as bits: 1, u from the depth axis (display x projects
@@ -165,6 +166,7 @@ LFD_FN LfdFrame lfdAlignFrameWith(vec3 faceNormal, vec3 displayX, vec3 displayZ,
     frame.u = u;
     frame.v = normalize(v);
     frame.n = cross(frame.u, frame.v);
+    frame.choices = choices;
     return frame;
 }
 
@@ -361,24 +363,10 @@ LFD_FN bool lfdInsideTriangle(vec2 a, vec2 b, vec2 c, vec2 p)
 
 // Convex quad (either winding) contains p, edges inclusive: a projected splat cell
 // (splats overlap slightly, so samples on a shared cell edge are never lost).
-LFD_FN bool lfdInsideQuad(vec2 a, vec2 b, vec2 c, vec2 d, vec2 p)
-{
-    float e0 = lfdEdge(a, b, p);
-    float e1 = lfdEdge(b, c, p);
-    float e2 = lfdEdge(c, d, p);
-    float e3 = lfdEdge(d, a, p);
-    return (e0 >= 0.0f && e1 >= 0.0f && e2 >= 0.0f && e3 >= 0.0f) ||
-           (e0 <= 0.0f && e1 <= 0.0f && e2 <= 0.0f && e3 <= 0.0f);
-}
-
-// lfdInsideQuad with each edge moved outwards by at least `slack` window pixels: the
-// quad's edge functions scaled by their L1 lengths (>= the Euclidean ones, so a point
-// within `slack` of the quad always passes; one within sqrt(2) slack may).
-LFD_FN vec4 lfdQuadEdgeSlack(vec2 a, vec2 b, vec2 c, vec2 d, float slack)
-{
-    vec2 ab = abs(b - a), bc = abs(c - b), cd = abs(d - c), da = abs(a - d);
-    return slack * vec4(ab.x + ab.y, bc.x + bc.y, cd.x + cd.y, da.x + da.y);
-}
+// lfdInsideQuadWithSlack moves each edge outwards by edgeSlack, in edge-function units:
+// lfdQuadEdgeSlack scales a slack in pixels by the edges' L1 lengths (>= the Euclidean
+// ones, so a point within `slack` pixels of the quad always passes; one within sqrt(2)
+// slack may).
 LFD_FN bool lfdInsideQuadWithSlack(vec2 a, vec2 b, vec2 c, vec2 d, vec4 edgeSlack, vec2 p)
 {
     float e0 = lfdEdge(a, b, p);
@@ -387,6 +375,15 @@ LFD_FN bool lfdInsideQuadWithSlack(vec2 a, vec2 b, vec2 c, vec2 d, vec4 edgeSlac
     float e3 = lfdEdge(d, a, p);
     return (e0 >= -edgeSlack.x && e1 >= -edgeSlack.y && e2 >= -edgeSlack.z && e3 >= -edgeSlack.w) ||
            (e0 <= edgeSlack.x && e1 <= edgeSlack.y && e2 <= edgeSlack.z && e3 <= edgeSlack.w);
+}
+LFD_FN bool lfdInsideQuad(vec2 a, vec2 b, vec2 c, vec2 d, vec2 p)
+{
+    return lfdInsideQuadWithSlack(a, b, c, d, vec4(0.0f), p);
+}
+LFD_FN vec4 lfdQuadEdgeSlack(vec2 a, vec2 b, vec2 c, vec2 d, float slack)
+{
+    vec2 ab = abs(b - a), bc = abs(c - b), cd = abs(d - c), da = abs(a - d);
+    return slack * vec4(ab.x + ab.y, bc.x + bc.y, cd.x + cd.y, da.x + da.y);
 }
 
 // Conservative rasterisation in the sampling viewport: does the unit pixel square centred

@@ -14,7 +14,6 @@ struct LfdTriangleSetup {
     bool doubleSided;
     bool mirrored;      // node transform flips the winding
     LfdFrame frame;     // T_align rows
-    int frameChoices;   // lfdAlignFrameChoices of the frame
     vec2 spacing;       // final spacings (texture splatting and coarsening applied)
     vec2 q0;            // sampling coordinates of the vertices, margin shift applied
     vec2 q1;
@@ -161,8 +160,7 @@ bool lfdSetupTriangle(vec3 p0, vec3 p1, vec3 p2, uint outside0, uint outside1, u
 
     // Step 6: T_align and S_ortho: sampling coordinates of the vertices (p0 at the origin);
     // beyond LFDPR_MAX_TILES tiles the triangle is sampled coarser.
-    s.frameChoices = lfdAlignFrameChoices(faceNormal, displayX, displayY, displayZ);
-    s.frame = lfdAlignFrameWith(faceNormal, displayX, displayZ, s.frameChoices);
+    s.frame = lfdAlignFrame(faceNormal, displayX, displayY, displayZ);
     lfdPlaceSampling(p0, p1, p2, spacing, s);
 
     // Step 7: multiview mipmapping setup (eqs. minVPUVSize, maxVPUVSize).

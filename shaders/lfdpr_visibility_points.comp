@@ -154,7 +154,7 @@ uint writeRecord(uint primitive, Sampled t)
     uint record = atomicAdd(vis.recordCount, 1u);
     // The spacings carry the frame's choices in their signs (lfdSignedSpacing), so the splat
     // rebuilds this very frame (lfdRecordFrame).
-    records[record] = LfdprVisibilityRecordGpu(t.draw, primitive, lfdSignedSpacing(t.s.spacing, t.s.frameChoices));
+    records[record] = LfdprVisibilityRecordGpu(t.draw, primitive, lfdSignedSpacing(t.s.spacing, t.s.frame.choices));
     return record;
 }
 
