@@ -160,6 +160,10 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_UNIT_MATERIALS 17    // RGBA32F: MaterialGpu, 4 texels each (flags as float bits)
 #define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
 #define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI the winner's record (32-bit path)
+// 32-bit path: the record word's top bit, set where two triangles' points wrote the same
+// depth key (a tie) so that the shading repairs the pixel to the lower record
+// (lfdpr_visibility_splat.comp); records stay below it (drawn triangles < 2^31 - 1).
+#define LFDPR_RECORD_TIED 0x80000000u
 
 #define LFDPR_LOC_FIRST_WORKGROUP 7 // lfdpr_visibility_points.comp: the dispatch's first LfdprVisibilityWorkgroupGpu
 #define LFDPR_LOC_WORKGROUPS 8     // lfdpr_visibility_points.comp: LfdprVisibilityWorkgroupGpu entries it covers
@@ -238,7 +242,8 @@ struct LfdprVisibilityWorkgroupGpu {
     uint draw;           // LfdprVisibilityDrawGpu index
     uint firstPrimitive; // its first triangle within the draw
     uint primitives;     // triangles it samples (1..LFDPR_GROUP_SIZE)
-    uint pad0;
+    uint firstRecord;    // the record slot of its first triangle: the drawn-triangle index
+                         // (draws in order), so records are numbered in draw order
 };
 
 // One draw (std430).
@@ -255,7 +260,7 @@ struct LfdprVisibilityDrawGpu {
 // overflow - never waiting for them.
 struct LfdprVisibilityCountersGpu {
     uint pointCount;     // points generated (may exceed the capacity: overflow)
-    uint recordCount;    // emitting triangles
+    uint recordCount;    // emitting triangles (records sit at their drawn-triangle slots)
     uint oversizedCount; // larger than one sampling tile
     uint coarsenedCount; // larger than LFDPR_MAX_TILES tiles (sampled coarser)
     uint largeCount;     // sampled by a workgroup

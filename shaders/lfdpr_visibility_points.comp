@@ -78,7 +78,7 @@ layout(std430, binding = LFDPR_SSBO_RECORDS) writeonly buffer Records {
     LfdprVisibilityRecordGpu records[];
 };
 layout(std430, binding = LFDPR_SSBO_LARGE) buffer Large {
-    uvec2 largeTriangles[]; // (draw, primitive)
+    uvec2 largeTriangles[]; // (workgroup entry, primitive)
 };
 layout(std430, binding = LFDPR_SSBO_WORKGROUPS) readonly buffer Workgroups {
     LfdprVisibilityWorkgroupGpu workgroups[];
@@ -149,9 +149,15 @@ bool emits(Sampled t, vec2 q)
 #endif
 }
 
-uint writeRecord(uint primitive, Sampled t)
+// Writes the record of triangle `primitive` of workgroup entry w at its own slot, the
+// triangle's drawn index (w.firstRecord on): the view words break depth ties by the lower
+// record, so numbering records in draw order, rather than in the order in which invocations
+// happen to run, makes the winner of a tie the same in every run - the triangle drawn first,
+// as mvr's depth test keeps it.
+uint writeRecord(LfdprVisibilityWorkgroupGpu w, uint primitive, Sampled t)
 {
-    uint record = atomicAdd(vis.recordCount, 1u);
+    atomicAdd(vis.recordCount, 1u);
+    uint record = w.firstRecord + (primitive - w.firstPrimitive);
     // The spacings carry the frame's choices in their signs (lfdSignedSpacing), so the splat
     // rebuilds this very frame (lfdRecordFrame).
     records[record] = LfdprVisibilityRecordGpu(t.draw, primitive, lfdSignedSpacing(t.s.spacing, t.s.frame.choices));
@@ -210,7 +216,7 @@ void main()
         uint slot = atomicAdd(largeDispatch[u_largeClass].w, 1u);
         atomicMax(largeDispatch[u_largeClass].x, min(slot + 1u, 65535u));
         atomicMax(largeDispatch[u_largeClass].y, slot / 65535u + 1u);
-        largeTriangles[u_largeBase + slot] = uvec2(w.draw, primitive);
+        largeTriangles[u_largeBase + slot] = uvec2(u_firstWorkgroup + workgroup, primitive);
         atomicAdd(vis.largeCount, 1u);
         return;
     }
@@ -226,7 +232,7 @@ void main()
                 ++count;
     if (count == 0u)
         return;
-    uint record = writeRecord(primitive, t);
+    uint record = writeRecord(w, primitive, t);
     uint index = reservePoints(count);
     uint capacity = u_lfd.counts.y;
     for (uint y = first.y; y < ey; ++y)
@@ -251,13 +257,14 @@ void main()
     uint slot = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     if (slot >= largeDispatch[u_largeClass].w)
         return; // past the queue (the (x, y) grid rounds up); the same for the whole workgroup
-    uvec2 queued = largeTriangles[u_largeBase + slot];
+    uvec2 queued = largeTriangles[u_largeBase + slot]; // (workgroup entry, primitive)
+    LfdprVisibilityWorkgroupGpu w = workgroups[queued.x];
 
     // Step 1: one thread sets the triangle up (same inputs as the default pass: it emits).
     if (gl_LocalInvocationIndex == 0u) {
         s_count = 0u;
         Sampled t;
-        s_emitting = setUp(queued.x, queued.y, t);
+        s_emitting = setUp(w.draw, queued.y, t);
         s_triangle = t;
         if (s_emitting)
             countShape(t);
@@ -279,7 +286,7 @@ void main()
 
     // Step 3: one thread reserves the range and writes the record.
     if (gl_LocalInvocationIndex == 0u && s_count > 0u) {
-        s_record = writeRecord(queued.y, t);
+        s_record = writeRecord(w, queued.y, t);
         s_first = reservePoints(s_count);
     }
     barrier();

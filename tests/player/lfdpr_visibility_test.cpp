@@ -457,6 +457,68 @@ TEST_F(LfdprVisibilityTest, IndexRepairRestoresTheImageFromTheListAndTheWholeFra
     EXPECT_TRUE(wholeFrame) << "no case exercised the whole-frame repair";
 }
 
+// Two copies of one tessellated plane, a red one drawn first and a green one drawn second,
+// meet at the same depth key in every pixel they cover: a depth tie, as coincident surfaces
+// (a decal on its wall, a duplicated mesh) give. mvr's depth test keeps the triangle drawn
+// first. lfdpr's words keep the lower record, and records are numbered by drawn triangle,
+// so it must too, in every view, on both work shapes, however its invocations run. The red
+// copy is alpha-masked (a cutoff of 0 that drops nothing), which puts it in a later point
+// generation dispatch than the green one: its points come second, so a splat that let
+// the first writer win a tie (or numbered records in the order they were written) shows
+// green here.
+TEST_F(LfdprVisibilityTest, DepthTiesGoToTheTriangleDrawnFirstAsInMvr)
+{
+    const DisplayProfile profile = smallProfile(6, 96, 72);
+    Scene scene;
+    for (const glm::vec3 emissive : {glm::vec3(0.9f, 0.05f, 0.05f), glm::vec3(0.05f, 0.9f, 0.05f)}) {
+        Material m;
+        m.baseColorFactor = {0.0f, 0.0f, 0.0f, 1.0f};
+        m.metallicFactor = 1.0f;
+        m.roughnessFactor = 1.0f;
+        m.emissiveFactor = emissive;
+        scene.materials.push_back(m);
+    }
+    scene.materials[0].alphaMode = AlphaMode::Mask;
+    scene.materials[0].alphaCutoff = 0.0f;
+    const glm::quat tilt = glm::angleAxis(0.6f, glm::normalize(glm::vec3(1.0f, 0.4f, 0.0f)));
+    for (int32_t copy = 0; copy < 2; ++copy) {
+        const int32_t mesh = addMesh(scene, addGrid(scene, 1.0f, 6, 1.0f), copy);
+        addNode(scene, mesh, glm::vec3(0.0f), tilt, glm::vec3(1.0f));
+    }
+    finishScene(scene);
+    scene.bounds.min = glm::vec3(-1.0f);
+    scene.bounds.max = glm::vec3(1.0f);
+    scene.bounds.center = glm::vec3(0.0f);
+    scene.bounds.radius = std::sqrt(3.0f);
+
+    auto mvr = player::createRenderer("mvr");
+    const VisibilityFrame expected = render(*mvr, scene, profile);
+    for (const auto shape : {LfdprOptions::WorkShape::Cpu, LfdprOptions::WorkShape::Gpu}) {
+        auto lfdpr = player::createLfdprRenderer({.workShape = shape});
+        for (int run = 0; run < 2; ++run) {
+            const VisibilityFrame a = render(*lfdpr, scene, profile);
+            size_t covered = 0, green = 0;
+            for (uint32_t v = 0; v < profile.viewCount; ++v) {
+                const Image& image = a.views[v];
+                for (size_t i = 0; i + 2 < image.pixels.size(); i += image.channels) {
+                    const int r = image.pixels[i], g = image.pixels[i + 1];
+                    covered += r > 100 || g > 100;
+                    green += g > 100;
+                }
+                EXPECT_LT(metrics::rmse(a.views[v], expected.views[v]), 2.0) << "view " << v;
+            }
+            std::printf("depth ties, %s work shape, run %d: %zu covered pixels, %zu green, %llu repairs\n",
+                        shape == LfdprOptions::WorkShape::Gpu ? "GPU" : "CPU", run, covered, green,
+                        (unsigned long long)a.info.repairs);
+            EXPECT_GT(covered, size_t(profile.viewCount) * 96 * 72 / 20) << "the planes fill under a twentieth of the views";
+            EXPECT_EQ(green, 0u) << "the copy drawn second won depth ties";
+            if (!a.info.int64Atomics) {
+                EXPECT_GT(a.info.repairs, 0u) << "the 32-bit path decides ties in its repair";
+            }
+        }
+    }
+}
+
 // Shading visits only the tiles that hold a pixel of each group: a scene of several
 // textured and untextured materials must come out as mvr draws it, with one shading
 // dispatch per group, and pixels of a material must not be shaded with another's

@@ -91,20 +91,19 @@ public:
 
     std::vector<uint32_t> pointsPerTriangle() const override
     {
-        // A point's record names (draw, primitive); drawFirstTriangle_ holds each draw's first
-        // drawn triangle.
+        // A point's record sits at its triangle's drawn index (lfdpr_visibility_points.comp
+        // writeRecord); the record's (draw, primitive) must name that same triangle.
         std::vector<uint32_t> counts(size_t(triangleCapacity_), 0);
         std::vector<glm::uvec2> points(size_t(info_.pointsStored));
-        std::vector<glm::uvec4> records(size_t(info_.triangles));
+        std::vector<glm::uvec4> records(static_cast<size_t>(triangleCapacity_));
         if (!points.empty())
             glGetNamedBufferSubData(points_, 0, GLsizeiptr(points.size() * sizeof(points[0])), points.data());
-        if (!records.empty())
-            glGetNamedBufferSubData(records_, 0, GLsizeiptr(records.size() * sizeof(records[0])), records.data());
+        glGetNamedBufferSubData(records_, 0, GLsizeiptr(records.size() * sizeof(records[0])), records.data());
         for (const glm::uvec2& point : points) {
             if (point.x >= records.size() || records[point.x].x >= drawFirstTriangle_.size())
                 continue;
             const uint64_t triangle = uint64_t(drawFirstTriangle_[records[point.x].x]) + records[point.x].y;
-            if (triangle < counts.size())
+            if (triangle == point.x)
                 ++counts[size_t(triangle)];
         }
         return counts;
@@ -389,8 +388,10 @@ private:
             drawFirstTriangle_.push_back(uint32_t(triangles));
             triangles += d.indexCount / 3;
         }
-        if (triangles > 0xFFFFFFFFull)
-            throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
+        // Records are numbered by drawn triangle, and the 32-bit path flags a depth tie in the
+        // top bit of a view pixel's record word (lfdpr_visibility_splat.comp).
+        if (triangles >= 0x7FFFFFFFull)
+            throw std::invalid_argument("lfdpr: more than 2^31 - 2 drawn triangles");
         triangleCapacity_ = std::max<uint64_t>(triangles, 1);
         records_ = gl::createBuffer(triangleCapacity_ * k_.recordBytes);
         draws_ = gl::createBuffer(draws.size() * sizeof(LfdprVisibilityDrawGpu), 0, draws.empty() ? nullptr : draws.data());
