@@ -160,10 +160,6 @@ layout(std140, binding = LFDPR_UBO_FRAME) uniform LfdprFrameBlock {
 #define LFDPR_UNIT_MATERIALS 17    // RGBA32F: MaterialGpu, 4 texels each (flags as float bits)
 #define LFDPR_UNIT_VIEW_DEPTH 18   // per view pixel: R32UI depth key, or RG32UI 64-bit word
 #define LFDPR_UNIT_VIEW_INDEX 19   // per view pixel: R32UI the winner's record (32-bit path)
-// 32-bit path: the record word's top bit, set where two triangles' points wrote the same
-// depth key (a tie) so that the shading repairs the pixel to the lower record
-// (lfdpr_visibility_splat.comp); records stay below it (drawn triangles < 2^31 - 1).
-#define LFDPR_RECORD_TIED 0x80000000u
 
 #define LFDPR_LOC_FIRST_WORKGROUP 7 // lfdpr_visibility_points.comp: the dispatch's first LfdprVisibilityWorkgroupGpu
 #define LFDPR_LOC_WORKGROUPS 8     // lfdpr_visibility_points.comp: LfdprVisibilityWorkgroupGpu entries it covers

@@ -32,19 +32,7 @@ uint lfdPixelWinner(uint pixel)
 #else
     // Both words start as all ones, and whenever the splat lowers a pixel's depth it also
     // writes a record there (the repair's reset is written again by the index pass before
-    // anything reads it), so the record word alone tells a covered pixel. A covered word may
-    // carry the tie flag (never all ones with it: records stay below 2^31 - 1).
-    uint word = texelFetch(t_viewIndex, int(pixel)).x;
-    return word == 0xFFFFFFFFu ? word : word & ~LFDPR_RECORD_TIED;
+    // anything reads it), so the record word alone tells a covered pixel.
+    return texelFetch(t_viewIndex, int(pixel)).x;
 #endif
 }
-
-#ifndef LFDPR_INT64
-// 32-bit path: whether points of two triangles wrote this pixel at the same depth key (the
-// splat's tie flag), so the stored record may be either's until the repair.
-bool lfdPixelTied(uint pixel)
-{
-    uint word = texelFetch(t_viewIndex, int(pixel)).x;
-    return word != 0xFFFFFFFFu && (word & LFDPR_RECORD_TIED) != 0u;
-}
-#endif

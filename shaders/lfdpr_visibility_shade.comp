@@ -70,9 +70,8 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprVisibilityRecordGpu re
     vec3 edges = lfdEdgeValues(vt, centre);
 #ifndef LFDPR_INT64
     // Step 3 (32-bit path): the single splat pass stores depth by atomicMin and the index
-    // after it, so a racing point may have left its index under another's depth; and a
-    // depth tie between two triangles (flagged by the splat) is decided by the index pass.
-    if (u_pass == 0u && (lfdPixelTied(pixel) || lfdPlaneDepthKey(vt, edges) != lfdPixelKey(pixel))) {
+    // by a plain store, so a racing point may have left its index under another's depth.
+    if (u_pass == 0u && lfdPlaneDepthKey(vt, edges) != lfdPixelKey(pixel)) {
         viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility_splat.comp LFDPR_INDEX_PASS sets it again
         uint entry = atomicAdd(shadeCounters.repairCount, 1u);
         if (entry < shadeCounters.repairCapacity)

@@ -30,8 +30,8 @@
 // Depth key: lfdPlaneDepthKey (smaller = nearer; 0xFFFFFFFF = empty).
 // LFDPR_INT64: atomicMin on (key << 32 | record) (GL_NV_shader_atomic_int64).
 // Otherwise 32-bit words: atomicMin on the key, and the invocation that lowered it stores
-// its record (an exchange; a tie is flagged, see writeSample). A nearer point racing a
-// farther one can leave the farther one's record behind; lfdpr_visibility_shade.comp checks every pixel's record against its key
+// its record with a plain store. A nearer point racing a farther one can leave the
+// farther one's record behind; lfdpr_visibility_shade.comp checks every pixel's record against its key
 // and flags the few that disagree, and only then the index pass runs (LFDPR_INDEX_PASS, a
 // program of its own: llvmpipe would run an untaken branch for it in every pixel): where
 // the key equals the minimum, atomicMin on the record. The image is the same either way:
@@ -272,25 +272,11 @@ void writeSample(uint pixel, uint key, uint record, uint index)
     if (viewDepth[pixel] == key)
         atomicMin(viewIndex[pixel], record);
 #else
-    // An equal key is taken to the atomic too: where another triangle's point holds the
-    // pixel at the same depth (coincident surfaces), the first writer must not simply win,
-    // or the winner would change with the order in which invocations run. The tie is flagged
-    // in the record word (LFDPR_RECORD_TIED), and the shading sends the pixel to the repair,
-    // whose index pass keeps the lower record (the triangle drawn first, as the 64-bit
-    // word's order and mvr's depth test do). The lowering write exchanges the record so that
-    // a flag set between its atomicMin and its store survives; a flag left from a farther
-    // tie survives too and costs a repair that finds the same winner. A point of the same
-    // triangle (overlapping cells) finds its own record and flags nothing.
-    if (key <= viewDepth[pixel]) {
+    if (key < viewDepth[pixel]) {
         LFDPR_COUNT(atomics, 1u);
-        uint nearest = atomicMin(viewDepth[pixel], key);
-        if (key < nearest) {
+        if (key < atomicMin(viewDepth[pixel], key)) {
             LFDPR_COUNT(lowered, 1u);
-            uint previous = atomicExchange(viewIndex[pixel], record);
-            if (previous != 0xFFFFFFFFu && (previous & LFDPR_RECORD_TIED) != 0u) // not the cleared word
-                atomicOr(viewIndex[pixel], LFDPR_RECORD_TIED);
-        } else if (key == nearest && (viewIndex[pixel] & ~LFDPR_RECORD_TIED) != record) {
-            atomicOr(viewIndex[pixel], LFDPR_RECORD_TIED);
+            viewIndex[pixel] = record;
         }
     }
     LFDPR_AFTER_INDEX_WRITE(index, pixel, record);

@@ -388,10 +388,9 @@ private:
             drawFirstTriangle_.push_back(uint32_t(triangles));
             triangles += d.indexCount / 3;
         }
-        // Records are numbered by drawn triangle, and the 32-bit path flags a depth tie in the
-        // top bit of a view pixel's record word (lfdpr_visibility_splat.comp).
-        if (triangles >= 0x7FFFFFFFull)
-            throw std::invalid_argument("lfdpr: more than 2^31 - 2 drawn triangles");
+        // Records are numbered by drawn triangle (0xFFFFFFFF marks an empty view word).
+        if (triangles >= 0xFFFFFFFFull)
+            throw std::invalid_argument("lfdpr: more than 2^32 - 2 drawn triangles");
         triangleCapacity_ = std::max<uint64_t>(triangles, 1);
         records_ = gl::createBuffer(triangleCapacity_ * k_.recordBytes);
         draws_ = gl::createBuffer(draws.size() * sizeof(LfdprVisibilityDrawGpu), 0, draws.empty() ? nullptr : draws.data());
