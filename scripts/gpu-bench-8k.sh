@@ -14,11 +14,13 @@
 #   p0  48 x 480x360, the prototype: the counted frame only (gpu-bench.sh timed it already)
 #   65m 72 x 960x480 (65", panel-matched)   65q 72 x 1024x910 (65" vendor quilt)
 #   32m 48 x 960x720 (32", panel-matched)   32q 49 x 1170x1170 (32" vendor quilt)
-# LFD_BENCH_8K_RENDERERS (default mvr,lfdpr); LFD_BENCH_8K_COUNTERS=0 skips the counted frames.
+# LFD_BENCH_8K_RENDERERS (default mvr,lfdpr,lfdpr-no-margin-trim: the margin trim's effect
+# where point-views cost most, never timed on a GPU yet); LFD_BENCH_8K_COUNTERS=0 skips the
+# counted frames.
 set -euo pipefail
 bench=$1 profiles=$2 out=$3 frames=$4 warmup=$5 deadline=$6
 shift 6
-renderers="${LFD_BENCH_8K_RENDERERS:-mvr,lfdpr}"
+renderers="${LFD_BENCH_8K_RENDERERS:-mvr,lfdpr,lfdpr-no-margin-trim}"
 mkdir -p "$out/8k"
 skipped=()
 runs=()
