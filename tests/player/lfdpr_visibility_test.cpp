@@ -471,14 +471,8 @@ TEST_F(LfdprVisibilityTest, DepthTiesGoToTheTriangleDrawnFirstAsInMvr)
 {
     const DisplayProfile profile = smallProfile(6, 96, 72);
     Scene scene;
-    for (const glm::vec3 emissive : {glm::vec3(0.9f, 0.05f, 0.05f), glm::vec3(0.05f, 0.9f, 0.05f)}) {
-        Material m;
-        m.baseColorFactor = {0.0f, 0.0f, 0.0f, 1.0f};
-        m.metallicFactor = 1.0f;
-        m.roughnessFactor = 1.0f;
-        m.emissiveFactor = emissive;
-        scene.materials.push_back(m);
-    }
+    for (const glm::vec3 emissive : {glm::vec3(0.9f, 0.05f, 0.05f), glm::vec3(0.05f, 0.9f, 0.05f)})
+        scene.materials.push_back(emissiveOnlyMaterial(emissive));
     scene.materials[0].alphaMode = AlphaMode::Mask;
     scene.materials[0].alphaCutoff = 0.0f;
     const glm::quat tilt = glm::angleAxis(0.6f, glm::normalize(glm::vec3(1.0f, 0.4f, 0.0f)));

@@ -229,6 +229,16 @@ Scene positionsOnlyScene()
     return scene;
 }
 
+Material emissiveOnlyMaterial(const glm::vec3& emissive)
+{
+    Material m;
+    m.baseColorFactor = {0.0f, 0.0f, 0.0f, 1.0f};
+    m.metallicFactor = 1.0f;
+    m.roughnessFactor = 1.0f;
+    m.emissiveFactor = emissive;
+    return m;
+}
+
 EmissiveQuads emissiveQuadsScene(float radius, float zBack)
 {
     EmissiveQuads q;
@@ -237,14 +247,8 @@ EmissiveQuads emissiveQuadsScene(float radius, float zBack)
     q.backEmissive = {0.9f, 0.25f, 0.6f};
     q.frontCenter = {-0.3f * radius, 0.25f * radius, 0.0f};
     q.backCenter = {0.3f * radius, 0.0f, zBack};
-    for (const glm::vec3& e : {q.frontEmissive, q.backEmissive}) {
-        Material m;
-        m.baseColorFactor = {0.0f, 0.0f, 0.0f, 1.0f};
-        m.metallicFactor = 1.0f;
-        m.roughnessFactor = 1.0f;
-        m.emissiveFactor = e;
-        scene.materials.push_back(m);
-    }
+    for (const glm::vec3& e : {q.frontEmissive, q.backEmissive})
+        scene.materials.push_back(emissiveOnlyMaterial(e));
     const float h = 0.1f * radius; // quads of 0.2 r x 0.2 r
     for (int k = 0; k < 2; ++k) {
         const uint32_t base = uint32_t(scene.vertices.positions.size());

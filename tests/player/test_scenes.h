@@ -52,6 +52,10 @@ Scene denseTestScene();
 // pyramid. Exercises the "missing streams" paths.
 Scene positionsOnlyScene();
 
+// A material that shows `emissive` alone: base colour black, metallic 1, roughness 1, so
+// direct and ambient light add nothing measurable.
+Material emissiveOnlyMaterial(const glm::vec3& emissive);
+
 // Two emissive-only unit quads facing +z (base colour black, metallic 1, roughness 1, so
 // direct and ambient light add nothing measurable): `front` centred at (-x, +y, 0) on the
 // scene centre plane (zero parallax), `back` at (+x, 0, zBack). Bounds: sphere of
