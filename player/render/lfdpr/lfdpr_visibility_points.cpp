@@ -54,7 +54,7 @@ LfdprVisibilityPointGeneration::LfdprVisibilityPointGeneration(bool pixelCentreC
         }
 }
 
-void LfdprVisibilityPointGeneration::prepare(const GpuScene& scene)
+void LfdprVisibilityPointGeneration::prepare(const GpuScene& scene, const std::vector<uint32_t>& drawFirstTriangle)
 {
     if (scene.serial() == sceneSerial_)
         return;
@@ -66,16 +66,13 @@ void LfdprVisibilityPointGeneration::prepare(const GpuScene& scene)
     // alpha-tested draw (a class each); a class's large triangles queue in a segment of
     // its triangle count. Each entry's firstRecord is the drawn index of its first triangle
     // (draws in scene order, whatever the class order), the slot of its triangles' records.
-    std::vector<uint32_t> firstRecord(drawCount_ + 1, 0);
-    for (uint32_t d = 0; d < drawCount_; ++d)
-        firstRecord[d + 1] = firstRecord[d] + scene.draws()[d].indexCount / 3;
     std::vector<LfdprVisibilityWorkgroupGpu> table;
     classes_.clear();
     uint32_t queued = 0;
     auto addDraw = [&](uint32_t d) {
         const uint32_t triangles = scene.draws()[d].indexCount / 3;
         for (uint32_t first = 0; first < triangles; first += k.groupSize)
-            table.push_back({d, first, std::min(k.groupSize, triangles - first), firstRecord[d] + first});
+            table.push_back({d, first, std::min(k.groupSize, triangles - first), drawFirstTriangle[d] + first});
         return triangles;
     };
     DispatchClass opaque{kNone, 0, 0, 0};

@@ -27,8 +27,9 @@ public:
     LfdprVisibilityPointGeneration(bool pixelCentreCulling, bool trimMargin, uint32_t cellScale, bool gpuWork);
 
     // The workgroup table and the large-triangle queues for `scene`'s draws (again only
-    // when the scene changes).
-    void prepare(const GpuScene& scene);
+    // when the scene changes). drawFirstTriangle: each draw's first drawn-triangle index,
+    // where its triangles' records go (the renderer's record numbering).
+    void prepare(const GpuScene& scene, const std::vector<uint32_t>& drawFirstTriangle);
     // Clears the large-triangle queues' dispatch words (no barrier: the caller puts one
     // after its own clears).
     void clearQueues() const;

@@ -388,13 +388,12 @@ private:
             drawFirstTriangle_.push_back(uint32_t(triangles));
             triangles += d.indexCount / 3;
         }
-        // Records are numbered by drawn triangle (0xFFFFFFFF marks an empty view word).
-        if (triangles >= 0xFFFFFFFFull)
-            throw std::invalid_argument("lfdpr: more than 2^32 - 2 drawn triangles");
+        if (triangles > 0xFFFFFFFFull)
+            throw std::invalid_argument("lfdpr: more than 2^32 drawn triangles");
         triangleCapacity_ = std::max<uint64_t>(triangles, 1);
         records_ = gl::createBuffer(triangleCapacity_ * k_.recordBytes);
         draws_ = gl::createBuffer(draws.size() * sizeof(LfdprVisibilityDrawGpu), 0, draws.empty() ? nullptr : draws.data());
-        pointGeneration_.prepare(scene);
+        pointGeneration_.prepare(scene, drawFirstTriangle_);
     }
 
     static bool hasTextures(const Material& m)
