@@ -307,6 +307,9 @@ struct LfdprVisibilityShadeCountersGpu {
         uvec4 groupDispatch[LFDPR_MAX_SHADE_GROUPS]; \
         uint groupTiles[]; \
     }
+// The repair's index pass (32-bit views path) matches each point against the listed raced
+// pixels when there are at most this many (lfdpr_visibility_splat.comp reachesRepairedChunk).
+#define LFDPR_REPAIR_FILTER_MAX 64
 #define LFDPR_SHADE_DISPATCH_WIDTH 32768 // workgroups per dispatch row (x stays under GL's 65535)
 // Marking and shading walk the views of one tile position in chunks of LFDPR_VIEW_CHUNK
 // views (a 64-bit view mask per group and chunk: LFDPR_VIEW_MASK_WORDS, at

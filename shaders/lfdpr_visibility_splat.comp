@@ -34,7 +34,8 @@
 // farther one's record behind; lfdpr_visibility_shade.comp checks every pixel's record against its key
 // and flags the few that disagree, and only then the index pass runs (LFDPR_INDEX_PASS, a
 // program of its own: llvmpipe would run an untaken branch for it in every pixel): where
-// the key equals the minimum, atomicMin on the record. The image is the same either way:
+// the key equals the minimum, atomicMin on the record - for the points that reach a listed
+// pixel's tile chunk when the list is short (reachesRepairedChunk). The image is the same either way:
 // a pixel's winner is the nearest triangle there.
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
@@ -108,6 +109,11 @@ void lfdMarkChunk(uint group, uint chunk, int tileLo, int tileHi, uvec2 tileRows
         }
     }
 }
+#endif
+#if defined(LFDPR_INDEX_PASS) && !defined(LFDPR_DIRECT)
+// The repair's index pass (32-bit views path) reads the shading's list of raced pixels.
+#define LFDPR_REPAIR_FILTER
+layout(std430, binding = LFDPR_SSBO_SHADE_WORK) readonly LFDPR_SHADE_WORK_BUFFER;
 #endif
 #ifdef LFDPR_DIRECT
 #include "lfdpr_direct_fanout.glsl"
@@ -292,27 +298,71 @@ bool splatIntoView(uint view, uint viewCount, int viewWidth, ivec4 box, bool dec
                    vec2 b, vec2 c, vec2 d, vec4 slack, LfdViewTriangle t, uvec2 keyRange, uint record, uint index)
 {
     bool wrote = false;
+    // One loop over the box's pixels, not one per row and column: llvmpipe runs a loop as
+    // long as its busiest lane, so nested loops cost a SIMD row its tallest box times its
+    // widest, one loop only its largest box (boxes vary from lane to lane as cells and
+    // triangles do).
     int columns = box.z - box.x + 1;
-    for (int y = box.y; y <= box.w; ++y) {
-        for (int x = box.x; x <= box.z; ++x) {
-            vec2 p = vec2(x, y) + 0.5;
-            bool inCell = decided ? (centres & (1u << uint((y - box.y) * columns + (x - box.x)))) != 0u
-                                  : lfdInsideQuadWithSlack(a, b, c, d, slack, p);
-            if (!inCell)
-                continue;
+    int count = columns * (box.w - box.y + 1);
+    int x = box.x, y = box.y;
+    for (int i = 0; i < count; ++i) {
+        vec2 p = vec2(x, y) + 0.5;
+        bool inCell = decided ? (centres & (1u << uint(i))) != 0u : lfdInsideQuadWithSlack(a, b, c, d, slack, p);
+        if (inCell) {
             vec3 edges = lfdEdgeValues(t, p);
-            if (!lfdOwnsSample(t, edges))
-                continue;
             uint key = lfdPlaneDepthKey(t, edges);
-            if (key < keyRange.x || key > keyRange.y)
-                continue; // clipped by the near or far plane
-            wrote = true;
-            LFDPR_COUNT(samples, 1u);
-            writeSample(lfdViewWord(view, uint(x), uint(y), uint(viewWidth), viewCount), key, record, index);
+            // Keys outside keyRange are clipped by the near or far plane.
+            if (lfdOwnsSample(t, edges) && key >= keyRange.x && key <= keyRange.y) {
+                wrote = true;
+                LFDPR_COUNT(samples, 1u);
+                writeSample(lfdViewWord(view, uint(x), uint(y), uint(viewWidth), viewCount), key, record, index);
+            }
         }
+        // The next pixel of the box, row by row (bit i of `centres`).
+        bool rowEnd = x == box.z;
+        x = rowEnd ? box.x : x + 1;
+        y = rowEnd ? y + 1 : y;
     }
     return wrote;
 }
+
+#ifdef LFDPR_REPAIR_FILTER
+// Whether the point may write a pixel of a tile chunk the repair lists (the index pass's
+// step 3): the tiles of its rows and of the columns its cell spans over the slice's views
+// (x is linear in the camera offset, so the slice's extreme offsets bound it), in this
+// view chunk. Why: the index pass exists for the few raced pixels the shading found
+// (lfdpr_visibility_shade.comp), mostly one or two per frame, and walking every point's
+// views for them cost as much as the splat; only the listed chunks are shaded again, so
+// the words elsewhere need no index. When the list overflowed (the shading then shades
+// every chunk again) or is long, every point runs.
+bool reachesRepairedChunk(LfdSplatPoint sp, uint sliceFirst, uint endView, uint firstView, ivec2 viewPixels)
+{
+    uint repairs = shadeCounters.repairCount;
+    if (repairs > shadeCounters.repairCapacity || repairs > uint(LFDPR_REPAIR_FILTER_MAX))
+        return true;
+    float eLo = lfdViewOffset(sliceFirst), eHi = eLo;
+    for (uint view = sliceFirst + 1u; view < endView; ++view) {
+        eLo = min(eLo, lfdViewOffset(view));
+        eHi = max(eHi, lfdViewOffset(view));
+    }
+    vec4 xA = sp.cellX0 + eLo * sp.cellXPer, xB = sp.cellX0 + eHi * sp.cellXPer;
+    vec4 xMin = min(xA, xB), xMax = max(xA, xB);
+    ivec2 columns = ivec2(max(int(ceil(min(min(xMin.x, xMin.y), min(xMin.z, xMin.w)) - LFDPR_SPLAT_SLACK - 0.5)), 0),
+                          min(int(floor(max(max(xMax.x, xMax.y), max(xMax.z, xMax.w)) + LFDPR_SPLAT_SLACK - 0.5)),
+                              viewPixels.x - 1));
+    if (columns.x > columns.y)
+        return false; // no column in any view: nothing to write
+    uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
+    uvec2 tileLo = uvec2(columns.x, sp.rows.x) / uint(LFDPR_SHADE_TILE);
+    uvec2 tileHi = uvec2(columns.y, sp.rows.y) / uint(LFDPR_SHADE_TILE);
+    for (uint i = 0u; i < repairs; ++i) {
+        LfdShadeChunk c = lfdShadeChunk(groupTiles[shadeCounters.repairBase + i], tiles, u_lfd.counts.x);
+        if (c.firstView == firstView && all(greaterThanEqual(c.tile, tileLo)) && all(lessThanEqual(c.tile, tileHi)))
+            return true;
+    }
+    return false;
+}
+#endif
 
 // Steps 4-6 of main for one view: the culls before any per-view setup (the cell's columns,
 // those it shares with the triangle, its pixel centres), then the triangle's setup, facing
@@ -387,6 +437,10 @@ void splatPoint(uint index, uint slice, uint viewCount)
         return;
     }
     ivec2 viewPixels = ivec2(viewSize);
+#ifdef LFDPR_REPAIR_FILTER
+    if (!reachesRepairedChunk(sp, sliceFirst, endView, firstView, viewPixels))
+        return;
+#endif
     uvec2 keyRange = uvec2(lfdDepthKey(1.0 / u_line.wRange.x), lfdDepthKey(1.0 / u_line.wRange.y));
 
     int markLo = viewPixels.x, markHi = -1; // tile columns written in this view chunk
