@@ -294,12 +294,17 @@ struct LfdprVisibilityRepairGpu {
 // dispatch (x, y, z) with the group's entry count in w (at byte 16 + 16 * group), then per
 // group its list of tile chunk entries (LFDPR_SHADE_ENTRY_WORDS words each, from
 // groupTiles[group * lfdShadeEntryCount * 3]), then the repair list (32-bit path): the
-// tile chunk index of each repaired pixel, at groupTiles[repairBase + i].
+// tile chunk index of each repaired pixel, at groupTiles[repairBase + i], then the tie
+// queue (32-bit views path): the points that met a depth tie, two words each (point
+// index, view slice) from groupTiles[tieBase] (lfdpr_visibility_splat.comp queueTies).
 struct LfdprVisibilityShadeCountersGpu {
     uint repairCount;    // 32-bit path: view pixels whose record lost a race
     uint repairBase;     // groupTiles index of the repair list: the tile chunk of each such pixel
     uint repairCapacity; // entries the repair list holds
-    uint pad0;
+    uint tieBase;        // groupTiles index of the tie queue
+    uvec4 tieDispatch;   // xyz: the tie pass's indirect dispatch (LFDPR_TIE_PASS), w: points queued
+    uint tieCapacity;    // points the tie queue holds
+    uint pad0, pad1, pad2;
 };
 #define LFDPR_SHADE_WORK_BUFFER \
     buffer ShadeWork { \

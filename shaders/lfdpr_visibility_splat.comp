@@ -35,8 +35,10 @@
 // and flags the few that disagree, and only then the index pass runs (LFDPR_INDEX_PASS, a
 // program of its own: llvmpipe would run an untaken branch for it in every pixel): where
 // the key equals the minimum, atomicMin on the record - for the points that reach a listed
-// pixel's tile chunk when the list is short (reachesRepairedChunk). The image is the same either way:
-// a pixel's winner is the nearest triangle there.
+// pixel's tile chunk when the list is short (reachesRepairedChunk). On the GPU work shape a
+// point that ties the word's key is queued for the tie pass (LFDPR_TIE_PASS, noteTie), so a
+// depth tie goes to the lowest record, the triangle drawn first, as on the 64-bit path.
+// The image is the same either way: a pixel's winner is the nearest triangle there.
 #ifdef LFDPR_INT64
 #extension GL_ARB_gpu_shader_int64 : require
 #extension GL_NV_shader_atomic_int64 : require
@@ -110,10 +112,18 @@ void lfdMarkChunk(uint group, uint chunk, int tileLo, int tileHi, uvec2 tileRows
     }
 }
 #endif
-#if defined(LFDPR_INDEX_PASS) && !defined(LFDPR_DIRECT)
+#if defined(LFDPR_TIE_PASS)
+// The tie pass (32-bit views path): the index pass over the points the splat queued.
+layout(std430, binding = LFDPR_SSBO_SHADE_WORK) readonly LFDPR_SHADE_WORK_BUFFER;
+#elif defined(LFDPR_INDEX_PASS) && !defined(LFDPR_DIRECT)
 // The repair's index pass (32-bit views path) reads the shading's list of raced pixels.
 #define LFDPR_REPAIR_FILTER
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) readonly LFDPR_SHADE_WORK_BUFFER;
+#elif !defined(LFDPR_INT64) && !defined(LFDPR_DIRECT) && defined(LFDPR_WORK_GPU)
+// The 32-bit views path's single pass queues the points that met a depth tie (the GPU work
+// shape: on llvmpipe's, the check's read cost the splat 9-16%, see noteTie).
+#define LFDPR_FLAG_TIES
+layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
 #endif
 #ifdef LFDPR_DIRECT
 #include "lfdpr_direct_fanout.glsl"
@@ -255,6 +265,59 @@ uint cellCentres(ivec4 box, vec2 a, vec2 b, vec2 c, vec2 d, vec4 slack)
     return bits;
 }
 
+#ifdef LFDPR_FLAG_TIES
+// Depth ties on the 32-bit views path: a point whose key equals the word's while the index
+// holds another triangle's record (coincident surfaces: a decal on its wall, a duplicated
+// mesh; or two surfaces crossing at one pixel's key). The single pass keeps whichever
+// point lowered the word first, which changes from run to run; mvr's depth test (GL_LESS)
+// keeps the triangle drawn first, the lowest record. So such a point is queued, and the tie
+// pass (LFDPR_TIE_PASS, after this pass, before the shading) splats the queued points again
+// as the index pass does: where the key is the word's, atomicMin on the record. Every
+// store of this pass has landed by then, and the first point to reach a word left its record
+// there (it lowered the word), so each tied pixel ends with the lowest record. An index
+// equal to this record is this triangle's own pixel met again (neighbouring cells overlap
+// by LFDPR_SPLAT_OVERLAP), no tie; a stale read (the lowering point's store not yet
+// visible) only queues a point that needed nothing. (Where a farther point's late store
+// also replaced the first point's record, the pass leaves the queued point's record, at
+// the right depth: only the order among the tied is off.) Per sample only the index is read;
+// the queueing runs once per point (queueTies), so a GPU pays a load where a key ties and
+// an atomic per tied point. The GPU work shape only: llvmpipe runs a branch's body for a
+// SIMD row whenever it is compiled in, so its CPU work shape paid the read at every sample,
+// 9-16% of the dense sample's splat (docs/player/lfdpr.md, Depth ties); there the first
+// point to reach a tied word keeps it.
+bool tied; // the point met a tie in its slice
+
+void noteTie(uint pixel, uint record)
+{
+    if (viewIndex[pixel] != record)
+        tied = true;
+}
+
+// Queues point `index` (its `slice` of views) for the tie pass when it met a tie. A full
+// queue lists the point's tile chunks for the repair instead (whose index pass takes the
+// lowest record as well, and whose shading shades them again).
+void queueTies(uint index, uint slice, uint firstView, int markLo, int markHi, uvec2 tileRows, uvec2 tiles)
+{
+    if (!tied)
+        return;
+    uint entry = atomicAdd(shadeCounters.tieDispatch.w, 1u);
+    if (entry < shadeCounters.tieCapacity) {
+        groupTiles[shadeCounters.tieBase + 2u * entry] = index;
+        groupTiles[shadeCounters.tieBase + 2u * entry + 1u] = slice;
+        atomicMax(shadeCounters.tieDispatch.x, entry / uint(LFDPR_GROUP_SIZE) + 1u);
+        return;
+    }
+    for (uint ty = tileRows.x; ty <= tileRows.y; ++ty) {
+        for (int tx = markLo; tx <= markHi; ++tx) {
+            uint repair = atomicAdd(shadeCounters.repairCount, 1u);
+            if (repair < shadeCounters.repairCapacity)
+                groupTiles[shadeCounters.repairBase + repair] =
+                    lfdShadeChunkIndex(firstView / uint(LFDPR_VIEW_CHUNK), uvec2(tx, ty), tiles);
+        }
+    }
+}
+#endif
+
 // The word write of one covered sample (step 6), with the work counters' atomics.
 void writeSample(uint pixel, uint key, uint record, uint index)
 {
@@ -278,13 +341,19 @@ void writeSample(uint pixel, uint key, uint record, uint index)
     if (viewDepth[pixel] == key)
         atomicMin(viewIndex[pixel], record);
 #else
-    if (key < viewDepth[pixel]) {
+    uint depth = viewDepth[pixel];
+    if (key < depth) {
         LFDPR_COUNT(atomics, 1u);
-        if (key < atomicMin(viewDepth[pixel], key)) {
+        depth = atomicMin(viewDepth[pixel], key);
+        if (key < depth) {
             LFDPR_COUNT(lowered, 1u);
             viewIndex[pixel] = record;
         }
     }
+#ifdef LFDPR_FLAG_TIES
+    if (key == depth) // after the store above: a lane of the same SIMD row sees its record
+        noteTie(pixel, record);
+#endif
     LFDPR_AFTER_INDEX_WRITE(index, pixel, record);
 #endif
 }
@@ -445,6 +514,9 @@ void splatPoint(uint index, uint slice, uint viewCount)
 
     int markLo = viewPixels.x, markHi = -1; // tile columns written in this view chunk
     uvec2 markViews = uvec2(0u);
+#ifdef LFDPR_FLAG_TIES
+    tied = false;
+#endif
     for (uint view = sliceFirst; view < endView; ++view) {
         ivec2 columns = splatView(view, viewCount, sp, viewPixels, doubleSided, mirrored, keyRange, record, index);
 #ifdef LFDPR_MARK_CHUNKS
@@ -458,6 +530,9 @@ void splatPoint(uint index, uint slice, uint viewCount)
     lfdMarkChunk(draw.group, firstView / uint(LFDPR_VIEW_CHUNK), markLo, markHi,
                  uvec2(sp.rows) / uint(LFDPR_SHADE_TILE), markViews, tiles, lfdShadeEntryCount(tiles, viewCount));
 #endif
+#ifdef LFDPR_FLAG_TIES
+    queueTies(index, slice, firstView, markLo, markHi, uvec2(sp.rows) / uint(LFDPR_SHADE_TILE), tiles);
+#endif
 }
 
 void main()
@@ -467,10 +542,17 @@ void main()
     uint viewCount = u_lfd.counts.x;
     uint slices = lfdSplatSlices(viewCount);
     uint workgroup = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+#ifdef LFDPR_TIE_PASS
+    uint entry = workgroup * uint(LFDPR_GROUP_SIZE) + gl_LocalInvocationIndex;
+    if (entry < min(shadeCounters.tieDispatch.w, shadeCounters.tieCapacity))
+        splatPoint(groupTiles[shadeCounters.tieBase + 2u * entry], groupTiles[shadeCounters.tieBase + 2u * entry + 1u],
+                   viewCount);
+#else
     uint slice = workgroup % slices;
     uint index = (workgroup / slices) * uint(LFDPR_GROUP_SIZE) + gl_LocalInvocationIndex;
     if (index < min(vis.pointCount, u_lfd.counts.y))
         splatPoint(index, slice, viewCount);
+#endif
 #if defined(LFDPR_COUNT_WORK) && !defined(LFDPR_INDEX_PASS)
     lfdWorkFlush(); // uniform control flow: every invocation of the workgroup gets here
 #endif

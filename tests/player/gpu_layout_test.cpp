@@ -438,6 +438,8 @@ std::vector<ProgramCase> programCases(const gl::GlCapabilities& caps)
     }
     out.push_back({"lfdpr index pass", {{GL_COMPUTE_SHADER, "lfdpr_visibility_splat.comp"}}, {"LFDPR_INDEX_PASS 1"},
                    visibilityBlocks()});
+    out.push_back({"lfdpr tie pass", {{GL_COMPUTE_SHADER, "lfdpr_visibility_splat.comp"}},
+                   {"LFDPR_WORK_GPU 1", "LFDPR_INDEX_PASS 1", "LFDPR_TIE_PASS 1"}, visibilityBlocks()});
     out.push_back({"lfdpr shade list", {{GL_COMPUTE_SHADER, "lfdpr_visibility_shade_list.comp"}}, {}, visibilityBlocks()});
     out.push_back({"lfdpr shade list (repair)", {{GL_COMPUTE_SHADER, "lfdpr_visibility_shade_list.comp"}}, {"LFDPR_REPAIR_LIST 1"},
                    visibilityBlocks()});

@@ -418,7 +418,7 @@ TEST_F(LfdprVisibilityTest, CompactPointsAndReportedMemory)
         stats[key] = value;
     for (const char* key : {"points", "bytes_per_point", "point_buffer_bytes", "triangle_buffer_bytes",
                             "view_buffer_bytes", "shade_work_bytes", "frame_gpu_bytes", "point_buffer_growths",
-                            "index_repairs", "shading_passes"})
+                            "index_repairs", "tie_points", "shading_passes"})
         EXPECT_TRUE(stats.count(key)) << key;
     EXPECT_EQ(stats["frame_gpu_bytes"], stats["point_buffer_bytes"] + stats["triangle_buffer_bytes"] +
                                             stats["view_buffer_bytes"] + stats["shade_work_bytes"]);
@@ -473,8 +473,11 @@ TEST_F(LfdprVisibilityTest, IndexRepairRestoresTheImageFromTheListAndTheWholeFra
 // by drawn triangle, so there it must too, however its invocations run. The red copy is
 // alpha-masked (a cutoff of 0 that drops nothing), which puts it in a later point generation
 // dispatch than the green one: its records were written second, so numbering them in the
-// order they were written shows green here. The views path's single 32-bit pass still lets
-// the first writer win (docs/status.md): it is checked on the 64-bit path only.
+// order they were written shows green here. The views path's single 32-bit pass queues the
+// points that met a tie for the tie pass, which keeps the lower record, on the GPU work
+// shape; llvmpipe's CPU work shape keeps the first point to arrive (docs/player/lfdpr.md,
+// Depth ties). Each is run twice (which point reaches a word first changes between runs;
+// before the tie pass, 3 subpixels of the third-party DamagedHelmet's EIA did).
 TEST_F(LfdprVisibilityTest, DepthTiesGoToTheTriangleDrawnFirstAsInMvr)
 {
     const DisplayProfile profile = smallProfile(6, 96, 72);
@@ -519,21 +522,49 @@ TEST_F(LfdprVisibilityTest, DepthTiesGoToTheTriangleDrawnFirstAsInMvr)
         EXPECT_EQ(green, 0u) << "the copy drawn second won depth ties";
         EXPECT_LT(metrics::rmse(direct.eia, mvr.eia), 3.0);
     }
-    // The views path, where its word orders records (64-bit atomics), on both work shapes.
-    for (const auto shape : {LfdprOptions::WorkShape::Cpu, LfdprOptions::WorkShape::Gpu}) {
-        auto lfdpr = player::createLfdprRenderer({.workShape = shape});
-        const VisibilityFrame a = render(*lfdpr, scene, profile);
-        if (!a.info.int64Atomics) {
-            std::printf("depth ties, views path: 32-bit atomics here (first writer wins), not checked\n");
-            break;
+    // The views path: the 64-bit word where the driver has it, and the 32-bit pass with its
+    // repair, on both work shapes.
+    const VisibilityFrame expected = render(*player::createRenderer("mvr"), scene, profile);
+    for (const auto atomics : {LfdprOptions::Atomics::Auto, LfdprOptions::Atomics::TwoPass32}) {
+        for (const auto shape : {LfdprOptions::WorkShape::Cpu, LfdprOptions::WorkShape::Gpu}) {
+            for (int run = 0; run < 2; ++run) {
+                auto lfdpr = player::createLfdprRenderer({.workShape = shape, .atomics = atomics});
+                const VisibilityFrame a = render(*lfdpr, scene, profile);
+                std::printf("depth ties, views path, %s atomics, %s work shape, run %d: %llu points queued at "
+                            "a tie\n",
+                            a.info.int64Atomics ? "64-bit" : "32-bit",
+                            shape == LfdprOptions::WorkShape::Cpu ? "CPU" : "GPU", run,
+                            (unsigned long long)a.info.tiePoints);
+                if (!a.info.int64Atomics && shape == LfdprOptions::WorkShape::Cpu) {
+                    EXPECT_EQ(a.info.tiePoints, 0u) << "the CPU work shape has no tie pass";
+                    continue; // the first point to arrive keeps a tied word
+                }
+                if (!a.info.int64Atomics) {
+                    EXPECT_GT(a.info.tiePoints, 0u) << "the 32-bit pass queued no point for the tie pass";
+                }
+                for (uint32_t v = 0; v < profile.viewCount; ++v) {
+                    size_t covered = 0, green = 0;
+                    count(a.views[v], covered, green);
+                    EXPECT_EQ(green, 0u) << "view " << v << (a.info.int64Atomics ? ", 64-bit" : ", 32-bit");
+                    EXPECT_LT(metrics::rmse(a.views[v], expected.views[v]), 2.0) << "view " << v;
+                }
+            }
         }
-        const VisibilityFrame expected = render(*player::createRenderer("mvr"), scene, profile);
-        for (uint32_t v = 0; v < profile.viewCount; ++v) {
-            size_t covered = 0, green = 0;
-            count(a.views[v], covered, green);
-            EXPECT_EQ(green, 0u) << "view " << v;
-            EXPECT_LT(metrics::rmse(a.views[v], expected.views[v]), 2.0) << "view " << v;
-        }
+    }
+    // A tie queue too short for the planes' points: the points past it have their tile
+    // chunks repaired instead, to the same image.
+    auto shortQueue = player::createLfdprRenderer({.workShape = LfdprOptions::WorkShape::Gpu,
+                                                   .atomics = LfdprOptions::Atomics::TwoPass32,
+                                                   .testTieCapacity = 64});
+    const VisibilityFrame a = render(*shortQueue, scene, profile);
+    std::printf("depth ties, a queue of 64 points: %llu points met a tie, %llu repairs\n",
+                (unsigned long long)a.info.tiePoints, (unsigned long long)a.info.repairs);
+    EXPECT_GT(a.info.tiePoints, 64u) << "the queue did not overflow";
+    EXPECT_GT(a.info.repairs, 0u) << "the points past the queue listed no chunk";
+    for (uint32_t v = 0; v < profile.viewCount; ++v) {
+        size_t covered = 0, green = 0;
+        count(a.views[v], covered, green);
+        EXPECT_EQ(green, 0u) << "view " << v << ", short tie queue";
     }
 }
 
@@ -751,6 +782,7 @@ const std::vector<ShaderVariant> kShaderVariants = {
     {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1"}},
     {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_WORK_GPU 1"}},
     {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INDEX_PASS 1"}},
+    {"lfdpr_visibility_splat.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INDEX_PASS 1", "LFDPR_TIE_PASS 1"}},
     {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFDPR_INT64 1", "LFD_TEXTURE_MASK 0x3u"}},
     {"lfdpr_visibility_shade.comp", "comp", {"LFDPR_WORK_GPU 1", "LFD_TEXTURE_MASK 0x0u"}},
     // Every texture as a GPU shades it (the texture unit filters anisotropically).

@@ -22,6 +22,7 @@ namespace {
 
 using lfdpr_bindings::LfdprVisibilityRepairGpu;
 using lfdpr_bindings::LfdprVisibilityCountersGpu;
+using lfdpr_bindings::LfdprVisibilityShadeCountersGpu;
 
 std::vector<std::string> atomicsDefines(bool int64)
 {
@@ -30,9 +31,12 @@ std::vector<std::string> atomicsDefines(bool int64)
 
 constexpr uint32_t kStreamsAll = kStreamPosition | kStreamNormal | kStreamTangent | kStreamUv;
 
-// LFDPR_SHADE_WORK_BUFFER: LfdprVisibilityShadeCountersGpu (repairCount, repairBase, repairCapacity),
-// then the dispatches.
-constexpr GLintptr kDispatchOffset = 16;
+// LFDPR_SHADE_WORK_BUFFER: LfdprVisibilityShadeCountersGpu, then the dispatches, then groupTiles.
+constexpr GLintptr kDispatchOffset = sizeof(LfdprVisibilityShadeCountersGpu);
+// Points the tie queue holds (lfdpr_visibility_splat.comp queueTies), per tile chunk and in
+// all: 8 bytes each, 32-512 KiB. Ties are rare but for coincident surfaces; points past it
+// (a mesh drawn twice in place) have their chunks repaired instead.
+constexpr uint32_t kTiePointsPerChunk = 8, kTieCapacityMin = 4096, kTieCapacityMax = 1u << 16;
 
 } // namespace
 
@@ -101,6 +105,8 @@ LfdprVisibilityShading::LfdprVisibilityShading(bool int64, bool gpuWork, bool ha
         indexProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1", "LFDPR_DIRECT 1"});
     else if (!int64)
         indexProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1"});
+    if (!int64 && !direct && gpuWork) // lfdpr_visibility_splat.comp noteTie: the GPU work shape's
+        tieProgram_ = build("lfdpr_visibility_splat.comp", {"LFDPR_INDEX_PASS 1", "LFDPR_TIE_PASS 1"});
     if (gpuWork) // lfdpr_visibility_clear.comp says why a GPU clears in a shader
         clearProgram_ = build("lfdpr_visibility_clear.comp", {});
     listProgram_ = build("lfdpr_visibility_shade_list.comp", {});
@@ -166,6 +172,8 @@ size_t LfdprVisibilityShading::shadeWorkBytes() const {
 
 size_t LfdprVisibilityShading::repairCountOffset() { return offsetof(LfdprVisibilityRepairGpu, indexPass) + 12; }
 
+size_t LfdprVisibilityShading::tiePointsOffset() { return offsetof(LfdprVisibilityShadeCountersGpu, tieDispatch) + 12; }
+
 void LfdprVisibilityShading::beginFrame(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials,
                                         ViewTargets& targets)
 {
@@ -176,7 +184,7 @@ void LfdprVisibilityShading::beginFrame(const GpuScene& scene, const std::vector
     updateGroups(scene, texturedMaterials);
     const GLuint zero = 0, ones = 0xFFFFFFFFu;
     glClearNamedBufferData(chunkMasks_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    clearShadeDispatches();
+    clearShadeDispatches(true);
     if (clearProgram_) {
         clearViews(targets);
         return;
@@ -204,13 +212,19 @@ void LfdprVisibilityShading::clearViews(ViewTargets& targets) const
 
 // The shading counters and each group's indirect dispatch: (0, 1, 0) workgroups, entry
 // count 0 (lfdpr_visibility_shade_list.comp keeps x and y as maxima and sets z with the first entry).
-void LfdprVisibilityShading::clearShadeDispatches() const
+void LfdprVisibilityShading::clearShadeDispatches(bool frameStart) const
 {
     const GLuint empty[4] = {0u, 1u, 0u, 0u};
     glClearNamedBufferSubData(shadeWork_, GL_RGBA32UI, kDispatchOffset, GLsizeiptr(groupCount_) * 16,
                               GL_RGBA_INTEGER, GL_UNSIGNED_INT, empty);
-    const GLuint counters[4] = {0u, repairBase_, repairCapacity_, 0u}; // LfdprVisibilityShadeCountersGpu
-    glNamedBufferSubData(shadeWork_, 0, sizeof(counters), counters);
+    LfdprVisibilityShadeCountersGpu counters{};
+    counters.repairBase = repairBase_;
+    counters.repairCapacity = repairCapacity_;
+    counters.tieBase = tieBase_;
+    counters.tieDispatch = {0u, 1u, 1u, 0u}; // no workgroups until a point is queued
+    counters.tieCapacity = tieCapacity_;
+    glNamedBufferSubData(shadeWork_, 0, frameStart ? sizeof(counters) : offsetof(LfdprVisibilityShadeCountersGpu, tieDispatch),
+                         &counters);
 }
 
 void LfdprVisibilityShading::splat(unsigned counters)
@@ -220,11 +234,16 @@ void LfdprVisibilityShading::splat(unsigned counters)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewDepth, depth_);
     if (index_)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboViewWinner, index_);
+    // The 32-bit views path's splat queues the points that met a depth tie there.
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, k.ssboShadeWork, shadeWork_);
     // The 32-bit path's index pass runs only to repair, in shade(); the direct splat's
-    // every frame (lfdpr_direct_fanout.glsl says why).
+    // every frame (lfdpr_direct_fanout.glsl says why); the tie pass over the queued points
+    // (zero workgroups when none met a tie) before the shading reads the records.
     splatPass(splatProgram_, counters, offsetof(LfdprVisibilityCountersGpu, splatGroupsX));
     if (direct_ && !int64_)
         splatPass(indexProgram_, counters, offsetof(LfdprVisibilityCountersGpu, splatGroupsX));
+    else if (tieProgram_)
+        splatPass(tieProgram_, shadeWork_, offsetof(LfdprVisibilityShadeCountersGpu, tieDispatch));
 }
 
 void LfdprVisibilityShading::splatPass(unsigned program, unsigned arguments, size_t offset) const
@@ -233,7 +252,8 @@ void LfdprVisibilityShading::splatPass(unsigned program, unsigned arguments, siz
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, arguments);
     glDispatchComputeIndirect(GLintptr(offset));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+    // Command: the tie pass's dispatch is the splat's writes.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     glUseProgram(0);
 }
 
@@ -253,8 +273,13 @@ void LfdprVisibilityShading::updateGroups(const GpuScene& scene, const std::vect
     // A repair entry lists its chunk for every group, so at most entryCount_ of them keep
     // each group's list within its room.
     repairCapacity_ = std::min<uint32_t>(entryCount_, 65535u);
+    // Then the tie queue (the tie pass's path only): two words per point.
+    tieBase_ = repairBase_ + repairCapacity_;
+    tieCapacity_ = !tieProgram_           ? 0u
+                   : testTieCapacity_ > 0 ? testTieCapacity_
+                                          : std::clamp(entryCount_ * kTiePointsPerChunk, kTieCapacityMin, kTieCapacityMax);
     const size_t workBytes = kDispatchOffset + size_t(k.maxShadeGroups) * 16 +
-                             (size_t(repairBase_) + repairCapacity_) * 4;
+                             (size_t(tieBase_) + 2 * size_t(tieCapacity_)) * 4;
     if (workBytes > shadeWorkBytes_) {
         shadeWork_ = gl::createBuffer(workBytes, GL_DYNAMIC_STORAGE_BIT);
         shadeWorkBytes_ = workBytes;
@@ -286,7 +311,7 @@ void LfdprVisibilityShading::listAndShade(const GpuScene& scene, uint32_t pass)
         // note: the barrier orders the first pass's shader writes to these words before the
         // clear; a clear itself is ordered with the dispatches after it.
         glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-        clearShadeDispatches();
+        clearShadeDispatches(false);
         glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, repair_);
         glUseProgram(listRepairProgram_);
         glDispatchComputeIndirect(offsetof(LfdprVisibilityRepairGpu, listRepair));

@@ -60,6 +60,8 @@ public:
                            bool countWork = false, bool direct = false);
     ~LfdprVisibilityShading();
     LfdprVisibilityShading(const LfdprVisibilityShading&) = delete;
+    // LfdprOptions::testTieCapacity: the tie queue's points (0: sized with the views).
+    void setTestTieCapacity(uint32_t points) { testTieCapacity_ = points; }
     LfdprVisibilityShading& operator=(const LfdprVisibilityShading&) = delete;
 
     bool int64() const { return int64_; }
@@ -102,13 +104,19 @@ public:
     // number of pixels repaired by the last shade() is.
     unsigned repairBuffer() const { return repair_.get(); }
     static size_t repairCountOffset();
+    // 32-bit views path: the shading work buffer and where in it the number of points the
+    // last splat queued for the tie pass is (lfdpr_visibility_splat.comp queueTies).
+    unsigned shadeWorkBuffer() const { return shadeWork_.get(); }
+    static size_t tiePointsOffset();
     // Shading dispatches of the last shade() (one per group and pass).
     uint32_t lastShadingDispatches() const { return dispatches_; }
 
 private:
     using Group = LfdprShadeGroup;
     void splatPass(unsigned program, unsigned arguments, size_t offset) const;
-    void clearShadeDispatches() const;
+    // frameStart: also the tie queue's counters (the repair's pass 2 leaves them for the
+    // read-back).
+    void clearShadeDispatches(bool frameStart) const;
     void clearViews(ViewTargets& targets) const;
     void updateGroups(const GpuScene& scene, const std::vector<int32_t>& texturedMaterials);
     // pass 0: every marked chunk; pass 2: after a repair, the chunks of the repaired pixels
@@ -124,6 +132,7 @@ private:
     bool hardwareAniso_;
     std::vector<std::string> defines_; // every program's: atomics path, work shape
     gl::Program splatProgram_, indexProgram_; // 32-bit path: the depth pass, the index pass
+    gl::Program tieProgram_; // 32-bit views path: the index pass over the points queued at a tie
     gl::Program listProgram_, listRepairProgram_; // lfdpr_visibility_shade_list.comp: marks, repair list
     gl::Program repairDispatchProgram_;
     gl::Program clearProgram_; // lfdpr_visibility_clear.comp (the GPU work shape only)
@@ -140,6 +149,8 @@ private:
     std::vector<Group> groups_;
     uint32_t groupCount_ = 0;            // dispatch slots in use (<= LFDPR_MAX_SHADE_GROUPS)
     uint32_t repairBase_ = 0, repairCapacity_ = 0; // the repair list in the shade work buffer
+    uint32_t tieBase_ = 0; // after it, the tie queue (lfdpr_visibility_splat.comp queueTies)
+    uint32_t tieCapacity_ = 0, testTieCapacity_ = 0; // points it holds (0 without a tie pass)
     uint32_t views_ = 0, width_ = 0, height_ = 0;
     uint32_t tilesX_ = 0, tilesY_ = 0, chunks_ = 0, entryCount_ = 0; // tile chunks (lfdpr_shade_chunks.glsl)
     uint32_t dispatches_ = 0;

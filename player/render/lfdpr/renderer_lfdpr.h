@@ -112,6 +112,9 @@ struct LfdprOptions {
     // its index where it lost the depth test, as a lost race would, so tests can exercise
     // the index repair deterministically. Never set outside tests.
     uint32_t testIndexRaces = 0;
+    // Test hook, visibility pipeline, 32-bit path on the GPU work shape: when n > 0, the tie
+    // queue holds n points, so tests can overflow it into the repair. Never set outside tests.
+    uint32_t testTieCapacity = 0;
     // Visibility pipeline: the splat and the shading count their work on the GPU (views
     // culled before setup, samples, atomics, words lowered, shadings; docs/player/8k-panels.md
     // "Work counters"), read back with the point count (no added GL call or wait). Off by
@@ -148,6 +151,7 @@ struct LfdprFrameInfo {
     uint64_t trianglesLarge = 0;      // visibility pipeline: sampled by a workgroup
     uint64_t bufferGrowths = 0;       // visibility pipeline: the point buffer grown after an overflow
     uint64_t repairs = 0;             // visibility pipeline, 32-bit: pixels whose index was repaired
+    uint64_t tiePoints = 0;           // visibility pipeline, 32-bit views path: points queued at a depth tie
     uint64_t viewBufferBytes = 0;
     uint64_t sizedPoints = 0;         // visibility pipeline: the load-time count-only run's points
     // Visibility pipeline with LfdprOptions::countWork (else 0): the GPU's work counters

@@ -46,12 +46,15 @@ namespace {
 
 using lfdpr_bindings::LfdprVisibilityDrawGpu; // generated from shaders/lfdpr_bindings.glsl, checked by the layout test
 
-// A frame's read-back slot: its counters, then (32-bit path) the pixels it repaired.
+// A frame's read-back slot: its counters, then (32-bit path) the pixels it repaired and the
+// points it queued at a depth tie.
 struct CountsSlot {
     LfdprVisibilityCountersGpu counters;
     uint32_t repairs;
+    uint32_t tiePoints;
 };
 constexpr size_t kRepairsOffset = offsetof(CountsSlot, repairs);
+constexpr size_t kTiePointsOffset = offsetof(CountsSlot, tiePoints);
 
 class LfdprVisibilityRenderer final : public LfdprRenderer {
 public:
@@ -61,6 +64,7 @@ public:
           shading_(lfdprUseInt64(options.atomics), gpuWork_, lfdprHardwareAniso(options.anisoFilter),
                    options.testIndexRaces, options.countWork, options.direct != LfdprOptions::Direct::Off)
     {
+        shading_.setTestTieCapacity(options.testTieCapacity);
         if (options.direct != LfdprOptions::Direct::Off)
             direct_ = std::make_unique<LfdprDirectPanel>(shading_.programDefines(), shading_.int64(),
                                                          shading_.hardwareAniso(),
@@ -200,6 +204,9 @@ public:
         if (!shading_.int64()) {
             readback_.copy(shading_.repairBuffer(), LfdprVisibilityShading::repairCountOffset(), kRepairsOffset,
                            sizeof(uint32_t));
+            if (!direct_ && gpuWork_)
+                readback_.copy(shading_.shadeWorkBuffer(), LfdprVisibilityShading::tiePointsOffset(),
+                               kTiePointsOffset, sizeof(uint32_t));
         }
         readback_.end();
     }
@@ -259,6 +266,7 @@ private:
             {"work_point_views", double(info_.pointsStored) * double(splatViews_)},
             {"work_bytes_cleared", double(workBytesCleared_)},
             {"index_repairs", double(info_.repairs)},
+            {"tie_points", double(info_.tiePoints)},
             {"atomics", info_.int64Atomics ? 1.0 : 0.0},
             {"triangles_emitting", double(info_.triangles)},
             {"triangles_oversized", double(info_.trianglesOversized)},
@@ -342,6 +350,7 @@ private:
         trianglesCoarsened_ = c.coarsenedCount;
         info_.trianglesLarge = c.largeCount;
         info_.repairs = shading_.int64() ? 0 : slot.repairs;
+        info_.tiePoints = shading_.int64() || direct_ || !gpuWork_ ? 0 : slot.tiePoints;
         info_.workCulled = c.workCulled;
         info_.workCulledCentres = c.workCulledCentres;
         info_.workSamples = c.workSamples;
