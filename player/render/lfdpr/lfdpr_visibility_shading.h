@@ -60,9 +60,9 @@ public:
                            bool countWork = false, bool direct = false);
     ~LfdprVisibilityShading();
     LfdprVisibilityShading(const LfdprVisibilityShading&) = delete;
+    LfdprVisibilityShading& operator=(const LfdprVisibilityShading&) = delete;
     // LfdprOptions::testTieCapacity: the tie queue's points (0: sized with the views).
     void setTestTieCapacity(uint32_t points) { testTieCapacity_ = points; }
-    LfdprVisibilityShading& operator=(const LfdprVisibilityShading&) = delete;
 
     bool int64() const { return int64_; }
     bool hardwareAniso() const { return hardwareAniso_; }
