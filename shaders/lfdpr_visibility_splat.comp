@@ -196,13 +196,21 @@ ivec2 pixelSpan(vec4 cell, vec3 triangle, int size)
     return ivec2(max(int(ceil(lo - 0.5)), 0), min(int(floor(hi - 0.5)), size - 1));
 }
 
-// Whether the cell's corner coordinates (x or y of a, b, c, d) span a pixel centre inside
-// 0..size - 1 (pixelSpan's test with the cell alone: its span holds pixelSpan's).
-bool cellSpansCentre(vec4 cell, int size)
+// The pixel centres the cell's corner coordinates (x or y of a, b, c, d, widened by
+// LFDPR_SPLAT_SLACK) span, clipped to 0..size - 1 (pixelSpan with the cell alone: its span
+// holds pixelSpan's); empty when x > y.
+ivec2 cellSpan(vec4 cell, int size)
 {
     float lo = min(min(cell.x, cell.y), min(cell.z, cell.w)) - LFDPR_SPLAT_SLACK;
     float hi = max(max(cell.x, cell.y), max(cell.z, cell.w)) + LFDPR_SPLAT_SLACK;
-    return max(int(ceil(lo - 0.5)), 0) <= min(int(floor(hi - 0.5)), size - 1);
+    return ivec2(max(int(ceil(lo - 0.5)), 0), min(int(floor(hi - 0.5)), size - 1));
+}
+
+// Whether the cell's corner coordinates span a pixel centre inside 0..size - 1.
+bool cellSpansCentre(vec4 cell, int size)
+{
+    ivec2 span = cellSpan(cell, size);
+    return span.x <= span.y;
 }
 
 // The point projected once (camera-line coherence): what every view of it shares.
@@ -414,11 +422,9 @@ bool reachesRepairedChunk(LfdSplatPoint sp, uint sliceFirst, uint endView, uint 
         eLo = min(eLo, lfdViewOffset(view));
         eHi = max(eHi, lfdViewOffset(view));
     }
-    vec4 xA = sp.cellX0 + eLo * sp.cellXPer, xB = sp.cellX0 + eHi * sp.cellXPer;
-    vec4 xMin = min(xA, xB), xMax = max(xA, xB);
-    ivec2 columns = ivec2(max(int(ceil(min(min(xMin.x, xMin.y), min(xMin.z, xMin.w)) - LFDPR_SPLAT_SLACK - 0.5)), 0),
-                          min(int(floor(max(max(xMax.x, xMax.y), max(xMax.z, xMax.w)) + LFDPR_SPLAT_SLACK - 0.5)),
-                              viewPixels.x - 1));
+    ivec2 spanLo = cellSpan(sp.cellX0 + eLo * sp.cellXPer, viewPixels.x);
+    ivec2 spanHi = cellSpan(sp.cellX0 + eHi * sp.cellXPer, viewPixels.x);
+    ivec2 columns = ivec2(min(spanLo.x, spanHi.x), max(spanLo.y, spanHi.y)); // their union
     if (columns.x > columns.y)
         return false; // no column in any view: nothing to write
     uvec2 tiles = lfdShadeTiles(uvec2(viewPixels));
