@@ -91,28 +91,27 @@ class LFD_OT_render(bpy.types.Operator, pipeline.JobOperator):
             self.cleanup("CANCELLED")
         return result
 
-    # One lfd-play run: frame k of the run is at time k / fps, the glTF time of Blender
-    # frame k, so a range a..b renders frames 0..b and keeps a..b (one frame: --frame f).
+    # One lfd-play run: frame k is at time k / fps, the glTF time of Blender frame k, and
+    # --first-frame a renders frames a..b alone, under their own numbers.
     def play_step(self, context, r, a, b):
         s = context.scene.lfd
         fps = context.scene.render.fps
         argv = [r.tools["lfd-play"], r.pack, "--headless", *r.display_args(), "--renderer", s.renderer,
                 "--no-turntable", "--fps", f"{fps:g}"]
         quilt = self.kind in ("QUILT", "VIDEO")
+        argv += ["--first-frame", str(a), "--frames", str(b - a + 1)]
         if a == b:
-            argv += ["--frames", "1", "--frame", str(a)]
             if quilt:
                 argv += ["--quilt", os.path.join(self.tmp, f"{self.prefix}_{a:04d}.png")]
             else:
                 argv += ["--out", os.path.join(self.tmp, f"{self.prefix}_eia_{a:04d}.png")]
             expected = 1
         else:
-            argv += ["--frames", str(b + 1)]
             if quilt:
                 argv += ["--quilt", os.path.join(self.tmp, f"{self.prefix}.png")]
             else:
                 argv += ["--out", os.path.join(self.tmp, f"{self.prefix}_eia_%04d.png")]
-            expected = b + 1
+            expected = b - a + 1
         errors = []
 
         def on_line(line, from_stderr):

@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <unistd.h>
 
 namespace {
@@ -73,6 +74,9 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
     addSharedFlags(app, f.shared);
     app.add_option("--renderer", o.renderer, "renderer: " + rendererList())->capture_default_str();
     f.frameOpt = app.add_option("--frame", f.frame, "frame whose outputs are written (default: the last)");
+    app.add_option("--first-frame", o.firstFrame,
+                   "headless: the first frame rendered (frame k is at time k / fps): --frames N renders frames "
+                   "F .. F + N - 1, numbered outputs and --frame keep the frames' own numbers (default: 0)");
 }
 
 void addOutputFlags(CLI::App& app, PlayOptions& o)
@@ -270,6 +274,16 @@ void validateInputFlags(PlayOptions& o, const RawFlags& f)
     }
     if (o.quiltFrame && (o.quiltIn.empty() || !o.headless))
         throw UsageError("--quilt-frame: needs --headless and a quilt video (--quilt-in)");
+    if (o.firstFrame) {
+        if (!o.headless || !o.quiltIn.empty())
+            throw UsageError("--first-frame: needs --headless and a pack (a quilt video's frame: --quilt-frame)");
+        if (*o.firstFrame > std::numeric_limits<uint32_t>::max() - o.frames)
+            throw UsageError("--first-frame: " + std::to_string(*o.firstFrame) + " plus --frames " +
+                             std::to_string(o.frames) + " is past the last frame number");
+        if (o.outputFrame && *o.outputFrame < *o.firstFrame)
+            throw UsageError("--frame: " + std::to_string(*o.outputFrame) + " is before --first-frame " +
+                             std::to_string(*o.firstFrame));
+    }
     if (!o.quiltIn.empty()) {
         if (*f.shared.viewsOpt || *f.shared.viewSizeOpt)
             throw UsageError(std::string(*f.shared.viewsOpt ? "--views" : "--view-size") +
@@ -344,15 +358,15 @@ Sequence planSequence(const PlayOptions& o)
     return s;
 }
 
-// Encodes the sequence; a failure is reported but keeps the sequence (it is complete).
-int encodeVideo(const PlayOptions& o, Sequence& s)
+// Encodes the sequence (numbered from `firstFrame`); a failure is reported but keeps the sequence (it is complete).
+int encodeVideo(const PlayOptions& o, Sequence& s, uint32_t firstFrame)
 {
     int status = 0;
     if (!o.quiltVideoOut.empty()) {
         const lfd::player::QuiltLayout layout = lfd::player::quiltLayoutFor(o, s.profile);
         const fs::path video = lfd::player::quiltFileName(o.quiltVideoOut, layout);
         try {
-            lfd::player::encodeQuiltVideo(lfd::player::quiltSequencePattern(s.base, layout), s.fps, video);
+            lfd::player::encodeQuiltVideo(lfd::player::quiltSequencePattern(s.base, layout), s.fps, video, firstFrame);
             std::printf("lfd-play: quilt video %s (%zu frames)\n", video.string().c_str(), s.frames.size());
         } catch (const std::exception& e) {
             std::fprintf(stderr, "lfd-play: %s\n", lfd::cli::oneLine(e.what()).c_str());
@@ -500,7 +514,7 @@ StageMap renderFrames(HeadlessRun& run, lfd::player::GpuTimer& timer, const Pack
             run.session.completeLastFrame();
             sequence.profile = run.session.profile();
             sequence.frames.push_back(
-                writeQuiltFrame(run.options, sequence.base, sequence.profile, run.session.readOutputs(frame), k));
+                writeQuiltFrame(run.options, sequence.base, sequence.profile, run.session.readOutputs(frame), frame));
             if (sequence.tempFolder.empty())
                 run.written.push_back(sequence.frames.back());
         }
@@ -534,8 +548,13 @@ void planFrames(HeadlessRun& run)
         run.first = *options.quiltFrame;
     } else if (videoFrames > 0 && !options.framesGiven) {
         run.frames = videoFrames;
+    } else if (options.firstFrame) {
+        run.first = *options.firstFrame;
     }
-    run.outputFrame = options.outputFrame.value_or(run.frames - 1);
+    // --frame K names a frame by its number with --first-frame (validateInputFlags: K >= F);
+    // with --quilt-frame it counts from the video frame rendered.
+    run.outputFrame = options.firstFrame && options.outputFrame ? *options.outputFrame - run.first
+                                                                : options.outputFrame.value_or(run.frames - 1);
 }
 
 void printSummary(const HeadlessRun& run, const StageMap& stages)
@@ -622,7 +641,7 @@ int runHeadless(const PlayOptions& options, const lfd::DisplayProfile& profile, 
             fs::remove_all(run.sequence.tempFolder);
         throw;
     }
-    return encodeVideo(options, run.sequence);
+    return encodeVideo(options, run.sequence, run.first); // the sequence is numbered by frame
 }
 
 } // namespace

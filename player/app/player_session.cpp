@@ -47,9 +47,21 @@ void warnIfBakedForAnotherDisplay(const Scene& scene, const DisplayProfile& prof
     // Packs written without a bake (tests, old tools) record no display: nothing to compare.
     if (baked.displayProfile.empty() || baked.viewWidth == 0 || baked.viewHeight == 0)
         return;
-    if (baked.displayProfile == profile.name && baked.viewWidth == profile.viewWidth &&
-        baked.viewHeight == profile.viewHeight)
+    if (baked.displayProfile == profile.name) {
+        // The same display's cameras at another view size: an edge's extent in view pixels
+        // scales with the view's width and height, so views no larger keep the bound.
+        const double scale = std::max(double(profile.viewWidth) / double(baked.viewWidth),
+                                      double(profile.viewHeight) / double(baked.viewHeight));
+        if (scale <= 1.0)
+            return;
+        std::fprintf(stderr,
+                     "lfd-play: warning: %s: its tessellation bound (%g view pixels) was made for %ux%u views of "
+                     "display '%s', these are %ux%u: edges may span up to %.4g view pixels\n",
+                     packName.c_str(), double(baked.maxEdgePx), baked.viewWidth, baked.viewHeight,
+                     baked.displayProfile.c_str(), profile.viewWidth, profile.viewHeight,
+                     double(baked.maxEdgePx) * scale);
         return;
+    }
     std::fprintf(stderr,
                  "lfd-play: warning: %s: its tessellation bound (%g view pixels) was made for display '%s' with "
                  "%ux%u views, this is '%s' with %ux%u views: edges may span more view pixels than the bound\n",

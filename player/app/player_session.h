@@ -50,6 +50,7 @@ struct PlayOptions {
     std::optional<uint32_t> viewWidth, viewHeight;
     uint32_t frames = 1;                   // frames rendered (timing)
     std::optional<uint32_t> outputFrame;   // frame whose outputs are written (default: last)
+    std::optional<uint32_t> firstFrame;    // --first-frame F: headless, a pack's frames F .. F + frames - 1
     double fps = 60.0;                     // frame k is at time k / fps
     double turntablePeriod = 10.0;         // seconds per revolution, 0 = still
     Reconstruction reconstruction = Reconstruction::None; // --aa: none|spatial|view|view-spatial
@@ -176,8 +177,9 @@ private:
 // "lfd-play: warning: ...". Needs a current GL context.
 GpuMemoryPlan planSceneMemory(const PlayOptions& options, const Scene& scene, const std::string& packName);
 
-// One stderr warning when the pack's tessellation bound was made for another display or
-// view size than `profile` (its BakeSettings), so its edges may exceed the bound here.
+// One stderr warning when the pack's tessellation bound was made for another display than
+// `profile` (its BakeSettings), or for smaller views of the same display, so its edges may
+// exceed the bound here (the same display's views no larger keep it: no warning).
 void warnIfBakedForAnotherDisplay(const Scene& scene, const DisplayProfile& profile, const std::string& packName);
 
 // The renderers the window's R key cycles through, starting after `current`: the methods

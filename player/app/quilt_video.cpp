@@ -93,12 +93,12 @@ fs::path findOnPath(const std::string& name)
 }
 
 std::vector<std::string> ffmpegArguments(const fs::path& pattern, double fps, const fs::path& output,
-                                         const std::string& container)
+                                         const std::string& container, uint32_t firstNumber)
 {
     char rate[32];
     std::snprintf(rate, sizeof(rate), "%.6g", fps);
     std::vector<std::string> args = {"-hide_banner", "-loglevel", "error", "-nostdin", "-y", "-framerate", rate,
-                                     "-start_number", "0", "-i", pattern.string(),
+                                     "-start_number", std::to_string(firstNumber), "-i", pattern.string(),
                                      // 4:2:0 chroma needs even sizes: pad (never scale) a quilt with odd ones.
                                      "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p"};
     // note: high quality settings - a quilt's tiles are small, and blur across the
@@ -112,7 +112,7 @@ std::vector<std::string> ffmpegArguments(const fs::path& pattern, double fps, co
     return args;
 }
 
-void encodeQuiltVideo(const fs::path& pattern, double fps, const fs::path& video)
+void encodeQuiltVideo(const fs::path& pattern, double fps, const fs::path& video, uint32_t firstNumber)
 {
     const std::string container = containerOf(video);
     if (container.empty())
@@ -123,7 +123,7 @@ void encodeQuiltVideo(const fs::path& pattern, double fps, const fs::path& video
                          ": ffmpeg is missing (not on PATH; install the Debian package 'ffmpeg')");
     replaceFileAtomically(video, [&](const fs::path& temporary) {
         const fs::path log = temporary.string() + ".log";
-        const int status = runProcess(ffmpeg, ffmpegArguments(pattern, fps, temporary, container), log);
+        const int status = runProcess(ffmpeg, ffmpegArguments(pattern, fps, temporary, container, firstNumber), log);
         const std::string message = lastLine(log);
         std::error_code ec;
         fs::remove(log, ec);

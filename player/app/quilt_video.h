@@ -26,13 +26,16 @@ void checkVideoExtension(const std::filesystem::path& video);
 // The first executable `name` on $PATH, or empty.
 std::filesystem::path findOnPath(const std::string& name);
 
-// ffmpeg's arguments (without argv[0]) for frames `pattern` (printf-style, from 0) at
-// `fps` into `output` with the container given by `container` ("mp4" or "webm").
+// ffmpeg's arguments (without argv[0]) for frames `pattern` (printf-style, numbered from
+// `firstNumber`) at `fps` into `output` with the container given by `container` ("mp4" or
+// "webm").
 std::vector<std::string> ffmpegArguments(const std::filesystem::path& pattern, double fps,
-                                         const std::filesystem::path& output, const std::string& container);
+                                         const std::filesystem::path& output, const std::string& container,
+                                         uint32_t firstNumber = 0);
 
 // Encodes the sequence into `video` (temporary file, then rename). Throws VideoError with
 // one line: ffmpeg missing from $PATH, or its exit status and last message.
-void encodeQuiltVideo(const std::filesystem::path& pattern, double fps, const std::filesystem::path& video);
+void encodeQuiltVideo(const std::filesystem::path& pattern, double fps, const std::filesystem::path& video,
+                      uint32_t firstNumber = 0);
 
 } // namespace lfd::player

@@ -752,6 +752,67 @@ TEST_F(CliTest, AnimatedQuiltSequenceAndVideo)
     EXPECT_TRUE(fs::is_empty(videoOnly));
 }
 
+// --first-frame F renders frames F .. F + N - 1 alone, each equal to the same frame of a run
+// from 0, with the numbered outputs (EIA pattern, quilt sequence, video) under the frames' own
+// numbers; --frame names a frame by its number; bad combinations fail in one line.
+TEST_F(CliTest, FirstFrameRendersALateRangeAsARunFromZero)
+{
+    const fs::path out = dir_ / "first";
+    fs::create_directories(out);
+    const std::string common = "--headless " + quoted(pack_) + " --display " + quoted(profile_) +
+                               " --renderer mvr --views 6 --view-size 96x72 --fps 4";
+    ASSERT_EQ(runPlay(dir_, common + " --frames 4 --out " + quoted(out / "all_%04d.png") + " --quilt " +
+                                quoted(out / "all.png")).status,
+              0);
+    const bool haveFfmpeg = !player::findOnPath("ffmpeg").empty();
+    const ToolResult late = runPlay(dir_, common + " --first-frame 2 --frames 2 --out " + quoted(out / "late_%04d.png") +
+                                              " --quilt " + quoted(out / "late.png") +
+                                              (haveFfmpeg ? " --quilt-video " + quoted(out / "late.mp4") : ""));
+    ASSERT_EQ(late.status, 0) << late.err;
+    for (const char* frame : {"0000", "0001"}) {
+        EXPECT_FALSE(fs::exists(out / ("late_" + std::string(frame) + ".png"))) << frame;
+        EXPECT_FALSE(fs::exists(out / ("late_" + std::string(frame) + "_qs3x2a1.78.png"))) << frame;
+    }
+    for (const char* frame : {"0002", "0003"}) {
+        const std::string f(frame);
+        ASSERT_TRUE(fs::exists(out / ("late_" + f + ".png"))) << f;
+        EXPECT_EQ(imageMismatch(metrics::readImage(out / ("late_" + f + ".png")),
+                                metrics::readImage(out / ("all_" + f + ".png")), 0),
+                  "")
+            << "EIA of frame " << f;
+        ASSERT_TRUE(fs::exists(out / ("late_" + f + "_qs3x2a1.78.png"))) << f;
+        EXPECT_EQ(imageMismatch(metrics::readImage(out / ("late_" + f + "_qs3x2a1.78.png")),
+                                metrics::readImage(out / ("all_" + f + "_qs3x2a1.78.png")), 0),
+                  "")
+            << "quilt of frame " << f;
+    }
+    EXPECT_GT(metrics::rmse(metrics::readImage(out / "late_0002.png"), metrics::readImage(out / "late_0003.png")), 1.0)
+        << "the turntable turns between frames";
+    if (haveFfmpeg && !player::findOnPath("ffprobe").empty()) {
+        const ToolResult probe = runTool(player::findOnPath("ffprobe"), out,
+                                         "-v error -count_frames -select_streams v:0 -show_entries "
+                                         "stream=nb_read_frames -of csv=p=0 " + quoted(out / "late_qs3x2a1.78.mp4"));
+        EXPECT_EQ(probe.out, "2\n") << "the video holds frames 2 and 3: " << probe.err;
+    }
+    // One frame, named by its number: --first-frame 1 --frames 2 --frame 3 renders frames 1
+    // and 2, then frame 3 once more for the outputs.
+    ASSERT_EQ(runPlay(dir_, common + " --first-frame 1 --frames 2 --frame 3 --out " + quoted(out / "three.png")).status, 0);
+    EXPECT_EQ(imageMismatch(metrics::readImage(out / "three.png"), metrics::readImage(out / "all_0003.png"), 0), "");
+
+    const std::pair<std::string, std::string> bad[] = {
+        {common + " --first-frame 3 --frame 1 --out " + quoted(out / "bad.png"), "--frame: 1 is before --first-frame 3"},
+        {common + " --first-frame 4294967295 --frames 2 --out " + quoted(out / "bad.png"), "--first-frame"},
+        {quoted(pack_) + " --display " + quoted(profile_) + " --first-frame 2", "--first-frame: needs --headless"},
+    };
+    for (const auto& [args, message] : bad) {
+        const ToolResult r = runPlay(dir_, args);
+        EXPECT_EQ(r.status, 2) << args;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(out / "bad.png"));
+}
+
 // --preview always (headless timing of the window's preview): every 2nd view at half size,
 // interleaved into the full panel.
 TEST_F(CliTest, PreviewRendersFewerSmallerViewsIntoTheFullPanel)
@@ -882,6 +943,19 @@ TEST_F(CliTest, PackBakedForAnotherDisplayWarns)
     writePack(other, scene);
     const ToolResult same = runPlay(dir_, "--headless " + quoted(other) + args);
     EXPECT_EQ(same.err, "");
+    // Views of the same display no larger than the baked ones keep the bound (an edge spans
+    // fewer pixels of smaller views); larger ones warn by how much: 64x48 against 32x32 is
+    // twice as wide, so up to 2 x 100 pixels.
+    scene.settings.viewWidth = 128;
+    scene.settings.viewHeight = 96;
+    writePack(other, scene);
+    EXPECT_EQ(runPlay(dir_, "--headless " + quoted(other) + args).err, "");
+    scene.settings.viewWidth = 32;
+    scene.settings.viewHeight = 32;
+    writePack(other, scene);
+    const ToolResult larger = runPlay(dir_, "--headless " + quoted(other) + args);
+    EXPECT_EQ(larger.err, "lfd-play: warning: other.lfdpack: its tessellation bound (100 view pixels) was made for 32x32 "
+                          "views of display 'cli-small', these are 64x48: edges may span up to 200 view pixels\n");
 }
 
 } // namespace

@@ -32,8 +32,10 @@ LineRows lineRows(const FrameSetup& frame)
     if (frame.cameras.empty())
         throw std::invalid_argument("lfdpr: a frame needs at least one view camera");
     if (frame.cameras.size() > kLfdprMaxViews)
-        throw std::invalid_argument("lfdpr: " + std::to_string(frame.cameras.size()) + " views (at most " +
-                                    std::to_string(kLfdprMaxViews) + ")");
+        throw std::invalid_argument("lfdpr: " + std::to_string(frame.cameras.size()) +
+                                    " views, more than the " + std::to_string(kLfdprMaxViews) +
+                                    " its camera-line block holds (set --views " +
+                                    std::to_string(kLfdprMaxViews) + " or fewer)");
     // Step 1: clipFromScene per view in double precision; the offsets along the line.
     std::vector<glm::dmat4> clip;
     clip.reserve(frame.cameras.size());
