@@ -358,7 +358,8 @@ Sequence planSequence(const PlayOptions& o)
     return s;
 }
 
-// Encodes the sequence (numbered from `firstFrame`); a failure is reported but keeps the sequence (it is complete).
+// Encodes the sequence (numbered from `firstFrame`); a failure is reported but keeps the
+// sequence (it is complete).
 int encodeVideo(const PlayOptions& o, Sequence& s, uint32_t firstFrame)
 {
     int status = 0;
