@@ -76,8 +76,10 @@ class LFD_OT_preview(bpy.types.Operator, pipeline.JobOperator):
 
     def on_finished(self, context):
         r, s = self.resolved, context.scene.lfd
+        # The preview's animation starts at Blender's current frame (lfd-play's frame k is
+        # at k / fps, the glTF time of Blender frame k).
         argv = [r.tools["lfd-play"], r.pack, *r.display_args(), "--renderer", s.renderer,
-                "--fps", f"{context.scene.render.fps:g}"]
+                "--fps", f"{context.scene.render.fps:g}", "--first-frame", str(max(context.scene.frame_current, 0))]
         if s.fullscreen:
             argv.append("--fullscreen")
             if s.monitor:

@@ -75,8 +75,9 @@ void addRenderFlags(CLI::App& app, PlayOptions& o, RawFlags& f)
     app.add_option("--renderer", o.renderer, "renderer: " + rendererList())->capture_default_str();
     f.frameOpt = app.add_option("--frame", f.frame, "frame whose outputs are written (default: the last)");
     app.add_option("--first-frame", o.firstFrame,
-                   "headless: the first frame rendered (frame k is at time k / fps): --frames N renders frames "
-                   "F .. F + N - 1, numbered outputs and --frame keep the frames' own numbers (default: 0)");
+                   "the first frame rendered (frame k is at time k / fps): --frames N renders frames F .. F + N - 1, "
+                   "numbered outputs and --frame keep the frames' own numbers; windowed, the animation starts at "
+                   "F's time (default: 0)");
 }
 
 void addOutputFlags(CLI::App& app, PlayOptions& o)
@@ -275,8 +276,8 @@ void validateInputFlags(PlayOptions& o, const RawFlags& f)
     if (o.quiltFrame && (o.quiltIn.empty() || !o.headless))
         throw UsageError("--quilt-frame: needs --headless and a quilt video (--quilt-in)");
     if (o.firstFrame) {
-        if (!o.headless || !o.quiltIn.empty())
-            throw UsageError("--first-frame: needs --headless and a pack (a quilt video's frame: --quilt-frame)");
+        if (!o.quiltIn.empty())
+            throw UsageError("--first-frame: needs a pack (a quilt video's frame: --quilt-frame)");
         if (*o.firstFrame > std::numeric_limits<uint32_t>::max() - o.frames)
             throw UsageError("--first-frame: " + std::to_string(*o.firstFrame) + " plus --frames " +
                              std::to_string(o.frames) + " is past the last frame number");

@@ -50,7 +50,7 @@ struct PlayOptions {
     std::optional<uint32_t> viewWidth, viewHeight;
     uint32_t frames = 1;                   // frames rendered (timing)
     std::optional<uint32_t> outputFrame;   // frame whose outputs are written (default: last)
-    std::optional<uint32_t> firstFrame;    // --first-frame F: headless, a pack's frames F .. F + frames - 1
+    std::optional<uint32_t> firstFrame;    // --first-frame F: a pack's frames F .. F + frames - 1 (windowed: from F's time)
     double fps = 60.0;                     // frame k is at time k / fps
     double turntablePeriod = 10.0;         // seconds per revolution, 0 = still
     Reconstruction reconstruction = Reconstruction::None; // --aa: none|spatial|view|view-spatial

@@ -418,6 +418,7 @@ LoopState initialLoopState(PlayerSession& session, const PlayOptions& options)
                                              : Shown::Eia;
     state.viewerPos = options.viewerPosition >= 0.0 ? options.viewerPosition : 0.5 * display.viewCount;
     state.preview = session.quiltInput() ? PreviewMode::Off : options.preview.value_or(PreviewMode::Auto);
+    state.animationTime = session.frameTime(options.firstFrame.value_or(0)); // --first-frame: the clock starts there
     return state;
 }
 
@@ -490,7 +491,7 @@ void renderStep(LoopState& state, PlayerSession& session, const PlayOptions& opt
                 bool paused, double wall, gl::GlErrorWatch& glErrors)
 {
     if (options.framesGiven)
-        state.animationTime = session.frameTime(state.frame);
+        state.animationTime = session.frameTime(options.firstFrame.value_or(0) + state.frame);
     else if (!paused)
         state.animationTime += wall - state.lastWall;
     // A step lands on the next frame's start (a quilt video's next frame, a scene's 1 / fps on).

@@ -802,7 +802,8 @@ TEST_F(CliTest, FirstFrameRendersALateRangeAsARunFromZero)
     const std::pair<std::string, std::string> bad[] = {
         {common + " --first-frame 3 --frame 1 --out " + quoted(out / "bad.png"), "--frame: 1 is before --first-frame 3"},
         {common + " --first-frame 4294967295 --frames 2 --out " + quoted(out / "bad.png"), "--first-frame"},
-        {quoted(pack_) + " --display " + quoted(profile_) + " --first-frame 2", "--first-frame: needs --headless"},
+        {"--headless --quilt-in " + quoted(out / "no_qs2x2a1.png") + " --display " + quoted(profile_) + " --first-frame 2",
+         "--first-frame: needs a pack"},
     };
     for (const auto& [args, message] : bad) {
         const ToolResult r = runPlay(dir_, args);

@@ -217,6 +217,24 @@ TEST_F(DisplayWindowTest, FullscreenShowsTheHeadlessEiaPixelForPixel)
     EXPECT_TRUE(metrics::readImage(dir_ / "shot.png", 3).pixels == eia.pixels);
 }
 
+// --first-frame in a window: with --frames N the window renders frames F .. F + N - 1, so the
+// back buffer after the last one is the headless EIA of frame F + N - 1 (turntable on, so
+// every frame differs).
+TEST_F(DisplayWindowTest, FirstFrameStartsTheWindowsAnimationThere)
+{
+    startServer("384x216x24");
+    std::string err;
+    const std::string timing = common_ + " --fps 4";
+    ASSERT_EQ(run("--headless " + timing + " --first-frame 5 --out " + quoted(dir_ / "eia5.png"), err), 0) << err;
+    ASSERT_EQ(run("--headless " + timing + " --out " + quoted(dir_ / "eia0.png"), err), 0) << err;
+    const metrics::Image frame5 = metrics::readImage(dir_ / "eia5.png", 3);
+    ASSERT_GT(metrics::rmse(frame5, metrics::readImage(dir_ / "eia0.png", 3)), 1.0) << "the turntable turns";
+    ASSERT_EQ(run(timing + " --fullscreen --first-frame 3 --frames 3 --screenshot " + quoted(dir_ / "shot5.png"), err), 0)
+        << err;
+    const metrics::Image shot = metrics::readImage(dir_ / "shot5.png", 3);
+    EXPECT_TRUE(shot.pixels == frame5.pixels) << "max difference " << metrics::maxAbsDiff(shot, frame5);
+}
+
 TEST_F(DisplayWindowTest, MismatchedMonitorIsRefusedOrCentredUnscaled)
 {
     startServer("640x400x24");
