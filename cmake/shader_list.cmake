@@ -23,6 +23,7 @@ set(LFD_SHADERS
   lfdpr_paper_resolve.comp
   lfdpr_paper_splat.comp
   lfdpr_pixel_access.glsl
+  lfdpr_repair_list.glsl
   lfdpr_scene_access.glsl
   lfdpr_shade_chunks.glsl
   lfdpr_triangle_setup.glsl

@@ -42,6 +42,7 @@ layout(location = LFDPR_LOC_SHADE_MATERIAL) uniform uint u_shadeMaterial;
 layout(location = LFDPR_LOC_SHADE_GROUP) uniform uint u_group;
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
 #ifndef LFDPR_INT64
+#include "lfdpr_repair_list.glsl"
 layout(std430, binding = LFDPR_SSBO_VIEW_WINNER) writeonly buffer ViewIndex {
     uint viewIndex[];
 };
@@ -73,9 +74,7 @@ void shadeViewPixel(uint view, uvec2 xy, uint pixel, LfdprVisibilityRecordGpu re
     // by a plain store, so a racing point may have left its index under another's depth.
     if (u_pass == 0u && lfdPlaneDepthKey(vt, edges) != lfdPixelKey(pixel)) {
         viewIndex[pixel] = 0xFFFFFFFFu; // lfdpr_visibility_splat.comp LFDPR_INDEX_PASS sets it again
-        uint entry = atomicAdd(shadeCounters.repairCount, 1u);
-        if (entry < shadeCounters.repairCapacity)
-            groupTiles[shadeCounters.repairBase + entry] = chunkTile; // listed again (lfdpr_visibility_shade_list.comp)
+        lfdListRepair(chunkTile); // listed again (lfdpr_visibility_shade_list.comp)
         return;
     }
 #endif

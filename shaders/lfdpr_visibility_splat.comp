@@ -124,6 +124,7 @@ layout(std430, binding = LFDPR_SSBO_SHADE_WORK) readonly LFDPR_SHADE_WORK_BUFFER
 // shape: on llvmpipe's, the check's read cost the splat 9-16%, see noteTie).
 #define LFDPR_FLAG_TIES
 layout(std430, binding = LFDPR_SSBO_SHADE_WORK) LFDPR_SHADE_WORK_BUFFER;
+#include "lfdpr_repair_list.glsl"
 #endif
 #ifdef LFDPR_DIRECT
 #include "lfdpr_direct_fanout.glsl"
@@ -316,12 +317,8 @@ void queueTies(uint index, uint slice, uint firstView, int markLo, int markHi, u
         return;
     }
     for (uint ty = tileRows.x; ty <= tileRows.y; ++ty) {
-        for (int tx = markLo; tx <= markHi; ++tx) {
-            uint repair = atomicAdd(shadeCounters.repairCount, 1u);
-            if (repair < shadeCounters.repairCapacity)
-                groupTiles[shadeCounters.repairBase + repair] =
-                    lfdShadeChunkIndex(firstView / uint(LFDPR_VIEW_CHUNK), uvec2(tx, ty), tiles);
-        }
+        for (int tx = markLo; tx <= markHi; ++tx)
+            lfdListRepair(lfdShadeChunkIndex(firstView / uint(LFDPR_VIEW_CHUNK), uvec2(tx, ty), tiles));
     }
 }
 #endif

@@ -104,8 +104,11 @@ public:
     // number of pixels repaired by the last shade() is.
     unsigned repairBuffer() const { return repair_.get(); }
     static size_t repairCountOffset();
-    // 32-bit views path: the shading work buffer and where in it the number of points the
-    // last splat queued for the tie pass is (lfdpr_visibility_splat.comp queueTies).
+    // Whether the splat queues the points that meet a depth tie for a tie pass (the 32-bit
+    // views path on the GPU work shape); then the shading work buffer holds, at
+    // tiePointsOffset(), the number of points the last splat queued (lfdpr_visibility_splat.comp
+    // queueTies).
+    bool tiePass() const { return bool(tieProgram_); }
     unsigned shadeWorkBuffer() const { return shadeWork_.get(); }
     static size_t tiePointsOffset();
     // Shading dispatches of the last shade() (one per group and pass).

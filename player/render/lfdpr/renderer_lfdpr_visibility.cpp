@@ -204,7 +204,7 @@ public:
         if (!shading_.int64()) {
             readback_.copy(shading_.repairBuffer(), LfdprVisibilityShading::repairCountOffset(), kRepairsOffset,
                            sizeof(uint32_t));
-            if (!direct_ && gpuWork_)
+            if (shading_.tiePass())
                 readback_.copy(shading_.shadeWorkBuffer(), LfdprVisibilityShading::tiePointsOffset(),
                                kTiePointsOffset, sizeof(uint32_t));
         }
@@ -350,7 +350,7 @@ private:
         trianglesCoarsened_ = c.coarsenedCount;
         info_.trianglesLarge = c.largeCount;
         info_.repairs = shading_.int64() ? 0 : slot.repairs;
-        info_.tiePoints = shading_.int64() || direct_ || !gpuWork_ ? 0 : slot.tiePoints;
+        info_.tiePoints = shading_.tiePass() ? slot.tiePoints : 0;
         info_.workCulled = c.workCulled;
         info_.workCulledCentres = c.workCulledCentres;
         info_.workSamples = c.workSamples;
