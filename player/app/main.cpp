@@ -7,6 +7,7 @@
 #include "frame_stats.h"
 #include "gl_context.h"
 #include "gl_debug_output.h"
+#include "image_file.h"
 #include "player_session.h"
 #include "quilt.h"
 #include "quilt_input.h"
@@ -241,6 +242,22 @@ void validateOutputFlags(PlayOptions& o)
     checkOutputPath("--viewer-out", o.viewerOut);
     checkOutputPath("--screenshot", o.screenshot);
     checkOutputPath("--quilt-video", o.quiltVideoOut);
+    // The image outputs' formats, checked before anything renders (an 8K frame takes
+    // seconds, a --frames run many); --quilt as the name it is written under (with no
+    // extension, .png).
+    struct ImageOutput {
+        const char* flag;
+        fs::path given, written;
+    };
+    const ImageOutput images[] = {
+        {"--out", o.eiaOut, o.eiaOut},
+        {"--quilt", o.quiltOut, o.quiltOut.empty() ? fs::path() : lfd::player::quiltFileName(o.quiltOut, 1, 1, 1.0)},
+        {"--viewer-out", o.viewerOut, o.viewerOut},
+        {"--screenshot", o.screenshot, o.screenshot}};
+    for (const ImageOutput& image : images)
+        if (!image.written.empty())
+            if (const std::string problem = lfd::metrics::imageFormatProblem(image.written); !problem.empty())
+                throw UsageError(std::string(image.flag) + ": '" + image.given.string() + "': " + problem);
     if (!o.quiltVideoOut.empty()) {
         try {
             lfd::player::checkVideoExtension(o.quiltVideoOut);

@@ -269,8 +269,20 @@ void writeHdrImage(const fs::path& path, const HdrImage& image)
     writeEncoded(path, bytes);
 }
 
+std::string imageFormatProblem(const fs::path& path)
+{
+    const std::string ext = lowerExtension(path);
+    if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" || ext == ".tga")
+        return {};
+    if (ext.empty())
+        return "has no image extension (write .png, .jpg, .bmp or .tga)";
+    return "cannot write this image format '" + ext + "' (write .png, .jpg, .bmp or .tga)";
+}
+
 void encodeImageFile(const fs::path& path, const uint8_t* pixels, int width, int height, int channels)
 {
+    if (const std::string problem = imageFormatProblem(path); !problem.empty())
+        throwImageError(path, problem);
     if (width <= 0 || height <= 0)
         throwImageError(path, "cannot write an empty image (" + std::to_string(width) + "x" + std::to_string(height) + ")");
     if (channels < 1 || channels > 4)
@@ -286,10 +298,8 @@ void encodeImageFile(const fs::path& path, const uint8_t* pixels, int width, int
         ok = stbi_write_jpg_to_func(appendBytes, &bytes, width, height, channels, pixels, 95);
     else if (ext == ".bmp")
         ok = stbi_write_bmp_to_func(appendBytes, &bytes, width, height, channels, pixels);
-    else if (ext == ".tga")
+    else // .tga (imageFormatProblem allows no other)
         ok = stbi_write_tga_to_func(appendBytes, &bytes, width, height, channels, pixels);
-    else
-        throwImageError(path, "cannot write this image format '" + ext + "' (write .png, .jpg, .bmp or .tga)");
     if (!ok)
         throwImageError(path, "encoding failed");
     writeEncoded(path, bytes);

@@ -50,6 +50,12 @@ HdrImage readHdrImage(const std::filesystem::path& path, uint64_t maxPixels);
 // atomically: test environments for `--environment FILE.hdr`, and HDR outputs.
 void writeHdrImage(const std::filesystem::path& path, const HdrImage& image);
 
+// Empty when encodeImageFile can write `path`'s format (by its extension: .png, .jpg, .jpeg,
+// .bmp, .tga, any case); else the reason, e.g. "cannot write this image format '.xyz'
+// (write .png, .jpg, .bmp or .tga)". The tools ask it when they read their flags, so a
+// wrong output name fails before anything is rendered.
+std::string imageFormatProblem(const std::filesystem::path& path);
+
 // Encodes 8-bit interleaved pixels (1..4 channels, row 0 = top) in the format the
 // extension names, atomically.
 void encodeImageFile(const std::filesystem::path& path, const uint8_t* pixels, int width, int height,

@@ -1,6 +1,7 @@
 // lfd-compare: compares a test image with a reference image of the same size and prints RMSE, PSNR,
 // SSIM and LDR FLIP (as text, or one JSON object with --json); --diff writes the per-pixel FLIP
 // error as a magma heat map. See docs/compare.md, and image_metrics.h for each metric's definition.
+#include "image_file.h"
 #include "image_metrics.h"
 
 #include "cli_support.h"
@@ -71,6 +72,9 @@ int main(int argc, char** argv)
         return *exit;
 
     return lfd::cli::runReportingErrors("lfd-compare", [&] {
+        if (!diffPath.empty())
+            if (const std::string problem = imageFormatProblem(diffPath); !problem.empty())
+                throw lfd::cli::UsageError("--diff: '" + diffPath + "': " + problem);
         const RgbImage reference = readRgbImage(referencePath);
         const RgbImage test = readRgbImage(testPath);
         if (reference.width != test.width || reference.height != test.height)

@@ -161,6 +161,11 @@ TEST_F(CompareCli, ErrorsAreOneLineNamingTheFileWithNonZeroExit)
         {quoted(dir_ / "ref.png") + " " + quoted(dir_ / "ref.png") + " --diff " +
              quoted(dir_ / "no_dir" / "d.png"),
          "d.png", "cannot"},
+        // A diff name it cannot write fails before the images are read (even absent ones).
+        {quoted(dir_ / "absent.png") + " " + quoted(dir_ / "ref.png") + " --diff " + quoted(dir_ / "d.gif"),
+         "--diff: '" + (dir_ / "d.gif").string() + "'", "cannot write this image format '.gif'"},
+        {quoted(dir_ / "ref.png") + " " + quoted(dir_ / "ref.png") + " --diff " + quoted(dir_ / "d"), "d'",
+         "has no image extension"},
     };
     for (const Case& c : cases) {
         const RunResult r = run(c.arguments);
@@ -177,6 +182,8 @@ TEST_F(CompareCli, ErrorsAreOneLineNamingTheFileWithNonZeroExit)
         EXPECT_EQ(lineCount(r.err), 1u) << r.err;
     }
     EXPECT_FALSE(fs::exists(dir_ / "no_dir"));
+    EXPECT_FALSE(fs::exists(dir_ / "d.gif"));
+    EXPECT_FALSE(fs::exists(dir_ / "d"));
 }
 
 } // namespace

@@ -1,4 +1,5 @@
 // PNG output (atomic writes, round trips) and the image metrics (CPU only).
+#include "image_file.h"
 #include "image_metrics.h"
 
 #include <gtest/gtest.h>
@@ -102,6 +103,28 @@ TEST_F(ImageFileTest, FailedWriteThrowsOneLineAndLeavesNothing) {
     wrongSize.pixels.pop_back();
     EXPECT_THROW(writeImage(dir_ / "short.png", wrongSize), ImageError);
     EXPECT_EQ(entriesInDir(), 0u);
+}
+
+// The formats the tools check their output names against before rendering: exactly what
+// writeImage encodes, by extension in any case.
+TEST_F(ImageFileTest, ImageFormatProblemMatchesWhatWriteImageWrites) {
+    const Image image = gradient(4, 4, 3);
+    for (const char* name : {"a.png", "b.PNG", "c.jpg", "d.JPEG", "e.bmp", "f.Tga"}) {
+        EXPECT_EQ(imageFormatProblem(name), "") << name;
+        EXPECT_NO_THROW(writeImage(dir_ / name, image)) << name;
+    }
+    EXPECT_EQ(imageFormatProblem("g.exr"), "cannot write this image format '.exr' (write .png, .jpg, .bmp or .tga)");
+    EXPECT_EQ(imageFormatProblem("dir.png/h"), "has no image extension (write .png, .jpg, .bmp or .tga)");
+    for (const char* name : {"g.exr", "h", "i.webp", "j.png.gz"}) {
+        EXPECT_NE(imageFormatProblem(name), "") << name;
+        try {
+            writeImage(dir_ / name, image);
+            FAIL() << name << " was written";
+        } catch (const ImageError& e) {
+            EXPECT_NE(std::string(e.what()).find(imageFormatProblem(name)), std::string::npos) << e.what();
+        }
+    }
+    EXPECT_EQ(entriesInDir(), 6u);
 }
 
 TEST_F(ImageFileTest, ReadMissingFileThrowsNamingIt) {

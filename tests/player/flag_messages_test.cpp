@@ -48,6 +48,12 @@ TEST(FlagMessages, NameTheFlagAndTheValue)
         {missing + "--preview-hold -1", "--preview-hold: must be >= 0 seconds, got -1"},
         {missing + "--viewer-out v.png --viewer-pos 99", "--viewer-pos: must be in [0, 48), got 99"},
         {" --quilt-in /nonexistent/quilts --slide-seconds 0", "--slide-seconds: must be a positive number, got 0"},
+        // An image output it cannot write is refused before anything renders.
+        {missing + "--out eia.xyz", "--out: 'eia.xyz': cannot write this image format '.xyz' (write .png, .jpg, .bmp or .tga)"},
+        {missing + "--out eia_%04d", "--out: 'eia_%04d': has no image extension"},
+        {missing + "--quilt q.GIF", "--quilt: 'q.GIF': cannot write this image format '.gif'"},
+        {missing + "--viewer-out v.exr", "--viewer-out: 'v.exr': cannot write this image format '.exr'"},
+        {missing + "--screenshot s.webp", "--screenshot: 's.webp': cannot write this image format '.webp'"},
     };
     for (const auto& [args, message] : playCases) {
         const RunResult r = run(play + args);
